@@ -1,0 +1,31 @@
+//! Errors of the contact crate.
+
+use contact2d_fem::FemError;
+use contact2d_mesh::MeshError;
+use thiserror::Error;
+
+/// Everything that can go wrong setting up a contact problem. Non-convergence of an
+/// algorithm is not an error: it is a [`crate::ContactStatus`].
+#[derive(Debug, Error)]
+#[non_exhaustive]
+pub enum ContactError {
+    /// From the finite-element layer.
+    #[error(transparent)]
+    Fem(#[from] FemError),
+    /// From the mesh layer (unknown group, bad contour).
+    #[error(transparent)]
+    Mesh(#[from] MeshError),
+    /// Pairing could not be built.
+    #[error("pairing \"{master}\" with \"{slave}\": {reason}")]
+    Pairing {
+        /// Master contour.
+        master: String,
+        /// Slave contour.
+        slave: String,
+        /// What went wrong.
+        reason: String,
+    },
+    /// A parameter outside its admissible range.
+    #[error("invalid contact input: {0}")]
+    InvalidInput(String),
+}

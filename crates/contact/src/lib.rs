@@ -1,0 +1,28 @@
+//! Contact between elastic bodies: pairing, one contact problem, several algorithms.
+//!
+//! ```text
+//! contours (mesh) → pair_contours → ContactProblem (K factored once, B_N, B_T, gaps, μ)
+//!   → Interface (condensed compliances) → algorithms → ContactSolution (status, u, λ, τ, KKT)
+//! ```
+//!
+//! Sign conventions: `n` points out of the slave body towards the master; `λ ≥ 0` is the
+//! compressive normal force on the master node; the paper's pressure is `p = −λ / w` with `w` the
+//! master node's tributary length, so `p < 0` in contact.
+
+pub mod active_set;
+pub mod error;
+pub mod interface;
+pub mod pairing;
+pub mod problem;
+pub mod qp;
+pub mod report;
+pub mod solution;
+
+pub use active_set::solve_frictionless_active_set;
+pub use error::ContactError;
+pub use interface::Interface;
+pub use pairing::{ContactPair, pair_contours, tributary_weights};
+pub use problem::{ContactProblem, PairRow};
+pub use qp::solve_frictionless_qp;
+pub use report::{fem_solution, finish_solution, from_displacement};
+pub use solution::{ContactSolution, ContactStatus, KktResiduals, PairState};

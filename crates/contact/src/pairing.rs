@@ -1,0 +1,222 @@
+//! Contact pairs between a master and a slave contour.
+//!
+//! For each master node `x_m` the closest point `y` of the slave curve is found (node-to-segment
+//! with the slave edge's shape functions; it is node-to-node where a slave node is there):
+//!
+//! ```text
+//! y = Σ_j N_j(ξ*) y_j,   ξ* = argmin |x(ξ) - x_m|  over every slave edge (Newton, ξ ∈ [-1, 1])
+//! n = unit normal of the slave curve at y, pointing out of the slave body (towards the master)
+//! t = (-n_y, n_x)                       (n turned counter-clockwise; the paper's l_c for n_c)
+//! g0 = (x_m - y) · n                    (initial gap, ≥ 0 when apart; geometric)
+//! gap(u) = g0 + n · (u_m - Σ_j N_j u_j) ≥ 0                            (non-penetration)
+//! w_m = Σ_edges ∫ N_m ds                (tributary length of the master node: p = -λ / w_m)
+//! γ   = ds_master / ds_slave            (force-transfer ratio of paired arc elements, (4.x))
+//! ```
+//!
+//! With the master on the hole this is the paper's variant 1 (n = n_c, the insert normal); with
+//! the master on the insert, variant 2 (n = -n_p in our outward convention, so the same
+//! inequality reads u - uh ≥ u_s).
+
+use contact2d_fem::Model;
+use contact2d_mesh::{Contour, NodeId};
+
+use crate::error::ContactError;
+
+/// One contact pair: a master node and its closest point on the slave curve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactPair {
+    /// Master node.
+    pub master: NodeId,
+    /// Slave nodes and their shape-function weights at the paired point.
+    pub slave: Vec<(NodeId, f64)>,
+    /// Paired point on the slave curve.
+    pub slave_point: [f64; 2],
+    /// Unit normal (out of the slave body).
+    pub normal: [f64; 2],
+    /// Unit tangent `(-n_y, n_x)`.
+    pub tangent: [f64; 2],
+    /// Initial gap `(x_m - y) · n`.
+    pub gap: f64,
+    /// Tributary length of the master node on the master contour.
+    pub weight: f64,
+    /// Force-transfer ratio `ds_master / ds_slave`.
+    pub gamma: f64,
+    /// Arc length of the master node along the master contour.
+    pub master_arc_length: f64,
+    /// Arc length of the paired point along the slave contour.
+    pub slave_arc_length: f64,
+}
+
+/// Builds the pairs of every node of `master` with the closest point of `slave`.
+///
+/// `slave_body` names the body the slave contour bounds (to orient the normals outward).
+///
+/// # Errors
+/// [`ContactError::Pairing`] if the slave body is unknown, a contour is degenerate, or the normal
+/// cannot be oriented.
+pub fn pair_contours(
+    model: &Model,
+    master: &Contour,
+    slave: &Contour,
+    slave_body: &str,
+) -> Result<Vec<ContactPair>, ContactError> {
+    let err = |reason: String| ContactError::Pairing { master: master.name.clone(), slave: slave.name.clone(), reason };
+    let (_, body) = model.body(slave_body).ok_or_else(|| err(format!("no body named \"{slave_body}\"")))?;
+    let centroids = slave_edge_centroids(model, body, slave).map_err(err)?;
+    let weights = tributary_weights(master);
+    let mut pairs = Vec::with_capacity(master.nodes.len());
+    for (k, &m) in master.nodes.iter().enumerate() {
+        let x = model.mesh.points[m.0];
+        let (edge_index, xi) = closest_point(slave, &model.mesh.points, x);
+        let edge = &slave.edges[edge_index];
+        let (y, t, _) = slave.edge_frame(edge, xi);
+        let mut normal = [t[1], -t[0]];
+        let c = centroids[edge_index];
+        // Out of the slave body: away from the centroid of the cell that owns the edge.
+        if normal[0] * (y[0] - c[0]) + normal[1] * (y[1] - c[1]) < 0.0 {
+            normal = [-normal[0], -normal[1]];
+        }
+        let shape = edge_shape(edge.quadratic, xi);
+        let count = if edge.quadratic { 3 } else { 2 };
+        let slave_nodes: Vec<(NodeId, f64)> =
+            (0..count).map(|a| (edge.nodes[a], shape[a])).filter(|(_, w)| w.abs() > 1e-14).collect();
+        pairs.push(ContactPair {
+            master: m,
+            slave: slave_nodes,
+            slave_point: y,
+            normal,
+            tangent: [-normal[1], normal[0]],
+            gap: (x[0] - y[0]) * normal[0] + (x[1] - y[1]) * normal[1],
+            weight: weights[k],
+            gamma: 1.0,
+            master_arc_length: master.arc_length[k],
+            slave_arc_length: slave.arc_length[edge.first] + slave.edge_length(edge, xi),
+        });
+    }
+    set_gamma(&mut pairs);
+    Ok(pairs)
+}
+
+fn edge_shape(quadratic: bool, xi: f64) -> [f64; 3] {
+    if quadratic {
+        [0.5 * xi * (xi - 1.0), 0.5 * xi * (xi + 1.0), 1.0 - xi * xi]
+    } else {
+        [0.5 * (1.0 - xi), 0.5 * (1.0 + xi), 0.0]
+    }
+}
+
+/// The edge of `slave` and the reference coordinate of the point closest to `x`.
+fn closest_point(slave: &Contour, points: &[[f64; 2]], x: [f64; 2]) -> (usize, f64) {
+    let mut best = (0, 0.0, f64::INFINITY);
+    for (i, edge) in slave.edges.iter().enumerate() {
+        // x''(ξ) is constant: Σ N''_a y_a with N'' = (1, 1, -2) for Line3, zero for Line2.
+        let dd = if edge.quadratic {
+            let [a, b, m] = edge.nodes.map(|n| points[n.0]);
+            [a[0] + b[0] - 2.0 * m[0], a[1] + b[1] - 2.0 * m[1]]
+        } else {
+            [0.0, 0.0]
+        };
+        // Newton on f(ξ) = (x(ξ) - x) · x'(ξ) = 0 from three starts, clamped to the edge.
+        for start in [-0.5, 0.0, 0.5] {
+            let mut xi: f64 = start;
+            for _ in 0..30 {
+                let (p, d) = slave.edge_point(edge, xi);
+                let r = [p[0] - x[0], p[1] - x[1]];
+                let f = r[0] * d[0] + r[1] * d[1];
+                let df = d[0] * d[0] + d[1] * d[1] + r[0] * dd[0] + r[1] * dd[1];
+                let step = if df > 0.0 { f / df } else { f / (d[0] * d[0] + d[1] * d[1]) };
+                let next = (xi - step).clamp(-1.0, 1.0);
+                let converged = (next - xi).abs() < 1e-15;
+                xi = next;
+                if converged {
+                    break;
+                }
+            }
+            let (p, _) = slave.edge_point(edge, xi);
+            let dist = (p[0] - x[0]).hypot(p[1] - x[1]);
+            if dist < best.2 - 1e-15 {
+                best = (i, xi, dist);
+            }
+        }
+    }
+    (best.0, snap(best.1))
+}
+
+/// Rounds ξ to a node where it is there to round-off, so node-to-node pairs are exact.
+fn snap(xi: f64) -> f64 {
+    for node in [-1.0, 0.0, 1.0] {
+        if (xi - node).abs() < 1e-10 {
+            return node;
+        }
+    }
+    xi
+}
+
+fn slave_edge_centroids(model: &Model, body: &contact2d_fem::Body, slave: &Contour) -> Result<Vec<[f64; 2]>, String> {
+    use std::collections::HashMap;
+    let mut cells_of: HashMap<NodeId, Vec<usize>> = HashMap::new();
+    for i in 0..body.num_cells() {
+        for n in body.cell_nodes(i) {
+            cells_of.entry(*n).or_default().push(i);
+        }
+    }
+    slave
+        .edges
+        .iter()
+        .map(|e| {
+            let cell = cells_of
+                .get(&e.nodes[0])
+                .and_then(|cs| cs.iter().find(|&&c| body.cell_nodes(c).contains(&e.nodes[1])))
+                .ok_or_else(|| {
+                    format!("slave edge at node index {} does not bound body \"{}\"", e.nodes[0].0, body.name)
+                })?;
+            let coords = body.cell_coords(&model.mesh, *cell);
+            let k = coords.len() as f64;
+            Ok([coords.iter().map(|p| p[0]).sum::<f64>() / k, coords.iter().map(|p| p[1]).sum::<f64>() / k])
+        })
+        .collect()
+}
+
+/// `w_a = Σ_edges ∫ N_a ds` for every node of the contour (5-point Gauss per edge).
+pub fn tributary_weights(contour: &Contour) -> Vec<f64> {
+    const G: [(f64, f64); 5] = [
+        (-0.906_179_845_938_664, 0.236_926_885_056_189),
+        (-0.538_469_310_105_683, 0.478_628_670_499_366),
+        (0.0, 0.568_888_888_888_889),
+        (0.538_469_310_105_683, 0.478_628_670_499_366),
+        (0.906_179_845_938_664, 0.236_926_885_056_189),
+    ];
+    let mut w = vec![0.0; contour.nodes.len()];
+    for e in &contour.edges {
+        // Contour indices of start, end and mid in `nodes`.
+        let (start, mid, end) =
+            if e.quadratic { (e.first, e.first + 1, e.first + 2) } else { (e.first, e.first, e.first + 1) };
+        let end = if contour.closed && end == contour.nodes.len() { 0 } else { end };
+        for (g, wg) in G {
+            let (_, _, ds) = contour.edge_frame(e, g);
+            let n = edge_shape(e.quadratic, g);
+            w[start] += wg * ds * n[0];
+            w[end] += wg * ds * n[1];
+            if e.quadratic {
+                w[mid] += wg * ds * n[2];
+            }
+        }
+    }
+    w
+}
+
+/// γ = ds_master / ds_slave by central differences of the paired arc lengths (one-sided at ends).
+fn set_gamma(pairs: &mut [ContactPair]) {
+    let n = pairs.len();
+    if n < 2 {
+        return;
+    }
+    let s: Vec<(f64, f64)> = pairs.iter().map(|p| (p.master_arc_length, p.slave_arc_length)).collect();
+    for (k, p) in pairs.iter_mut().enumerate() {
+        let (a, b) = (k.saturating_sub(1), (k + 1).min(n - 1));
+        let ds_slave = (s[b].1 - s[a].1).abs();
+        if ds_slave > 0.0 {
+            p.gamma = (s[b].0 - s[a].0).abs() / ds_slave;
+        }
+    }
+}

@@ -1,0 +1,142 @@
+//! One contact problem for every algorithm: the bodies' linear system, the pair rows, the gaps.
+//!
+//! ```text
+//! K_ff u_f = w r + B_Nᵀ λ + B_Tᵀ τ          (r: right-hand side of the load pattern, w: load factor)
+//! gap_k(u) = g0_k + (B_N u)_k ≥ 0,  λ_k ≥ 0,  λ_k gap_k = 0
+//! (B_N u)_k = n_k · (u_master − Σ_j N_j u_slave_j),   (B_T u)_k likewise with t_k
+//! ```
+//!
+//! `λ_k` is the normal force on the master node (along `n_k`, compressive when positive); the
+//! slave nodes carry `−N_j λ_k n_k`. Rows are split into their free and constrained parts, so a
+//! prescribed displacement (the pulled edge) enters the gap as `w (B_N,c u_c)`.
+
+use contact2d_fem::{CholeskySolver, Component, Dof, DofKind, LinearSystem, Model, assemble};
+
+use crate::error::ContactError;
+use crate::pairing::ContactPair;
+
+/// A sparse row over free DOFs plus its part over constrained DOFs.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct PairRow {
+    /// `(free index, coefficient)`.
+    pub free: Vec<(usize, f64)>,
+    /// `(constrained index, coefficient)`.
+    pub constrained: Vec<(usize, f64)>,
+}
+
+impl PairRow {
+    /// `row · u` for free values `u_f` and constrained values `u_c`.
+    pub fn dot(&self, u_free: &[f64], u_constrained: &[f64]) -> f64 {
+        self.free.iter().map(|(i, v)| v * u_free[*i]).sum::<f64>()
+            + self.constrained.iter().map(|(j, v)| v * u_constrained[*j]).sum::<f64>()
+    }
+}
+
+/// The discrete contact problem shared by all algorithms.
+#[derive(Debug, Clone)]
+pub struct ContactProblem {
+    /// The finite-element model (bodies, Dirichlet pattern).
+    pub model: Model,
+    /// Its assembled system.
+    pub system: LinearSystem,
+    /// Cholesky factorisation of `K_ff`, computed once.
+    pub solver: CholeskySolver,
+    /// The pairs.
+    pub pairs: Vec<ContactPair>,
+    /// Normal rows `B_N`.
+    pub normal_rows: Vec<PairRow>,
+    /// Tangential rows `B_T`.
+    pub tangent_rows: Vec<PairRow>,
+    /// Initial gaps `g0` (geometric by default, replaceable).
+    pub gap: Vec<f64>,
+    /// Friction coefficient per pair (0 = frictionless).
+    pub friction: Vec<f64>,
+    /// Right-hand side of the unit load pattern, `r = f_f − K_fc u_c` with the model's values.
+    pub pattern_rhs: Vec<f64>,
+    /// Constrained values of the unit load pattern (the model's prescribed values).
+    pub pattern_prescribed: Vec<f64>,
+}
+
+impl ContactProblem {
+    /// Assembles and factors `model` and builds the rows of `pairs` (frictionless, geometric gaps).
+    ///
+    /// # Errors
+    /// From assembly/factorisation, or a pair whose nodes have no DOFs.
+    pub fn new(model: Model, pairs: Vec<ContactPair>) -> Result<ContactProblem, ContactError> {
+        let system = assemble(&model)?;
+        let solver = CholeskySolver::factor(&system.stiffness)?;
+        let pattern_prescribed = system.dofs.prescribed_values().to_vec();
+        let pattern_rhs = system.rhs(&pattern_prescribed);
+        let mut normal_rows = Vec::with_capacity(pairs.len());
+        let mut tangent_rows = Vec::with_capacity(pairs.len());
+        for p in &pairs {
+            normal_rows.push(pair_row(&system, p, p.normal)?);
+            tangent_rows.push(pair_row(&system, p, p.tangent)?);
+        }
+        let gap = pairs.iter().map(|p| p.gap).collect();
+        let friction = vec![0.0; pairs.len()];
+        Ok(ContactProblem {
+            model,
+            system,
+            solver,
+            pairs,
+            normal_rows,
+            tangent_rows,
+            gap,
+            friction,
+            pattern_rhs,
+            pattern_prescribed,
+        })
+    }
+
+    /// Replaces the initial gaps (e.g. by the paper's u_ρc, in displacement units).
+    ///
+    /// # Errors
+    /// Wrong length or non-finite values.
+    pub fn set_gaps(&mut self, gap: Vec<f64>) -> Result<(), ContactError> {
+        if gap.len() != self.pairs.len() || gap.iter().any(|g| !g.is_finite()) {
+            return Err(ContactError::InvalidInput(format!(
+                "{} gaps given for {} pairs (all must be finite)",
+                gap.len(),
+                self.pairs.len()
+            )));
+        }
+        self.gap = gap;
+        Ok(())
+    }
+
+    /// Number of pairs.
+    pub fn num_pairs(&self) -> usize {
+        self.pairs.len()
+    }
+
+    /// Whether every initial gap is zero (then a frictionless solution is linear in the load).
+    pub fn is_gapless(&self) -> bool {
+        self.gap.iter().all(|g| *g == 0.0)
+    }
+}
+
+fn pair_row(system: &LinearSystem, pair: &ContactPair, dir: [f64; 2]) -> Result<PairRow, ContactError> {
+    let mut row = PairRow::default();
+    let mut push = |node: usize, scale: f64| -> Result<(), ContactError> {
+        for c in [Component::X, Component::Y] {
+            let v = scale * dir[c.index()];
+            if v == 0.0 {
+                continue;
+            }
+            match system.dofs.kind(Dof::of(node, c)) {
+                DofKind::Free(i) => row.free.push((i, v)),
+                DofKind::Constrained(j) => row.constrained.push((j, v)),
+                DofKind::Inactive => {
+                    return Err(ContactError::InvalidInput(format!("contact node index {node} belongs to no body")));
+                }
+            }
+        }
+        Ok(())
+    };
+    push(pair.master.0, 1.0)?;
+    for (n, w) in &pair.slave {
+        push(n.0, -w)?;
+    }
+    Ok(row)
+}

@@ -1,0 +1,35 @@
+//! Isoparametric plane-elasticity elements: local mathematics only.
+//!
+//! Shape functions (T3, T6, Q4, Q8, Q9 and 2-/3-node edges, in Gmsh's node order), Gauss rules,
+//! the isoparametric map, plane stress / plane strain isotropic elasticity, element stiffness,
+//! consistent loads, and strains and stresses at any reference point. This crate knows nothing of
+//! meshes: it works on one element's nodal coordinates.
+//!
+//! # Examples
+//! ```
+//! use contact2d_element::{element_stiffness, ElementType, GaussRule, Material, PlaneCondition};
+//! let steel = Material::new(210e9, 0.3, PlaneCondition::Stress)?;
+//! let quad9 = ElementType::Quad9;
+//! let coords: Vec<[f64; 2]> = quad9.reference_nodes().to_vec();
+//! let k = element_stiffness(quad9, &coords, &steel, 1.0, &GaussRule::stiffness_rule(quad9))?;
+//! assert_eq!(k.nrows(), 18);
+//! # Ok::<(), contact2d_element::ElementError>(())
+//! ```
+
+pub mod error;
+pub mod isoparametric;
+pub mod loads;
+pub mod material;
+pub mod quadrature;
+pub mod shape;
+pub mod stiffness;
+pub mod stress;
+
+pub use error::ElementError;
+pub use isoparametric::{EdgePoint, MappedPoint, jacobian_determinant, map_edge_point, map_point};
+pub use loads::{body_force_load, edge_traction_load};
+pub use material::{Material, PlaneCondition};
+pub use quadrature::{GaussRule, gauss_legendre};
+pub use shape::{EdgeType, ElementType, MAX_NODES, ShapeEval};
+pub use stiffness::{element_area, element_stiffness};
+pub use stress::{gauss_to_node_extrapolation, strain_at, stress_at};

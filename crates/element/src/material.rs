@@ -1,0 +1,148 @@
+//! Linear isotropic elasticity in plane stress or plane strain.
+//!
+//! Voigt notation with engineering shear strain, `ε = [ε11, ε22, γ12]`, `γ12 = 2 ε12`,
+//! `σ = [σ11, σ22, σ12]`, `σ = D ε`:
+//!
+//! ```text
+//! plane stress:  D = E/(1-ν²)        [ 1   ν   0       ]
+//!                                    [ ν   1   0       ]
+//!                                    [ 0   0   (1-ν)/2 ]
+//!
+//! plane strain:  D = E/((1+ν)(1-2ν)) [ 1-ν  ν    0        ]
+//!                                    [ ν    1-ν  0        ]
+//!                                    [ 0    0    (1-2ν)/2 ]
+//! ```
+//!
+//! The strain energy density is `½ εᵀ D ε`; for plane stress this is the paper's (1.1):
+//! `E/(2(1-ν²)) [e11² + 2ν e11 e22 + e22² + 2(1-ν) e12²]`.
+
+use nalgebra::Matrix3;
+
+use crate::error::ElementError;
+
+/// Which 2D reduction of 3D elasticity.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum PlaneCondition {
+    /// σ33 = 0 (thin plates; the paper's case).
+    Stress,
+    /// ε33 = 0 (long bodies).
+    Strain,
+}
+
+/// An isotropic linear elastic material in a plane condition.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Material {
+    youngs_modulus: f64,
+    poissons_ratio: f64,
+    plane: PlaneCondition,
+}
+
+impl Material {
+    /// A material with Young's modulus `E > 0` and Poisson's ratio `-1 < ν < 0.5`.
+    ///
+    /// # Errors
+    /// [`ElementError::InvalidMaterial`] for a non-finite or out-of-range parameter.
+    pub fn new(youngs_modulus: f64, poissons_ratio: f64, plane: PlaneCondition) -> Result<Self, ElementError> {
+        if !(youngs_modulus.is_finite() && youngs_modulus > 0.0) {
+            return Err(ElementError::InvalidMaterial {
+                reason: format!("Young's modulus must be positive and finite, got {youngs_modulus}"),
+            });
+        }
+        if !(poissons_ratio.is_finite() && poissons_ratio > -1.0 && poissons_ratio < 0.5) {
+            return Err(ElementError::InvalidMaterial {
+                reason: format!("Poisson's ratio must lie in (-1, 0.5), got {poissons_ratio}"),
+            });
+        }
+        Ok(Material { youngs_modulus, poissons_ratio, plane })
+    }
+
+    /// Young's modulus E.
+    pub fn youngs_modulus(&self) -> f64 {
+        self.youngs_modulus
+    }
+
+    /// Poisson's ratio ν.
+    pub fn poissons_ratio(&self) -> f64 {
+        self.poissons_ratio
+    }
+
+    /// Plane stress or plane strain.
+    pub fn plane(&self) -> PlaneCondition {
+        self.plane
+    }
+
+    /// The elasticity matrix `D` (see the module docs).
+    pub fn elasticity_matrix(&self) -> Matrix3<f64> {
+        let (e, nu) = (self.youngs_modulus, self.poissons_ratio);
+        match self.plane {
+            PlaneCondition::Stress => {
+                let c = e / (1.0 - nu * nu);
+                Matrix3::new(c, c * nu, 0.0, c * nu, c, 0.0, 0.0, 0.0, c * 0.5 * (1.0 - nu))
+            }
+            PlaneCondition::Strain => {
+                let c = e / ((1.0 + nu) * (1.0 - 2.0 * nu));
+                Matrix3::new(
+                    c * (1.0 - nu),
+                    c * nu,
+                    0.0,
+                    c * nu,
+                    c * (1.0 - nu),
+                    0.0,
+                    0.0,
+                    0.0,
+                    c * 0.5 * (1.0 - 2.0 * nu),
+                )
+            }
+        }
+    }
+
+    /// The out-of-plane stress σ33: zero in plane stress, `ν (σ11 + σ22)` in plane strain.
+    pub fn out_of_plane_stress(&self, stress: &[f64; 3]) -> f64 {
+        match self.plane {
+            PlaneCondition::Stress => 0.0,
+            PlaneCondition::Strain => self.poissons_ratio * (stress[0] + stress[1]),
+        }
+    }
+
+    /// The von Mises equivalent stress of an in-plane stress state (with σ33 from the plane condition).
+    pub fn von_mises(&self, stress: &[f64; 3]) -> f64 {
+        let [s11, s22, s12] = *stress;
+        let s33 = self.out_of_plane_stress(stress);
+        (0.5 * ((s11 - s22).powi(2) + (s22 - s33).powi(2) + (s33 - s11).powi(2)) + 3.0 * s12 * s12).sqrt()
+    }
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rejects_out_of_range_parameters() {
+        for (e, nu) in [(0.0, 0.3), (-1.0, 0.3), (f64::NAN, 0.3), (1.0, 0.5), (1.0, -1.0), (1.0, f64::INFINITY)] {
+            assert!(matches!(Material::new(e, nu, PlaneCondition::Stress), Err(ElementError::InvalidMaterial { .. })));
+        }
+    }
+
+    #[test]
+    fn plane_stress_energy_matches_paper_form() {
+        // (1.1): W = E/(2(1-ν²)) [e11² + 2ν e11 e22 + e22² + 2(1-ν) e12²], with γ = 2 e12.
+        let m = Material::new(2.0, 0.3, PlaneCondition::Stress).unwrap();
+        let (e11, e22, e12) = (0.1, -0.03, 0.02);
+        let eps = nalgebra::Vector3::new(e11, e22, 2.0 * e12);
+        let w = 0.5 * eps.dot(&(m.elasticity_matrix() * eps));
+        let paper = 2.0 / (2.0 * (1.0 - 0.09)) * (e11 * e11 + 0.6 * e11 * e22 + e22 * e22 + 1.4 * e12 * e12);
+        assert!((w - paper).abs() < 1e-15);
+    }
+
+    #[test]
+    fn plane_strain_has_zero_out_of_plane_strain() {
+        // ε33 = (σ33 - ν(σ11 + σ22))/E must vanish.
+        let m = Material::new(3.0, 0.25, PlaneCondition::Strain).unwrap();
+        let s = m.elasticity_matrix() * nalgebra::Vector3::new(0.01, 0.02, 0.003);
+        let s = [s[0], s[1], s[2]];
+        let s33 = m.out_of_plane_stress(&s);
+        assert!((s33 - 0.25 * (s[0] + s[1])).abs() < 1e-15);
+        assert!(m.von_mises(&[1.0, 1.0, 0.0]) > 0.0);
+    }
+}

@@ -1,0 +1,147 @@
+//! Strain and stress at any reference point, and extrapolation from Gauss points to nodes.
+//!
+//! ```text
+//! ε(ξ) = Σ_a B_a(ξ) u_a,   σ(ξ) = D ε(ξ)        (Voigt: [ε11, ε22, γ12], [σ11, σ22, σ12])
+//! ```
+//!
+//! Extrapolation: the Gauss-point values are interpolated by the polynomial space that is
+//! unisolvent on the points (constant for 1 point, linear for 3 triangle points, the tensor
+//! Lagrange space of degree n-1 for an n×n rule) and that polynomial is evaluated at the nodes:
+//! `σ_nodes = E σ_gauss` with `E = M V⁻¹`, `V` the basis at the Gauss points and `M` at the nodes.
+//! For Quad9 with 3×3 points this is exact for biquadratic stress fields.
+
+use nalgebra::DMatrix;
+
+use crate::error::ElementError;
+use crate::isoparametric::map_point;
+use crate::material::Material;
+use crate::quadrature::GaussRule;
+use crate::shape::ElementType;
+
+/// The strain `[ε11, ε22, γ12]` at reference point `xi` for element displacements
+/// `u = [u_0x, u_0y, u_1x, ...]`.
+///
+/// # Errors
+/// As [`map_point`].
+pub fn strain_at(element: ElementType, coords: &[[f64; 2]], u: &[f64], xi: [f64; 2]) -> Result<[f64; 3], ElementError> {
+    let p = map_point(element, coords, xi)?;
+    if u.len() != 2 * p.len {
+        return Err(ElementError::WrongNodeCount {
+            element: "displacement vector",
+            expected: 2 * p.len,
+            got: u.len() / 2,
+        });
+    }
+    let mut e = [0.0; 3];
+    for a in 0..p.len {
+        let [gx, gy] = p.dn_dx[a];
+        let (ux, uy) = (u[2 * a], u[2 * a + 1]);
+        e[0] += gx * ux;
+        e[1] += gy * uy;
+        e[2] += gy * ux + gx * uy;
+    }
+    Ok(e)
+}
+
+/// The stress `[σ11, σ22, σ12]` at reference point `xi`.
+///
+/// # Errors
+/// As [`strain_at`].
+pub fn stress_at(
+    element: ElementType,
+    coords: &[[f64; 2]],
+    material: &Material,
+    u: &[f64],
+    xi: [f64; 2],
+) -> Result<[f64; 3], ElementError> {
+    let e = strain_at(element, coords, u, xi)?;
+    let s = material.elasticity_matrix() * nalgebra::Vector3::new(e[0], e[1], e[2]);
+    Ok([s[0], s[1], s[2]])
+}
+
+/// Monomial exponents of the extrapolation space for a rule of `len` points on `element`'s cell.
+fn extrapolation_basis(element: ElementType, len: usize) -> Result<Vec<(i32, i32)>, ElementError> {
+    let unsupported =
+        || ElementError::UnsupportedRule { what: format!("extrapolation from {len} points on {element:?}") };
+    if element.is_triangle() {
+        match len {
+            1 => Ok(vec![(0, 0)]),
+            3 => Ok(vec![(0, 0), (1, 0), (0, 1)]),
+            6 => Ok(vec![(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)]),
+            _ => Err(unsupported()),
+        }
+    } else {
+        let n = (len as f64).sqrt().round() as i32;
+        if (n * n) as usize != len || n == 0 {
+            return Err(unsupported());
+        }
+        Ok((0..n).flat_map(|j| (0..n).map(move |i| (i, j))).collect())
+    }
+}
+
+/// The extrapolation matrix `E` (`nodes × points`) from the points of `rule` to the element's nodes.
+///
+/// # Errors
+/// [`ElementError::UnsupportedRule`] when no unisolvent space is tabulated for the rule.
+pub fn gauss_to_node_extrapolation(element: ElementType, rule: &GaussRule) -> Result<DMatrix<f64>, ElementError> {
+    let basis = extrapolation_basis(element, rule.len())?;
+    let eval = |p: &[f64; 2]| basis.iter().map(|&(i, j)| p[0].powi(i) * p[1].powi(j)).collect::<Vec<_>>();
+    let v = DMatrix::from_row_iterator(rule.len(), basis.len(), rule.points.iter().flat_map(eval));
+    let nodes = element.reference_nodes();
+    let m = DMatrix::from_row_iterator(nodes.len(), basis.len(), nodes.iter().flat_map(eval));
+    let v_inv = v.try_inverse().ok_or_else(|| ElementError::UnsupportedRule {
+        what: format!("extrapolation from {} points on {element:?}: points not unisolvent", rule.len()),
+    })?;
+    Ok(m * v_inv)
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+    use crate::material::PlaneCondition;
+
+    #[test]
+    fn affine_displacement_gives_its_constant_strain_on_every_element() {
+        for t in ElementType::ALL {
+            let coords: Vec<[f64; 2]> = t
+                .reference_nodes()
+                .iter()
+                .map(|&[x, y]| [1.2 * x + 0.3 * y + 0.05 * x * y, 0.1 * x + 0.8 * y])
+                .collect();
+            let u: Vec<f64> = coords.iter().flat_map(|&[x, y]| [0.01 * x + 0.02 * y, -0.005 * x + 0.03 * y]).collect();
+            let e = strain_at(t, &coords, &u, [0.2, 0.1]).unwrap();
+            assert!((e[0] - 0.01).abs() < 1e-14 && (e[1] - 0.03).abs() < 1e-14 && (e[2] - 0.015).abs() < 1e-14);
+            let m = Material::new(2.0, 0.3, PlaneCondition::Stress).unwrap();
+            let s = stress_at(t, &coords, &m, &u, [0.0, 0.1]).unwrap();
+            assert!((s[2] - 2.0 / 2.6 * 0.015).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn extrapolation_reproduces_fields_of_the_space() {
+        // Quad9 3×3: biquadratic fields exactly; Tri6 3-point: linear fields exactly.
+        let q9 = gauss_to_node_extrapolation(ElementType::Quad9, &GaussRule::quad(3).unwrap()).unwrap();
+        let rule = GaussRule::quad(3).unwrap();
+        let f = |p: &[f64; 2]| 1.0 + p[0] - 2.0 * p[1] * p[1] + p[0] * p[0] * p[1] * p[1];
+        let g = DMatrix::from_iterator(9, 1, rule.points.iter().map(f));
+        let nodal = &q9 * g;
+        for (a, x) in ElementType::Quad9.reference_nodes().iter().enumerate() {
+            assert!((nodal[a] - f(x)).abs() < 1e-12);
+        }
+        let t6 = gauss_to_node_extrapolation(ElementType::Tri6, &GaussRule::triangle(2).unwrap()).unwrap();
+        let rule = GaussRule::triangle(2).unwrap();
+        let f = |p: &[f64; 2]| 2.0 - p[0] + 3.0 * p[1];
+        let nodal = &t6 * DMatrix::from_iterator(3, 1, rule.points.iter().map(f));
+        for (a, x) in ElementType::Tri6.reference_nodes().iter().enumerate() {
+            assert!((nodal[a] - f(x)).abs() < 1e-12);
+        }
+        assert!(gauss_to_node_extrapolation(ElementType::Quad4, &GaussRule::triangle(4).unwrap()).is_err());
+    }
+
+    #[test]
+    fn wrong_displacement_length_is_an_error() {
+        let c = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+        assert!(strain_at(ElementType::Tri3, &c, &[0.0; 4], [0.1, 0.1]).is_err());
+    }
+}

@@ -1,0 +1,213 @@
+//! Parallel assembly of the linear system with Dirichlet conditions eliminated.
+//!
+//! ```text
+//! K = Σ_e Aₑᵀ K_e Aₑ,   split by DOF role (f = free, c = constrained):
+//!
+//!   [ K_ff  K_fc ] [u_f]   [f_f]            K_ff u_f = f_f - K_fc u_c     (solved)
+//!   [ K_cf  K_cc ] [u_c] = [f_c + r_c]      r_c = K_cf u_f + K_cc u_c - f_c (reactions)
+//! ```
+//!
+//! Element matrices are computed in parallel (rayon), scattered into triplets, and summed into
+//! faer's CSC (duplicates summed). Only the lower triangle of `K_ff` is stored: the Cholesky
+//! factorisation reads that side. `K_fc` and `K_cc` are kept so that the right-hand side and the
+//! reactions can be formed for any prescribed values without assembling again.
+
+use contact2d_element::{EdgeType, GaussRule, edge_traction_load, element_stiffness};
+use contact2d_mesh::CellKind;
+use faer::sparse::{SparseColMat, Triplet};
+use rayon::prelude::*;
+
+use crate::dof::{Dof, DofKind, DofMap};
+use crate::error::FemError;
+use crate::model::{EdgeLoad, Model};
+use crate::rigid::check_rigid_modes;
+
+/// Compressed sparse column matrix of f64 with usize indices.
+pub type Csc = SparseColMat<usize, f64>;
+
+/// The assembled, Dirichlet-reduced linear system of a model.
+#[derive(Debug, Clone)]
+pub struct LinearSystem {
+    /// The DOF numbering.
+    pub dofs: DofMap,
+    /// `K_ff`, lower triangle only.
+    pub stiffness: Csc,
+    /// `K_fc` (free rows, constrained columns).
+    pub coupling: Csc,
+    /// `K_cc`.
+    pub constrained: Csc,
+    /// External nodal loads in global DOF order.
+    pub load: Vec<f64>,
+}
+
+#[derive(Default)]
+struct Triplets {
+    ff: Vec<Triplet<usize, usize, f64>>,
+    fc: Vec<Triplet<usize, usize, f64>>,
+    cc: Vec<Triplet<usize, usize, f64>>,
+}
+
+impl Triplets {
+    fn append(mut self, mut other: Triplets) -> Triplets {
+        self.ff.append(&mut other.ff);
+        self.fc.append(&mut other.fc);
+        self.cc.append(&mut other.cc);
+        self
+    }
+}
+
+/// Assembles the model: DOF map, rigid-mode check, stiffness blocks and loads.
+///
+/// # Errors
+/// Conflicting Dirichlet conditions, an unconstrained body, element failures, or a sparse
+/// construction failure.
+pub fn assemble(model: &Model) -> Result<LinearSystem, FemError> {
+    let dofs = model.dof_map()?;
+    check_rigid_modes(model, &dofs)?;
+    let cells: Vec<(usize, usize)> =
+        model.bodies.iter().enumerate().flat_map(|(b, body)| (0..body.num_cells()).map(move |i| (b, i))).collect();
+    let triplets = cells
+        .par_chunks(256)
+        .map(|chunk| {
+            let mut t = Triplets::default();
+            for &(b, i) in chunk {
+                scatter_cell(model, &dofs, b, i, &mut t)?;
+            }
+            Ok::<_, FemError>(t)
+        })
+        .try_reduce(Triplets::default, |a, b| Ok(a.append(b)))?;
+    let (nf, nc) = (dofs.num_free(), dofs.num_constrained());
+    let build = |n: usize, m: usize, t: &[Triplet<usize, usize, f64>]| {
+        Csc::try_new_from_triplets(n, m, t).map_err(|e| FemError::Factorization(format!("sparse assembly: {e:?}")))
+    };
+    Ok(LinearSystem {
+        stiffness: build(nf, nf, &triplets.ff)?,
+        coupling: build(nf, nc, &triplets.fc)?,
+        constrained: build(nc, nc, &triplets.cc)?,
+        load: assemble_edge_loads(model)?,
+        dofs,
+    })
+}
+
+fn scatter_cell(model: &Model, dofs: &DofMap, b: usize, i: usize, t: &mut Triplets) -> Result<(), FemError> {
+    let body = &model.bodies[b];
+    let element = body.elements[i];
+    let coords = body.cell_coords(&model.mesh, i);
+    let k = element_stiffness(element, &coords, &body.material, body.thickness, &GaussRule::stiffness_rule(element))
+        .map_err(|source| FemError::Element { body: body.name.clone(), cell: body.cell_tags[i], source })?;
+    let kinds: Vec<DofKind> = body.cell_dofs(i).map(|d| dofs.kind(d)).collect();
+    for (col, kc) in kinds.iter().enumerate() {
+        for (row, kr) in kinds.iter().enumerate() {
+            let v = k[(row, col)];
+            match (kr, kc) {
+                (DofKind::Free(r), DofKind::Free(c)) if r >= c => t.ff.push(Triplet::new(*r, *c, v)),
+                (DofKind::Free(r), DofKind::Constrained(c)) => t.fc.push(Triplet::new(*r, *c, v)),
+                (DofKind::Constrained(r), DofKind::Constrained(c)) => t.cc.push(Triplet::new(*r, *c, v)),
+                _ => {}
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Consistent nodal forces of all edge loads, in global DOF order.
+fn assemble_edge_loads(model: &Model) -> Result<Vec<f64>, FemError> {
+    let mut f = vec![0.0; 2 * model.mesh.num_nodes()];
+    for load in &model.edge_loads {
+        let (group, traction, pressure) = match load {
+            EdgeLoad::Traction { group, traction } => (group, *traction, 0.0),
+            EdgeLoad::Pressure { group, pressure } => (group, [0.0; 2], *pressure),
+        };
+        for block in model.mesh.blocks_in_group(group)? {
+            let edge = match block.kind {
+                CellKind::Line2 => EdgeType::Line2,
+                CellKind::Line3 => EdgeType::Line3,
+                _ => continue,
+            };
+            for (cell, tag) in block.cells().zip(&block.element_tags) {
+                let coords: Vec<[f64; 2]> = cell.iter().map(|n| model.mesh.points[n.0]).collect();
+                let sign = outward_sign(model, cell, &coords);
+                let fe = edge_traction_load(edge, &coords, 1.0, 3, |_, n| {
+                    [traction[0] - sign * pressure * n[0], traction[1] - sign * pressure * n[1]]
+                })
+                .map_err(|source| FemError::Element { body: group.clone(), cell: *tag, source })?;
+                for (a, node) in cell.iter().enumerate() {
+                    f[2 * node.0] += fe[2 * a];
+                    f[2 * node.0 + 1] += fe[2 * a + 1];
+                }
+            }
+        }
+    }
+    // Thickness: the load is per unit thickness times the thickness of the body carrying it.
+    Ok(f)
+}
+
+/// +1 if the edge normal `(t_y, -t_x)` points out of the body cell that owns the edge, else -1.
+fn outward_sign(model: &Model, edge: &[contact2d_mesh::NodeId], coords: &[[f64; 2]]) -> f64 {
+    let mid = [0.5 * (coords[0][0] + coords[1][0]), 0.5 * (coords[0][1] + coords[1][1])];
+    let n = [coords[1][1] - coords[0][1], coords[0][0] - coords[1][0]];
+    for body in &model.bodies {
+        for i in 0..body.num_cells() {
+            let nodes = body.cell_nodes(i);
+            if edge.iter().take(2).all(|e| nodes.contains(e)) {
+                let c = body.cell_coords(&model.mesh, i);
+                let centroid = [
+                    c.iter().map(|p| p[0]).sum::<f64>() / c.len() as f64,
+                    c.iter().map(|p| p[1]).sum::<f64>() / c.len() as f64,
+                ];
+                let out = [mid[0] - centroid[0], mid[1] - centroid[1]];
+                return if n[0] * out[0] + n[1] * out[1] >= 0.0 { 1.0 } else { -1.0 };
+            }
+        }
+    }
+    1.0
+}
+
+impl LinearSystem {
+    /// The right-hand side `f_f - K_fc u_c` for prescribed values `u_c` (per constrained index).
+    pub fn rhs(&self, prescribed: &[f64]) -> Vec<f64> {
+        let mut rhs: Vec<f64> = self.dofs.free_dofs().iter().map(|d| self.load[d.0]).collect();
+        for (j, &uc) in prescribed.iter().enumerate() {
+            if uc == 0.0 {
+                continue;
+            }
+            let col = self.coupling.as_ref();
+            for (r, v) in col.row_idx_of_col(j).zip(col.val_of_col(j)) {
+                rhs[r] -= v * uc;
+            }
+        }
+        rhs
+    }
+
+    /// Reactions `r_c = K_cf u_f + K_cc u_c - f_c`, per constrained index.
+    pub fn reactions(&self, u_free: &[f64], prescribed: &[f64]) -> Vec<f64> {
+        let (fc, cc) = (self.coupling.as_ref(), self.constrained.as_ref());
+        (0..self.dofs.num_constrained())
+            .map(|j| {
+                let from_free: f64 = fc.row_idx_of_col(j).zip(fc.val_of_col(j)).map(|(r, v)| v * u_free[r]).sum();
+                let from_fixed: f64 = cc.row_idx_of_col(j).zip(cc.val_of_col(j)).map(|(r, v)| v * prescribed[r]).sum();
+                from_free + from_fixed - self.load[self.dofs.constrained_dofs()[j].0]
+            })
+            .collect()
+    }
+
+    /// `K_ff x` using the stored lower triangle.
+    pub fn apply_stiffness(&self, x: &[f64]) -> Vec<f64> {
+        let k = self.stiffness.as_ref();
+        let mut y = vec![0.0; x.len()];
+        for j in 0..k.ncols() {
+            for (i, v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
+                y[i] += v * x[j];
+                if i != j {
+                    y[j] += v * x[i];
+                }
+            }
+        }
+        y
+    }
+
+    /// Global DOF of free index `i`.
+    pub fn free_dof(&self, i: usize) -> Dof {
+        self.dofs.free_dofs()[i]
+    }
+}

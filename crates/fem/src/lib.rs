@@ -1,0 +1,29 @@
+//! The finite-element layer of contact2d: mesh → model → assembly → solve → solution.
+//!
+//! ```text
+//! Model::new(mesh) + add_body(region, material) + fix(group, component, value) + add_edge_load
+//!   → assemble (parallel, Dirichlet eliminated, K_ff lower triangle in faer CSC)
+//!   → CholeskySolver::factor (symbolic analysis kept for refactoring)
+//!   → Solution (displacements, reactions) → strain_energy, nodal_stresses, stresses_along_curve
+//! ```
+//!
+//! # Examples
+//! A unit square of Quad4 pulled by a prescribed displacement: see `tests/` and the README.
+
+pub mod assembly;
+pub mod dof;
+pub mod error;
+pub mod model;
+pub mod recovery;
+pub mod rigid;
+pub mod solution;
+pub mod solve;
+
+pub use assembly::{Csc, LinearSystem, assemble};
+pub use dof::{Component, Dof, DofKind, DofMap};
+pub use error::FemError;
+pub use model::{Body, BodyId, Dirichlet, EdgeLoad, Model, element_type};
+pub use recovery::{CurveSample, StressRecovery, nodal_stresses, stresses_along_curve};
+pub use rigid::check_rigid_modes;
+pub use solution::{Solution, solve_linear, strain_energy};
+pub use solve::CholeskySolver;

@@ -1,0 +1,259 @@
+//! The finite-element model: bodies (a physical region each, with its material), Dirichlet
+//! conditions and edge loads, all named by physical group.
+//!
+//! Bodies must not share nodes with each other unless they are meant to be bonded; contact
+//! between bodies is added by the contact crate on top of this model.
+
+use contact2d_element::{ElementError, ElementType, GaussRule, Material, map_point};
+use contact2d_mesh::{CellKind, Mesh, NodeId};
+
+use crate::dof::{Component, Dof, DofMap};
+use crate::error::FemError;
+
+/// Index of a body in its model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct BodyId(pub usize);
+
+/// One elastic body: the cells of a 2D physical region, with one material.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Body {
+    /// Name (the physical group's name).
+    pub name: String,
+    /// Material.
+    pub material: Material,
+    /// Out-of-plane thickness.
+    pub thickness: f64,
+    /// Element type of each cell.
+    pub elements: Vec<ElementType>,
+    /// Nodes of each cell, flat; cell `i` spans `offsets[i]..offsets[i + 1]`.
+    pub nodes: Vec<NodeId>,
+    /// Start of each cell in `nodes` (length `cells + 1`).
+    pub offsets: Vec<usize>,
+    /// The mesh's element tag of each cell.
+    pub cell_tags: Vec<u64>,
+}
+
+impl Body {
+    /// Number of cells.
+    pub fn num_cells(&self) -> usize {
+        self.elements.len()
+    }
+
+    /// Nodes of cell `i`.
+    pub fn cell_nodes(&self, i: usize) -> &[NodeId] {
+        &self.nodes[self.offsets[i]..self.offsets[i + 1]]
+    }
+
+    /// Coordinates of cell `i`'s nodes.
+    pub fn cell_coords(&self, mesh: &Mesh, i: usize) -> Vec<[f64; 2]> {
+        self.cell_nodes(i).iter().map(|n| mesh.points[n.0]).collect()
+    }
+
+    /// Global DOFs of cell `i` in element order `[u_0x, u_0y, u_1x, ...]`.
+    pub fn cell_dofs(&self, i: usize) -> impl Iterator<Item = Dof> + '_ {
+        self.cell_nodes(i).iter().flat_map(|n| [Dof::of(n.0, Component::X), Dof::of(n.0, Component::Y)])
+    }
+}
+
+/// A prescribed displacement component on all nodes of a physical group.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Dirichlet {
+    /// Physical group name (any dimension).
+    pub group: String,
+    /// Which component.
+    pub component: Component,
+    /// The prescribed value.
+    pub value: f64,
+}
+
+/// A traction (force per length and thickness) on the edges of a 1D physical group.
+#[derive(Debug, Clone, PartialEq)]
+pub enum EdgeLoad {
+    /// Constant traction vector `[t1, t2]`.
+    Traction {
+        /// Physical group name (1D).
+        group: String,
+        /// Traction vector.
+        traction: [f64; 2],
+    },
+    /// Normal pressure `p` (positive pushes against the body; needs counter-clockwise edges).
+    Pressure {
+        /// Physical group name (1D).
+        group: String,
+        /// Pressure.
+        pressure: f64,
+    },
+}
+
+/// Bodies, boundary conditions and loads on a mesh.
+#[derive(Debug, Clone)]
+pub struct Model {
+    /// The mesh.
+    pub mesh: Mesh,
+    /// Bodies in the order they were added.
+    pub bodies: Vec<Body>,
+    /// Dirichlet conditions.
+    pub dirichlet: Vec<Dirichlet>,
+    /// Edge loads.
+    pub edge_loads: Vec<EdgeLoad>,
+}
+
+/// The element type of a 2D cell kind.
+pub fn element_type(kind: CellKind) -> Option<ElementType> {
+    Some(match kind {
+        CellKind::Tri3 => ElementType::Tri3,
+        CellKind::Tri6 => ElementType::Tri6,
+        CellKind::Quad4 => ElementType::Quad4,
+        CellKind::Quad8 => ElementType::Quad8,
+        CellKind::Quad9 => ElementType::Quad9,
+        _ => return None,
+    })
+}
+
+impl Model {
+    /// An empty model on `mesh`.
+    pub fn new(mesh: Mesh) -> Model {
+        Model { mesh, bodies: vec![], dirichlet: vec![], edge_loads: vec![] }
+    }
+
+    /// Adds the 2D physical group `region` as a body of `material` and `thickness`, checking every
+    /// cell's Jacobian at its nodes and stiffness Gauss points.
+    ///
+    /// # Errors
+    /// Unknown or non-2D group, unsupported cell kinds, a non-positive thickness, or an
+    /// [`FemError::InvertedElement`] naming the first bad cell.
+    pub fn add_body(&mut self, region: &str, material: Material, thickness: f64) -> Result<BodyId, FemError> {
+        if !(thickness.is_finite() && thickness > 0.0) {
+            return Err(FemError::InvalidInput(format!(
+                "body \"{region}\": thickness must be positive, got {thickness}"
+            )));
+        }
+        let group = self.mesh.group(region)?;
+        if group.dim != 2 {
+            return Err(FemError::InvalidRegion {
+                group: region.into(),
+                reason: format!("dimension {} is not 2", group.dim),
+            });
+        }
+        let mut body = Body {
+            name: region.to_string(),
+            material,
+            thickness,
+            elements: vec![],
+            nodes: vec![],
+            offsets: vec![0],
+            cell_tags: vec![],
+        };
+        for block in self.mesh.blocks_in_group(region)? {
+            let element = element_type(block.kind).ok_or_else(|| FemError::InvalidRegion {
+                group: region.into(),
+                reason: format!("cell kind {} is not a 2D element", block.kind.name()),
+            })?;
+            for (cell, tag) in block.cells().zip(&block.element_tags) {
+                body.elements.push(element);
+                body.nodes.extend_from_slice(cell);
+                body.offsets.push(body.nodes.len());
+                body.cell_tags.push(*tag);
+            }
+        }
+        if body.elements.is_empty() {
+            return Err(FemError::InvalidRegion { group: region.into(), reason: "no cells".into() });
+        }
+        check_jacobians(&self.mesh, &body)?;
+        self.bodies.push(body);
+        Ok(BodyId(self.bodies.len() - 1))
+    }
+
+    /// Prescribes `component = value` on every node of the physical group `group`.
+    ///
+    /// # Errors
+    /// Unknown group or a non-finite value.
+    pub fn fix(&mut self, group: &str, component: Component, value: f64) -> Result<(), FemError> {
+        self.mesh.group(group)?;
+        if !value.is_finite() {
+            return Err(FemError::InvalidInput(format!("Dirichlet value on \"{group}\" is not finite")));
+        }
+        self.dirichlet.push(Dirichlet { group: group.to_string(), component, value });
+        Ok(())
+    }
+
+    /// Adds an edge load on a 1D group.
+    ///
+    /// # Errors
+    /// Unknown group, a group that is not 1D, or a non-finite value.
+    pub fn add_edge_load(&mut self, load: EdgeLoad) -> Result<(), FemError> {
+        let (group, finite) = match &load {
+            EdgeLoad::Traction { group, traction } => (group, traction.iter().all(|t| t.is_finite())),
+            EdgeLoad::Pressure { group, pressure } => (group, pressure.is_finite()),
+        };
+        if self.mesh.group(group)?.dim != 1 {
+            return Err(FemError::InvalidInput(format!("edge load on \"{group}\": group is not 1D")));
+        }
+        if !finite {
+            return Err(FemError::InvalidInput(format!("edge load on \"{group}\" is not finite")));
+        }
+        self.edge_loads.push(load);
+        Ok(())
+    }
+
+    /// The body called `name`.
+    pub fn body(&self, name: &str) -> Option<(BodyId, &Body)> {
+        self.bodies.iter().enumerate().find(|(_, b)| b.name == name).map(|(i, b)| (BodyId(i), b))
+    }
+
+    /// Which nodes belong to at least one body.
+    pub fn active_nodes(&self) -> Vec<bool> {
+        let mut active = vec![false; self.mesh.num_nodes()];
+        for b in &self.bodies {
+            for n in &b.nodes {
+                active[n.0] = true;
+            }
+        }
+        active
+    }
+
+    /// Numbers the DOFs, resolving the Dirichlet conditions.
+    ///
+    /// # Errors
+    /// [`FemError::ConflictingDirichlet`] when one DOF gets two different values.
+    pub fn dof_map(&self) -> Result<DofMap, FemError> {
+        let mut prescribed: Vec<(Dof, f64)> = vec![];
+        for d in &self.dirichlet {
+            for n in self.mesh.group_nodes(&d.group)? {
+                prescribed.push((Dof::of(n.0, d.component), d.value));
+            }
+        }
+        prescribed.sort_by_key(|p| p.0);
+        for w in prescribed.windows(2) {
+            // Exactly equal values (a corner shared by two groups) are consistent.
+            if w[0].0 == w[1].0 && w[0].1 != w[1].1 {
+                let node = w[0].0.node();
+                return Err(FemError::ConflictingDirichlet {
+                    node_tag: self.mesh.node_tags.get(node).copied().unwrap_or(node as u64),
+                    component: if w[0].0.0 % 2 == 0 { "u1" } else { "u2" },
+                    first: w[0].1,
+                    second: w[1].1,
+                });
+            }
+        }
+        prescribed.dedup_by_key(|p| p.0);
+        Ok(DofMap::new(&self.active_nodes(), &prescribed))
+    }
+}
+
+fn check_jacobians(mesh: &Mesh, body: &Body) -> Result<(), FemError> {
+    for i in 0..body.num_cells() {
+        let element = body.elements[i];
+        let coords = body.cell_coords(mesh, i);
+        let rule = GaussRule::stiffness_rule(element);
+        for xi in rule.points.iter().chain(element.reference_nodes()) {
+            map_point(element, &coords, *xi).map_err(|e| match e {
+                ElementError::NonPositiveJacobian { det_j, .. } => {
+                    FemError::InvertedElement { body: body.name.clone(), cell: body.cell_tags[i], det_j }
+                }
+                other => FemError::Element { body: body.name.clone(), cell: body.cell_tags[i], source: other },
+            })?;
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,91 @@
+//! The solution of a linear elastic model: displacements, reactions, strain energies.
+//!
+//! ```text
+//! u = [u_f; u_c],   r_c = K_cf u_f + K_cc u_c - f_c,   Φ_E(body) = Σ_e ½ u_eᵀ K_e u_e
+//! ```
+
+use contact2d_element::{GaussRule, element_stiffness};
+use rayon::prelude::*;
+
+use crate::assembly::{LinearSystem, assemble};
+use crate::dof::{Component, Dof};
+use crate::error::FemError;
+use crate::model::{BodyId, Model};
+use crate::solve::CholeskySolver;
+
+/// Displacements and reactions, both in global DOF order (`2 × nodes`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Solution {
+    /// Displacement of every DOF (zero at inactive nodes).
+    pub displacement: Vec<f64>,
+    /// Reaction force at every constrained DOF (zero elsewhere).
+    pub reactions: Vec<f64>,
+}
+
+impl Solution {
+    /// Builds the full solution from the free unknowns and the prescribed values.
+    pub fn from_free(system: &LinearSystem, u_free: &[f64], prescribed: &[f64]) -> Solution {
+        let displacement = system.dofs.expand(u_free, prescribed);
+        let mut reactions = vec![0.0; displacement.len()];
+        for (j, r) in system.reactions(u_free, prescribed).into_iter().enumerate() {
+            reactions[system.dofs.constrained_dofs()[j].0] = r;
+        }
+        Solution { displacement, reactions }
+    }
+
+    /// Displacement `[u1, u2]` of node `n`.
+    pub fn node_displacement(&self, n: usize) -> [f64; 2] {
+        [self.displacement[2 * n], self.displacement[2 * n + 1]]
+    }
+
+    /// Sum of the reactions over the nodes of a physical group: `[R1, R2]`.
+    ///
+    /// # Errors
+    /// Unknown group.
+    pub fn reaction_resultant(&self, model: &Model, group: &str) -> Result<[f64; 2], FemError> {
+        let mut sum = [0.0; 2];
+        for n in model.mesh.group_nodes(group)? {
+            for c in [Component::X, Component::Y] {
+                sum[c.index()] += self.reactions[Dof::of(n.0, c).0];
+            }
+        }
+        Ok(sum)
+    }
+}
+
+/// Assembles, factors and solves a model with the prescribed values it carries.
+///
+/// # Errors
+/// As [`assemble`] and [`CholeskySolver::factor`].
+pub fn solve_linear(model: &Model) -> Result<(LinearSystem, CholeskySolver, Solution), FemError> {
+    let system = assemble(model)?;
+    let solver = CholeskySolver::factor(&system.stiffness)?;
+    let prescribed = system.dofs.prescribed_values().to_vec();
+    let u_free = solver.solve(&system.rhs(&prescribed));
+    let solution = Solution::from_free(&system, &u_free, &prescribed);
+    Ok((system, solver, solution))
+}
+
+/// Strain energy `Φ_E = Σ_e ½ u_eᵀ K_e u_e` of one body for global displacements `u`.
+///
+/// # Errors
+/// Element failures (not expected once the body was validated).
+pub fn strain_energy(model: &Model, body: BodyId, u: &[f64]) -> Result<f64, FemError> {
+    let b = &model.bodies[body.0];
+    (0..b.num_cells())
+        .into_par_iter()
+        .map(|i| {
+            let element = b.elements[i];
+            let k = element_stiffness(
+                element,
+                &b.cell_coords(&model.mesh, i),
+                &b.material,
+                b.thickness,
+                &GaussRule::stiffness_rule(element),
+            )
+            .map_err(|source| FemError::Element { body: b.name.clone(), cell: b.cell_tags[i], source })?;
+            let ue = nalgebra::DVector::from_iterator(k.nrows(), b.cell_dofs(i).map(|d| u[d.0]));
+            Ok(0.5 * ue.dot(&(&k * &ue)))
+        })
+        .try_reduce(|| 0.0, |a, b| Ok(a + b))
+}

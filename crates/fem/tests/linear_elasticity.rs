@@ -1,0 +1,99 @@
+//! End-to-end checks of the fem pipeline on generated meshes: closed-form uniaxial tension,
+//! reaction balance, symbolic reuse, and the error paths for bad models.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use contact2d_element::{Material, PlaneCondition};
+use contact2d_fem::{
+    CholeskySolver, Component, FemError, Model, StressRecovery, nodal_stresses, solve_linear, strain_energy,
+};
+use contact2d_mesh::{CellKind, generate::rectangle};
+
+/// A 2 × 1 bar, left edge on rollers (u1 = 0) with one u2 fixed via the bottom, right edge pulled by δ.
+/// Closed form (plane stress): σ11 = E δ / L, σ22 = σ12 = 0, reaction E δ H / L, energy ½ E (δ/L)² L H.
+fn uniaxial(kind: CellKind) -> (Model, f64) {
+    let mesh = rectangle(kind, [0.0, 2.0], [0.0, 1.0], 4, 3);
+    let mut model = Model::new(mesh);
+    model.add_body("domain", Material::new(200.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
+    model.fix("left", Component::X, 0.0).unwrap();
+    model.fix("bottom", Component::Y, 0.0).unwrap();
+    let delta = 0.01;
+    model.fix("right", Component::X, delta).unwrap();
+    (model, delta)
+}
+
+#[test]
+fn uniaxial_tension_is_exact_for_every_element_kind() {
+    for kind in [CellKind::Tri3, CellKind::Tri6, CellKind::Quad4, CellKind::Quad8, CellKind::Quad9] {
+        let (model, delta) = uniaxial(kind);
+        let (_, _, sol) = solve_linear(&model).unwrap();
+        let (e, l, h) = (200.0, 2.0, 1.0);
+        // Tolerance: the discrete solution is exact (affine field in the element space); 1e-10 covers round-off.
+        let r = sol.reaction_resultant(&model, "right").unwrap();
+        assert!((r[0] - e * delta / l * h).abs() < 1e-10, "{kind:?}: {r:?}");
+        let l_react = sol.reaction_resultant(&model, "left").unwrap();
+        assert!((r[0] + l_react[0]).abs() < 1e-10, "reactions balance");
+        let energy = strain_energy(&model, contact2d_fem::BodyId(0), &sol.displacement).unwrap();
+        assert!((energy - 0.5 * e * (delta / l).powi(2) * l * h).abs() < 1e-12);
+        for s in nodal_stresses(&model, contact2d_fem::BodyId(0), &sol.displacement, StressRecovery::Extrapolated)
+            .unwrap()
+            .into_iter()
+            .flatten()
+        {
+            assert!((s[0] - e * delta / l).abs() < 1e-9 && s[1].abs() < 1e-9 && s[2].abs() < 1e-9);
+        }
+    }
+}
+
+#[test]
+fn refactor_reuses_the_symbolic_analysis() {
+    let (model, _) = uniaxial(CellKind::Quad9);
+    let (system, mut solver, sol) = solve_linear(&model).unwrap();
+    // Doubling every stiffness value halves the displacements for the same loads.
+    let mut doubled = system.stiffness.clone();
+    doubled.val_mut().iter_mut().for_each(|v| *v *= 2.0);
+    solver.refactor(&doubled).unwrap();
+    let rhs = system.rhs(system.dofs.prescribed_values());
+    let u = solver.solve(&rhs);
+    let u0 = system.dofs.restrict_free(&sol.displacement);
+    assert!(u.iter().zip(&u0).all(|(a, b)| (2.0 * a - b).abs() < 1e-14));
+    let _ = CholeskySolver::factor(&system.stiffness).unwrap();
+}
+
+#[test]
+fn unconstrained_body_is_a_typed_error() {
+    let mesh = rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 2, 2);
+    let mut model = Model::new(mesh);
+    model.add_body("domain", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
+    model.fix("left", Component::X, 0.0).unwrap(); // u2 and rotation... rotation held, u2 free
+    match solve_linear(&model) {
+        Err(FemError::UnconstrainedBody { free_modes: 1, .. }) => {}
+        other => panic!("expected UnconstrainedBody, got {other:?}"),
+    }
+}
+
+#[test]
+fn conflicting_dirichlet_and_bad_groups_are_typed_errors() {
+    let mesh = rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 2, 2);
+    let mut model = Model::new(mesh);
+    let m = Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap();
+    assert!(matches!(model.add_body("nope", m, 1.0), Err(FemError::Mesh(_))));
+    assert!(matches!(model.add_body("left", m, 1.0), Err(FemError::InvalidRegion { .. })));
+    assert!(matches!(model.add_body("domain", m, 0.0), Err(FemError::InvalidInput(_))));
+    model.add_body("domain", m, 1.0).unwrap();
+    model.fix("left", Component::X, 0.0).unwrap();
+    model.fix("bottom", Component::X, 1.0).unwrap();
+    assert!(matches!(model.dof_map(), Err(FemError::ConflictingDirichlet { .. })));
+    assert!(model.fix("left", Component::Y, f64::NAN).is_err());
+}
+
+#[test]
+fn inverted_element_is_named() {
+    let mut mesh = rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 2, 2);
+    // Reverse the node order of the first cell: clockwise, det J < 0.
+    mesh.blocks[0].nodes[..4].reverse();
+    let mut model = Model::new(mesh);
+    match model.add_body("domain", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0) {
+        Err(FemError::InvertedElement { cell: 1, .. }) => {}
+        other => panic!("expected InvertedElement for cell 1, got {other:?}"),
+    }
+}

@@ -1,0 +1,12 @@
+//! Meshes for contact2d: the in-memory model and our own Gmsh `.msh` reader.
+
+pub mod contour;
+pub mod error;
+pub mod generate;
+pub mod mesh;
+pub mod msh;
+
+pub use contour::{Contour, ContourEdge};
+pub use error::{Location, MeshError};
+pub use mesh::{CellBlock, CellKind, Mesh, NodeId, PhysicalGroup};
+pub use msh::{MshFormat, MshReport, encode_msh, parse_msh, parse_msh_with_report, read_msh, write_msh};

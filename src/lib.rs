@@ -1,0 +1,19 @@
+//! contact2d: 2D finite-element contact mechanics with Coulomb friction.
+//!
+//! This facade re-exports the pipeline's crates and hosts what sits at the edge: the command
+//! line, summaries, scene files and outputs.
+//!
+//! ```text
+//! mesh (Gmsh .msh) → fem::Model → assemble → solve → contact → results → output
+//! ```
+
+pub use contact2d_element as element;
+pub use contact2d_fem as fem;
+pub use contact2d_mesh as mesh;
+
+pub mod mesh_summary;
+
+// The README's library example is compiled and run as a doctest.
+#[doc = include_str!("../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;

@@ -1,0 +1,131 @@
+//! A summary of a mesh for people: counts, physical groups, bounding box, element quality.
+//!
+//! Quality of a 2D cell is `min det J / max det J` over its nodes and stiffness Gauss points
+//! (1 for an affine cell, ≤ 0 for an inverted one); `min_det_j` is the smallest determinant of
+//! the whole mesh, which is negative if any cell is inverted.
+
+use std::collections::BTreeMap;
+
+use contact2d_element::{GaussRule, jacobian_determinant};
+use contact2d_fem::element_type;
+use contact2d_mesh::Mesh;
+use serde::Serialize;
+
+/// One physical group in the summary.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GroupSummary {
+    /// Name.
+    pub name: String,
+    /// Dimension.
+    pub dim: usize,
+    /// Number of cells.
+    pub elements: usize,
+}
+
+/// The summary printed by `contact2d mesh`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct MeshSummary {
+    /// Number of nodes.
+    pub nodes: usize,
+    /// Cell counts by kind name (`quad9`, `line3`, ...).
+    pub elements: BTreeMap<String, usize>,
+    /// Physical groups.
+    pub physical_groups: Vec<GroupSummary>,
+    /// `[[xmin, ymin], [xmax, ymax]]`.
+    pub bbox: [[f64; 2]; 2],
+    /// Smallest Jacobian determinant over all 2D cells (`None` without 2D cells).
+    pub min_det_j: Option<f64>,
+    /// Worst cell quality `min det J / max det J` (`None` without 2D cells).
+    pub worst_quality: Option<f64>,
+}
+
+/// Summarises `mesh`.
+pub fn summarize_mesh(mesh: &Mesh) -> MeshSummary {
+    let mut elements = BTreeMap::new();
+    for b in &mesh.blocks {
+        *elements.entry(b.kind.name().to_string()).or_insert(0) += b.len();
+    }
+    let physical_groups = mesh
+        .groups
+        .iter()
+        .map(|g| GroupSummary {
+            name: g.name.clone(),
+            dim: g.dim,
+            elements: mesh.group_cell_count(&g.name).unwrap_or(0),
+        })
+        .collect();
+    let (mut min_det_j, mut worst_quality) = (None::<f64>, None::<f64>);
+    for b in &mesh.blocks {
+        let Some(element) = element_type(b.kind) else { continue };
+        let rule = GaussRule::stiffness_rule(element);
+        for cell in b.cells() {
+            let coords: Vec<[f64; 2]> = cell.iter().map(|n| mesh.points[n.0]).collect();
+            let dets: Vec<f64> = rule
+                .points
+                .iter()
+                .chain(element.reference_nodes())
+                .filter_map(|xi| jacobian_determinant(element, &coords, *xi).ok())
+                .collect();
+            let lo = dets.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = dets.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            min_det_j = Some(min_det_j.map_or(lo, |m| m.min(lo)));
+            let q = if hi > 0.0 { lo / hi } else { lo.min(0.0) };
+            worst_quality = Some(worst_quality.map_or(q, |w| w.min(q)));
+        }
+    }
+    MeshSummary {
+        nodes: mesh.num_nodes(),
+        elements,
+        physical_groups,
+        bbox: mesh.bounding_box().unwrap_or([[0.0; 2]; 2]),
+        min_det_j,
+        worst_quality,
+    }
+}
+
+impl std::fmt::Display for MeshSummary {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        writeln!(f, "nodes: {}", self.nodes)?;
+        writeln!(f, "elements:")?;
+        for (kind, count) in &self.elements {
+            writeln!(f, "  {kind:<10} {count}")?;
+        }
+        writeln!(f, "physical groups:")?;
+        for g in &self.physical_groups {
+            writeln!(f, "  {:<20} dim {}  {} elements", g.name, g.dim, g.elements)?;
+        }
+        let [[x0, y0], [x1, y1]] = self.bbox;
+        writeln!(f, "bounding box: [{x0}, {x1}] x [{y0}, {y1}]")?;
+        match (self.min_det_j, self.worst_quality) {
+            (Some(d), Some(q)) => write!(f, "min det J: {d:.6e}\nworst quality (min/max det J): {q:.4}"),
+            _ => write!(f, "no 2D cells"),
+        }
+    }
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+    use contact2d_mesh::{CellKind, generate::rectangle};
+
+    #[test]
+    fn affine_mesh_has_quality_one_and_exact_det_j() {
+        // A 2 × 1 rectangle in 4 × 2 Quad4 cells of 0.5 × 0.5: det J = area / 4 = 1/16.
+        let s = summarize_mesh(&rectangle(CellKind::Quad4, [0.0, 2.0], [0.0, 1.0], 4, 2));
+        assert_eq!(s.nodes, 15);
+        assert_eq!(s.elements["quad"], 8);
+        assert!((s.min_det_j.unwrap() - 1.0 / 16.0).abs() < 1e-15);
+        assert!((s.worst_quality.unwrap() - 1.0).abs() < 1e-12);
+        assert_eq!(s.bbox, [[0.0, 0.0], [2.0, 1.0]]);
+        assert!(s.physical_groups.iter().any(|g| g.name == "left" && g.dim == 1 && g.elements == 2));
+    }
+
+    #[test]
+    fn inverted_cell_shows_a_negative_det_j() {
+        let mut mesh = rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 1, 1);
+        mesh.blocks[0].nodes.reverse();
+        let s = summarize_mesh(&mesh);
+        assert!(s.min_det_j.unwrap() < 0.0 && s.worst_quality.unwrap() < 0.0);
+    }
+}
