@@ -7,7 +7,7 @@ use thiserror::Error;
 pub enum Location {
     /// 1-based line number of an ASCII file.
     Line(usize),
-    /// 0-based byte offset in a binary section.
+    /// 0-based byte offset from the start of a binary file.
     Byte(usize),
 }
 
