@@ -7,11 +7,13 @@
 //! mesh (Gmsh .msh) → fem::Model → assemble → solve → contact → results → output
 //! ```
 
+pub use contact2d_contact as contact;
 pub use contact2d_element as element;
 pub use contact2d_fem as fem;
 pub use contact2d_mesh as mesh;
 
 pub mod mesh_summary;
+pub mod plate_insert;
 
 // The README's library example is compiled and run as a doctest.
 #[doc = include_str!("../README.md")]

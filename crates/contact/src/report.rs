@@ -42,13 +42,17 @@ pub fn from_displacement(
     let prescribed: Vec<f64> = problem.pattern_prescribed.iter().map(|v| w * v).collect();
     let gap: Vec<f64> =
         problem.normal_rows.iter().zip(&problem.gap).map(|(row, g0)| g0 + row.dot(u_free, &prescribed)).collect();
-    let scale = normal_force.iter().fold(0.0f64, |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE);
+    // In contact where the normalised force exceeds the normalised gap: exact for an active-set
+    // answer (λ = 0 or gap = 0) and robust for an interior-point one (both small but unequal).
+    let force_scale = normal_force.iter().fold(0.0f64, |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE);
+    let gap_scale = gap.iter().fold(0.0f64, |a, g| a.max(g.abs())).max(f64::MIN_POSITIVE);
     let state: Vec<PairState> = normal_force
         .iter()
+        .zip(&gap)
         .zip(&tangential_force)
         .zip(&problem.friction)
-        .map(|((l, t), mu)| {
-            if *l <= 1e-12 * scale {
+        .map(|(((l, g), t), mu)| {
+            if *l / force_scale <= g.max(0.0) / gap_scale || *l <= 0.0 {
                 PairState::Free
             } else if *mu > 0.0 && t.abs() >= mu * l * (1.0 - 1e-9) {
                 if *t > 0.0 { PairState::SlipPositive } else { PairState::SlipNegative }
