@@ -7,7 +7,8 @@
 //!
 //! Each body's stiffness is factored once (in [`crate::ContactProblem`]); the interface work is
 //! dense and of the size of the number of pairs, and the full displacement field is recovered
-//! once at the end.
+//! once at the end. Without friction (every μ = 0) the tangential rows play no part, so their
+//! columns are not solved for: `Zt` and the `C_·T`, `C_T·` blocks are then empty (0 columns).
 
 use faer::Mat;
 use nalgebra::DMatrix;
@@ -57,15 +58,20 @@ impl Interface {
         let n = problem.system.dofs.num_free();
         let u0 = problem.solver.solve(&problem.pattern_rhs);
         let z_normal = problem.solver.solve_many(&rows_to_columns(n, &problem.normal_rows));
-        let z_tangent = problem.solver.solve_many(&rows_to_columns(n, &problem.tangent_rows));
+        let frictional = problem.friction.iter().any(|mu| *mu > 0.0);
+        let z_tangent = if frictional {
+            problem.solver.solve_many(&rows_to_columns(n, &problem.tangent_rows))
+        } else {
+            Mat::zeros(n, 0)
+        };
         let h = |rows: &[PairRow]| rows.iter().map(|r| r.dot(&u0, &problem.pattern_prescribed)).collect::<Vec<_>>();
         Interface {
             h_normal: h(&problem.normal_rows),
             h_tangent: h(&problem.tangent_rows),
             c_nn: apply_rows(&problem.normal_rows, &z_normal),
             c_nt: apply_rows(&problem.normal_rows, &z_tangent),
-            c_tn: apply_rows(&problem.tangent_rows, &z_normal),
-            c_tt: apply_rows(&problem.tangent_rows, &z_tangent),
+            c_tn: if frictional { apply_rows(&problem.tangent_rows, &z_normal) } else { DMatrix::zeros(0, 0) },
+            c_tt: apply_rows(if frictional { &problem.tangent_rows } else { &[] }, &z_tangent),
             u0,
             z_normal,
             z_tangent,
@@ -78,7 +84,12 @@ impl Interface {
             .map(|i| {
                 w * self.u0[i]
                     + lambda.iter().enumerate().map(|(k, l)| self.z_normal[(i, k)] * l).sum::<f64>()
-                    + tau.iter().enumerate().map(|(k, t)| self.z_tangent[(i, k)] * t).sum::<f64>()
+                    + tau
+                        .iter()
+                        .take(self.z_tangent.ncols())
+                        .enumerate()
+                        .map(|(k, t)| self.z_tangent[(i, k)] * t)
+                        .sum::<f64>()
             })
             .collect()
     }

@@ -23,7 +23,7 @@ pub use active_set::solve_frictionless_active_set;
 pub use error::ContactError;
 pub use interface::Interface;
 pub use pairing::{ContactPair, pair_contours, tributary_weights};
-pub use post::{contact_end, pair_tractions};
+pub use post::{contact_end, contact_end_from_pressure, pair_tractions};
 pub use problem::{ContactProblem, PairRow};
 pub use qp::solve_frictionless_qp;
 pub use report::{fem_solution, finish_solution, from_displacement};

@@ -4,9 +4,12 @@
 //! p_k = −λ_k / w_k,  q_k = −τ_k / w_k     (w_k: tributary length ∫ N_k ds of the master node;
 //!                                          for Line3 edges ∫N ds = L/6, 2L/3, L/6, so a uniform
 //!                                          pressure is recovered exactly)
-//! l: between the last contact node η_c and the first free node, the pressure of a smooth receding
-//!    contact behaves like √(l − η), so p² is linear:  l = η_c + p_c² (η_c − η_p)/(p_p² − p_c²)
-//!    with η_p the contact node before η_c; clamped to the bracket [η_c, η_free].
+//! l: bracketed by the last contact node η_c and the first free node η_f. Near a smooth receding
+//!    contact end the gap opens like (η − l)^{3/2}, so g^{2/3} is linear on the free side:
+//!        l = η_f − g_f^{2/3} (η_f2 − η_f)/(g_f2^{2/3} − g_f^{2/3})     (η_f2: the next free node)
+//!    clamped to [η_c, η_f]. The gap side is used because it is smooth, whereas nodal pressures
+//!    of quadratic edges alternate between corner and mid nodes. (The pressure side, p ∝ √(l − η),
+//!    is [`contact_end_from_pressure`].)
 //! ```
 
 use crate::problem::ContactProblem;
@@ -19,11 +22,30 @@ pub fn pair_tractions(problem: &ContactProblem, solution: &ContactSolution) -> (
     (p, q)
 }
 
-/// The contact end on a coordinate `eta` per pair (contact growing from small η).
+/// The contact end on a coordinate `eta` per pair (contact growing from small η), from the gaps
+/// of the first two free pairs (see the module docs).
 ///
-/// Returns `(l, bracket)`: the square-root interpolation and `[last contact η, first free η]`;
-/// `None` when no pair or every pair is in contact.
-pub fn contact_end(eta: &[f64], pressure: &[f64], state: &[PairState]) -> Option<(f64, [f64; 2])> {
+/// Returns `(l, bracket)` with `bracket = [last contact η, first free η]`; `None` when no pair
+/// or every pair is in contact, or nothing is in contact.
+pub fn contact_end(eta: &[f64], gap: &[f64], state: &[PairState]) -> Option<(f64, [f64; 2])> {
+    let mut order: Vec<usize> = (0..eta.len()).collect();
+    order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
+    let first_free = order.iter().position(|&k| state[k] == PairState::Free)?;
+    if first_free == 0 {
+        return None;
+    }
+    let (c, f) = (order[first_free - 1], order[first_free]);
+    let bracket = [eta[c], eta[f]];
+    let Some(&f2) = order.get(first_free + 1) else { return Some((eta[f], bracket)) };
+    let (g1, g2) = (gap[f].max(0.0).powf(2.0 / 3.0), gap[f2].max(0.0).powf(2.0 / 3.0));
+    let l = if g2 > g1 { eta[f] - g1 * (eta[f2] - eta[f]) / (g2 - g1) } else { eta[f] };
+    Some((l.clamp(bracket[0], bracket[1]), bracket))
+}
+
+/// The contact end from the pressures of the last two contact pairs, `p ∝ √(l − η)`.
+///
+/// Returns `(l, bracket)` as [`contact_end`].
+pub fn contact_end_from_pressure(eta: &[f64], pressure: &[f64], state: &[PairState]) -> Option<(f64, [f64; 2])> {
     let mut order: Vec<usize> = (0..eta.len()).collect();
     order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
     let first_free = order.iter().position(|&k| state[k] == PairState::Free)?;
@@ -52,8 +74,19 @@ mod tests {
         let p: Vec<f64> = eta.iter().map(|e| if *e < 0.47 { -(0.47 - e).sqrt() } else { 0.0 }).collect();
         let state: Vec<PairState> =
             eta.iter().map(|e| if *e < 0.47 { PairState::Stick } else { PairState::Free }).collect();
-        let (l, bracket) = contact_end(&eta, &p, &state).unwrap_or((f64::NAN, [0.0; 2]));
+        let (l, bracket) = contact_end_from_pressure(&eta, &p, &state).unwrap_or((f64::NAN, [0.0; 2]));
         assert!((l - 0.47).abs() < 1e-12);
         assert_eq!(bracket, [eta[4], eta[5]]);
+    }
+
+    #[test]
+    fn three_halves_gap_profile_gives_its_end_exactly() {
+        // gap = (η − 0.47)^{3/2} beyond 0.47.
+        let eta: Vec<f64> = (0..=7).map(|k| 0.1 * k as f64).collect();
+        let g: Vec<f64> = eta.iter().map(|e| (e - 0.47).max(0.0).powf(1.5)).collect();
+        let state: Vec<PairState> =
+            eta.iter().map(|e| if *e < 0.47 { PairState::Stick } else { PairState::Free }).collect();
+        let (l, _) = contact_end(&eta, &g, &state).unwrap_or((f64::NAN, [0.0; 2]));
+        assert!((l - 0.47).abs() < 1e-12);
     }
 }

@@ -59,15 +59,15 @@ fn element_name(element: ElementType) -> &'static str {
 pub fn jacobian_determinant(element: ElementType, coords: &[[f64; 2]], xi: [f64; 2]) -> Result<f64, ElementError> {
     check_node_count(element, coords)?;
     let shape = element.eval(xi);
-    let mut jac = [[0.0; 2]; 2];
-    for (a, c) in coords.iter().enumerate() {
-        for i in 0..2 {
-            for j in 0..2 {
-                jac[i][j] += c[i] * shape.dn[a][j];
-            }
-        }
+    // J_ij = Σ_a x_a,i ∂N_a/∂ξ_j
+    let (mut j00, mut j01, mut j10, mut j11) = (0.0, 0.0, 0.0, 0.0);
+    for (c, dn) in coords.iter().zip(shape.gradients()) {
+        j00 += c[0] * dn[0];
+        j01 += c[0] * dn[1];
+        j10 += c[1] * dn[0];
+        j11 += c[1] * dn[1];
     }
-    Ok(jac[0][0] * jac[1][1] - jac[0][1] * jac[1][0])
+    Ok(j00 * j11 - j01 * j10)
 }
 
 /// Evaluates the isoparametric map of the element with nodal `coords` at reference point `xi`.

@@ -1,0 +1,182 @@
+//! The flagship case: the plate with an annular insert (Solodovnikov 1998), set up on a bundled
+//! mesh with the boundary conditions of the specification's section 2.
+//!
+//! ```text
+//!   x2 = H  ───────────────── u2 = 0 ─────────────────┐
+//!   │ free                                             │ u1 = w, u2 = 0 (pulled edge)
+//!   │ x1 = -L1     ╭──hole──╮  insert: clamped at ρ=R2 │
+//!   └─ u2 = 0 ─────╯ ◠◠◠◠◠◠ ╰────── u2 = 0 ────────────┘ x1 = L2
+//! ```
+//!
+//! Non-dimensional: E1 = 1, lengths by R, the load factor w multiplies the pulled-edge value 1.
+
+use contact2d_contact::{ContactError, ContactProblem, pair_contours};
+use contact2d_element::{Material, PlaneCondition};
+use contact2d_fem::{Component, Model};
+use contact2d_mesh::{Contour, read_msh};
+
+mod results;
+pub use results::{PLATE_HALF_HEIGHT, PlateInsertResults};
+
+/// Which contour is the master of the pairs (the paper's two variants).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PairingVariant {
+    /// Pairs from the hole edge Γ_p (master) to the insert edge Γ_c.
+    HoleMaster,
+    /// Pairs from the insert edge Γ_c (master) to the hole edge Γ_p.
+    InsertMaster,
+}
+
+/// How the initial gap of each pair is set, in displacement units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum GapModel {
+    /// The geometric distance of the paired points (length units) times ω = c/ε.
+    Geometric,
+    /// The paper's stricter replacement: u_ρc = −c(1 + cos φ)/ρ_s (variant 1, φ of the hole
+    /// node) or u_rc = −c(1 + cos φ̂) (variant 2, φ̂ of the paired hole point); gap = −u_s.
+    Paper,
+}
+
+/// Parameters of the flagship case.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlateInsert {
+    /// Path of the .msh file.
+    pub mesh: String,
+    /// E2 / E1.
+    pub stiffness_ratio: f64,
+    /// ν1 and ν2.
+    pub poissons_ratio: f64,
+    /// Pairing variant.
+    pub variant: PairingVariant,
+    /// ε: the mesh's geometric clearance (insert radius 1 − ε, centred at (−ε, 0)).
+    pub eps: f64,
+    /// c: the clearance in displacement units (ω = c/ε converts lengths to displacements).
+    pub clearance: f64,
+    /// How gaps are computed.
+    pub gap_model: GapModel,
+}
+
+/// The problem plus the master contour (for η and stresses along it).
+#[derive(Debug, Clone)]
+pub struct PlateInsertProblem {
+    /// The contact problem (unit load pattern u1 = 1 on `right`).
+    pub problem: ContactProblem,
+    /// The hole edge, ordered from φ = 0 to φ = π.
+    pub hole: Contour,
+    /// The insert edge, ordered likewise.
+    pub insert: Contour,
+    /// Which contour is the master.
+    pub variant: PairingVariant,
+    /// The mesh's ε.
+    pub eps: f64,
+}
+
+impl PlateInsert {
+    /// Builds the model, the pairs and the contact problem.
+    ///
+    /// # Errors
+    /// Mesh, model or pairing errors.
+    pub fn build(&self) -> Result<PlateInsertProblem, ContactError> {
+        let mesh = read_msh(&self.mesh)?;
+        let mut model = Model::new(mesh);
+        let plate = Material::new(1.0, self.poissons_ratio, PlaneCondition::Stress).map_err(fem_input)?;
+        let insert =
+            Material::new(self.stiffness_ratio, self.poissons_ratio, PlaneCondition::Stress).map_err(fem_input)?;
+        model.add_body("plate", plate, 1.0)?;
+        model.add_body("insert", insert, 1.0)?;
+        for group in ["top", "bottom_plate", "right", "insert_inner", "insert_symmetry"] {
+            model.fix(group, Component::Y, 0.0)?;
+        }
+        model.fix("right", Component::X, 1.0)?;
+        model.fix("insert_inner", Component::X, 0.0)?;
+        let hole = Contour::from_group(&model.mesh, "hole_edge")?;
+        let insert_edge = Contour::from_group(&model.mesh, "insert_edge")?;
+        let pairs = match self.variant {
+            PairingVariant::HoleMaster => pair_contours(&model, &hole, &insert_edge, "insert")?,
+            PairingVariant::InsertMaster => pair_contours(&model, &insert_edge, &hole, "plate")?,
+        };
+        let mut problem = ContactProblem::new(model, pairs)?;
+        problem.set_gaps(self.gaps(&problem)?)?;
+        Ok(PlateInsertProblem { problem, hole, insert: insert_edge, variant: self.variant, eps: self.eps })
+    }
+
+    /// The gap of every pair under [`PlateInsert::gap_model`], in displacement units.
+    fn gaps(&self, problem: &ContactProblem) -> Result<Vec<f64>, ContactError> {
+        if !(self.eps >= 0.0 && self.clearance >= 0.0 && self.eps.is_finite() && self.clearance.is_finite()) {
+            return Err(ContactError::InvalidInput(format!(
+                "eps = {} and c = {} must be finite and non-negative",
+                self.eps, self.clearance
+            )));
+        }
+        if self.eps == 0.0 {
+            // Neat fit: the contours coincide; any clearance would be a contradiction.
+            return if self.clearance == 0.0 {
+                Ok(vec![0.0; problem.num_pairs()])
+            } else {
+                Err(ContactError::InvalidInput("c > 0 needs a mesh with eps > 0".into()))
+            };
+        }
+        let omega = self.clearance / self.eps;
+        Ok(problem
+            .pairs
+            .iter()
+            .zip(&problem.gap)
+            .map(|(pair, geometric)| match (self.gap_model, self.variant) {
+                (GapModel::Geometric, _) => geometric * omega,
+                (GapModel::Paper, PairingVariant::HoleMaster) => {
+                    let phi = angle(problem.model.mesh.points[pair.master.0]);
+                    let rho_s = (1.0 + 2.0 * self.eps * phi.cos() + self.eps * self.eps).sqrt();
+                    self.clearance * (1.0 + phi.cos()) / rho_s
+                }
+                (GapModel::Paper, PairingVariant::InsertMaster) => {
+                    self.clearance * (1.0 + angle(pair.slave_point).cos())
+                }
+            })
+            .collect())
+    }
+}
+
+/// Polar angle about the hole centre.
+fn angle(x: [f64; 2]) -> f64 {
+    x[1].atan2(x[0])
+}
+
+impl PlateInsertProblem {
+    /// η = 1 − φ/π on the hole edge of each pair: the master node's in variant 1, the paired
+    /// hole point's in variant 2 (the paper reports l and b on this coordinate).
+    pub fn eta_hole(&self) -> Vec<f64> {
+        let p = &self.problem;
+        p.pairs
+            .iter()
+            .map(|pair| match self.variant {
+                PairingVariant::HoleMaster => eta_on_hole(p.model.mesh.points[pair.master.0]),
+                PairingVariant::InsertMaster => eta_on_hole(pair.slave_point),
+            })
+            .collect()
+    }
+
+    /// η of each master node on its own contour: 1 − φ/π (variant 1) or 1 − θ̂/π with θ̂ the
+    /// polar angle about the insert centre (−ε, 0) (variant 2).
+    pub fn eta_master(&self) -> Vec<f64> {
+        let p = &self.problem;
+        p.pairs
+            .iter()
+            .map(|pair| {
+                let x = p.model.mesh.points[pair.master.0];
+                match self.variant {
+                    PairingVariant::HoleMaster => eta_on_hole(x),
+                    PairingVariant::InsertMaster => eta_on_hole([x[0] + self.eps, x[1]]),
+                }
+            })
+            .collect()
+    }
+}
+
+fn fem_input(e: contact2d_element::ElementError) -> ContactError {
+    ContactError::InvalidInput(e.to_string())
+}
+
+/// η = 1 − φ/π of a point about the hole centre (0 at (−R, 0), 1 at (R, 0)).
+pub fn eta_on_hole(x: [f64; 2]) -> f64 {
+    1.0 - x[1].atan2(x[0]) / std::f64::consts::PI
+}
