@@ -14,6 +14,8 @@ pub use contact2d_mesh as mesh;
 
 pub mod mesh_summary;
 pub mod plate_insert;
+pub mod run;
+pub mod scene;
 
 // The README's library example is compiled and run as a doctest.
 #[doc = include_str!("../README.md")]
