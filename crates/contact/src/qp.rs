@@ -7,8 +7,9 @@
 //! Clarabel form:  A x + s = b, s ∈ R₊ᵐ  with  A = −B_N,f,  b = g0 + w B_N,c u_c;  λ = z (dual)
 //! ```
 //!
-//! `P` is the upper triangle of `K_ff`. Inputs are non-dimensional in the paper's scaling, which
-//! keeps the interior-point method accurate; tolerances are 1e-12 (printing off).
+//! `P` is the upper triangle of `K_ff`. The displacements are scaled by `s` = the largest gap or
+//! prescribed value (`u = s x`, the objective divided by `s²`, so `λ = s z`): the interior-point
+//! method's tolerances (1e-12, printing off) then act on O(1) numbers.
 
 use std::time::Instant;
 
@@ -46,7 +47,17 @@ pub fn solve_frictionless_qp(problem: &ContactProblem, w: f64) -> ContactSolutio
         }
     }
     let p = CscMatrix::new_from_triplets(n, n, rows, cols, vals);
-    let q: Vec<f64> = problem.pattern_rhs.iter().map(|r| -w * r).collect();
+    let prescribed: Vec<f64> = problem.pattern_prescribed.iter().map(|v| w * v).collect();
+    let b: Vec<f64> = problem
+        .normal_rows
+        .iter()
+        .zip(&problem.gap)
+        .map(|(row, g0)| g0 + row.constrained.iter().map(|(j, v)| v * prescribed[*j]).sum::<f64>())
+        .collect();
+    let s = b.iter().chain(&prescribed).fold(0.0f64, |a, v| a.max(v.abs()));
+    let s = if s > 0.0 { s } else { 1.0 };
+    let b: Vec<f64> = b.iter().map(|v| v / s).collect();
+    let q: Vec<f64> = problem.pattern_rhs.iter().map(|r| -w * r / s).collect();
     let (mut ar, mut ac, mut av) = (vec![], vec![], vec![]);
     for (kk, row) in problem.normal_rows.iter().enumerate() {
         for (i, v) in &row.free {
@@ -56,13 +67,6 @@ pub fn solve_frictionless_qp(problem: &ContactProblem, w: f64) -> ContactSolutio
         }
     }
     let a = CscMatrix::new_from_triplets(m, n, ar, ac, av);
-    let prescribed: Vec<f64> = problem.pattern_prescribed.iter().map(|v| w * v).collect();
-    let b: Vec<f64> = problem
-        .normal_rows
-        .iter()
-        .zip(&problem.gap)
-        .map(|(row, g0)| g0 + row.constrained.iter().map(|(j, v)| v * prescribed[*j]).sum::<f64>())
-        .collect();
     let settings = DefaultSettingsBuilder::default()
         .verbose(false)
         .tol_gap_abs(1e-12)
@@ -75,8 +79,10 @@ pub fn solve_frictionless_qp(problem: &ContactProblem, w: f64) -> ContactSolutio
         Ok(settings) => match DefaultSolver::new(&p, &q, &a, &b, &cones, settings) {
             Ok(mut solver) => {
                 solver.solve();
-                let s = &solver.solution;
-                (map_status(s.status), s.x.clone(), s.z.clone(), s.iterations as usize)
+                let sol = &solver.solution;
+                let x: Vec<f64> = sol.x.iter().map(|v| v * s).collect();
+                let z: Vec<f64> = sol.z.iter().map(|v| v * s).collect();
+                (map_status(sol.status), x, z, sol.iterations as usize)
             }
             Err(_) => (ContactStatus::Numerical, vec![0.0; n], vec![0.0; m], 0),
         },

@@ -44,8 +44,13 @@ pub fn from_displacement(
         problem.normal_rows.iter().zip(&problem.gap).map(|(row, g0)| g0 + row.dot(u_free, &prescribed)).collect();
     // In contact where the normalised force exceeds the normalised gap: exact for an active-set
     // answer (λ = 0 or gap = 0) and robust for an interior-point one (both small but unequal).
-    let force_scale = normal_force.iter().fold(0.0f64, |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE);
-    let gap_scale = gap.iter().fold(0.0f64, |a, g| a.max(g.abs())).max(f64::MIN_POSITIVE);
+    // Forces against the larger of the contact forces and the load's nodal forces (so that
+    // round-off forces of an all-free solution are not mistaken for contact).
+    let load_force = problem.pattern_rhs.iter().fold(0.0f64, |a, r| a.max((w * r).abs()));
+    let force_scale = normal_force.iter().fold(load_force, |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE);
+    // Gaps are measured against the problem's displacement scale (not the largest gap, which is
+    // itself round-off when every pair is closed).
+    let gap_scale = gap.iter().chain(&displacement).fold(0.0f64, |a, g| a.max(g.abs())).max(f64::MIN_POSITIVE);
     let state: Vec<PairState> = normal_force
         .iter()
         .zip(&gap)
