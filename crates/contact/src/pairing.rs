@@ -15,7 +15,8 @@
 //!
 //! With the master on the hole this is the paper's variant 1 (n = n_c, the insert normal); with
 //! the master on the insert, variant 2 (n = -n_p in our outward convention, so the same
-//! inequality reads u - uh ≥ u_s).
+//! inequality reads u - uh ≥ u_s). The paper's γ is always ds_plate/ds_insert: γ1 = γ in
+//! variant 1 and γ2 = 1/γ in variant 2.
 
 use contact2d_fem::Model;
 use contact2d_mesh::{Contour, NodeId};
