@@ -17,6 +17,7 @@ pub mod mesh_summary;
 pub mod plate_insert;
 pub mod run;
 pub mod scene;
+pub mod verify;
 
 // The README's library example is compiled and run as a doctest.
 #[doc = include_str!("../README.md")]
