@@ -13,7 +13,9 @@
 //! reactions can be formed for any prescribed values without assembling again.
 
 use contact2d_element::{EdgeType, GaussRule, edge_traction_load, element_stiffness};
-use contact2d_mesh::CellKind;
+use std::collections::HashMap;
+
+use contact2d_mesh::{CellKind, NodeId};
 use faer::sparse::{SparseColMat, Triplet};
 use rayon::prelude::*;
 
@@ -110,9 +112,14 @@ fn scatter_cell(model: &Model, dofs: &DofMap, b: usize, i: usize, t: &mut Triple
     Ok(())
 }
 
-/// Consistent nodal forces of all edge loads, in global DOF order.
+/// Consistent nodal forces of all edge loads, in global DOF order: the traction (per unit
+/// length and thickness) times the thickness of the body that owns the edge.
 fn assemble_edge_loads(model: &Model) -> Result<Vec<f64>, FemError> {
     let mut f = vec![0.0; 2 * model.mesh.num_nodes()];
+    if model.edge_loads.is_empty() {
+        return Ok(f);
+    }
+    let owners = edge_owners(model);
     for load in &model.edge_loads {
         let (group, traction, pressure) = match load {
             EdgeLoad::Traction { group, traction } => (group, *traction, 0.0),
@@ -126,8 +133,12 @@ fn assemble_edge_loads(model: &Model) -> Result<Vec<f64>, FemError> {
             };
             for (cell, tag) in block.cells().zip(&block.element_tags) {
                 let coords: Vec<[f64; 2]> = cell.iter().map(|n| model.mesh.points[n.0]).collect();
-                let sign = outward_sign(model, cell, &coords);
-                let fe = edge_traction_load(edge, &coords, 1.0, 3, |_, n| {
+                let &(body, owner) = owners.get(&edge_key(cell[0], cell[1])).ok_or_else(|| {
+                    FemError::InvalidInput(format!("edge load on \"{group}\": edge {tag} bounds no body"))
+                })?;
+                let body = &model.bodies[body];
+                let sign = outward_sign(&body.cell_coords(&model.mesh, owner), &coords);
+                let fe = edge_traction_load(edge, &coords, body.thickness, 3, |_, n| {
                     [traction[0] - sign * pressure * n[0], traction[1] - sign * pressure * n[1]]
                 })
                 .map_err(|source| FemError::Element { body: group.clone(), cell: *tag, source })?;
@@ -138,29 +149,35 @@ fn assemble_edge_loads(model: &Model) -> Result<Vec<f64>, FemError> {
             }
         }
     }
-    // Thickness: the load is per unit thickness times the thickness of the body carrying it.
     Ok(f)
 }
 
-/// +1 if the edge normal `(t_y, -t_x)` points out of the body cell that owns the edge, else -1.
-fn outward_sign(model: &Model, edge: &[contact2d_mesh::NodeId], coords: &[[f64; 2]]) -> f64 {
-    let mid = [0.5 * (coords[0][0] + coords[1][0]), 0.5 * (coords[0][1] + coords[1][1])];
-    let n = [coords[1][1] - coords[0][1], coords[0][0] - coords[1][0]];
-    for body in &model.bodies {
+/// An undirected edge, by its end nodes.
+fn edge_key(a: NodeId, b: NodeId) -> (NodeId, NodeId) {
+    if a < b { (a, b) } else { (b, a) }
+}
+
+/// For every cell edge of every body: the owning `(body, cell)` (built once per assembly).
+fn edge_owners(model: &Model) -> HashMap<(NodeId, NodeId), (usize, usize)> {
+    let mut owners = HashMap::new();
+    for (b, body) in model.bodies.iter().enumerate() {
         for i in 0..body.num_cells() {
             let nodes = body.cell_nodes(i);
-            if edge.iter().take(2).all(|e| nodes.contains(e)) {
-                let c = body.cell_coords(&model.mesh, i);
-                let centroid = [
-                    c.iter().map(|p| p[0]).sum::<f64>() / c.len() as f64,
-                    c.iter().map(|p| p[1]).sum::<f64>() / c.len() as f64,
-                ];
-                let out = [mid[0] - centroid[0], mid[1] - centroid[1]];
-                return if n[0] * out[0] + n[1] * out[1] >= 0.0 { 1.0 } else { -1.0 };
+            for e in body.elements[i].edges() {
+                owners.insert(edge_key(nodes[e[0]], nodes[e[1]]), (b, i));
             }
         }
     }
-    1.0
+    owners
+}
+
+/// +1 if the edge normal `(t_y, -t_x)` points out of the cell with nodal coordinates `cell`.
+fn outward_sign(cell: &[[f64; 2]], edge: &[[f64; 2]]) -> f64 {
+    let mid = [0.5 * (edge[0][0] + edge[1][0]), 0.5 * (edge[0][1] + edge[1][1])];
+    let n = [edge[1][1] - edge[0][1], edge[0][0] - edge[1][0]];
+    let k = cell.len() as f64;
+    let centroid = [cell.iter().map(|p| p[0]).sum::<f64>() / k, cell.iter().map(|p| p[1]).sum::<f64>() / k];
+    if n[0] * (mid[0] - centroid[0]) + n[1] * (mid[1] - centroid[1]) >= 0.0 { 1.0 } else { -1.0 }
 }
 
 impl LinearSystem {

@@ -97,3 +97,19 @@ fn inverted_element_is_named() {
         other => panic!("expected InvertedElement for cell 1, got {other:?}"),
     }
 }
+
+/// A traction is per unit length and thickness: a body of thickness 2 under σ = 1 strains like
+/// one of thickness 1 (closed form: u1 = σ L / E at the loaded edge, with ν = 0).
+#[test]
+fn edge_traction_scales_with_the_body_thickness() {
+    for thickness in [1.0, 2.0, 0.25] {
+        let mut m = Model::new(rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 1, 1));
+        m.add_body("domain", Material::new(1.0, 0.0, PlaneCondition::Stress).unwrap(), thickness).unwrap();
+        m.fix("left", Component::X, 0.0).unwrap();
+        m.fix("bottom", Component::Y, 0.0).unwrap();
+        m.add_edge_load(contact2d_fem::EdgeLoad::Traction { group: "right".into(), traction: [1.0, 0.0] }).unwrap();
+        let (_, _, sol) = solve_linear(&m).unwrap();
+        // Node 3 is (1, 1) in the generated 2 × 2 lattice.
+        assert!((sol.node_displacement(3)[0] - 1.0).abs() < 1e-12, "thickness {thickness}");
+    }
+}
