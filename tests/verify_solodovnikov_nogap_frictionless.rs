@@ -69,7 +69,7 @@ fn check_level(n: usize) {
         assert!((l - 0.4708).abs() <= 0.005, "{name} N={n}: l = {l:.4} vs 0.4708");
         within(q.sigma_star, 0.3282, 0.03, &format!("{name} N={n} sigma*"));
         within(q.stress_concentration, 4.460, 0.03, &format!("{name} N={n} K"));
-        assert!(s.state.iter().any(|st| *st == PairState::Stick));
+        assert!(s.state.contains(&PairState::Stick));
     }
 }
 

@@ -4,11 +4,12 @@
 //! P     = Σ reactions in x1 on the pulled edge x1 = L2       (= ∫_0^H σ11 dx2)
 //! Φ_E1, Φ_E2 = strain energies of plate and insert
 //! l     = contact end on η = 1 − φ/π of the hole edge (gap^{2/3} interpolation, see contact::post)
+//! b     = stick end likewise (slip^{2/3} interpolation)
 //! σ*    = max over the hole edge of σ_φφ (Gauss-point stresses extrapolated to the nodes, averaged)
 //! K     = H σ* / P,  H = 2.5
 //! ```
 
-use contact2d_contact::{ContactError, ContactSolution, contact_end, fem_solution};
+use contact2d_contact::{ContactError, ContactSolution, PairState, contact_end, fem_solution, stick_end};
 use contact2d_fem::{BodyId, StressRecovery, strain_energy, stresses_along_curve};
 
 use super::PlateInsertProblem;
@@ -29,6 +30,12 @@ pub struct PlateInsertResults {
     pub contact_end: Option<f64>,
     /// The mesh bracket of l: last contact and first free η.
     pub contact_bracket: Option<[f64; 2]>,
+    /// End b of the stick zone on the hole-edge angle (= l when nothing slips).
+    pub stick_end: Option<f64>,
+    /// The mesh bracket of b: last stick and first slipping η.
+    pub stick_bracket: Option<[f64; 2]>,
+    /// Energy dissipated in the solution's step (the whole loading for a one-step solve).
+    pub dissipation: f64,
     /// Contact end on the master's own coordinate (differs from `contact_end` in variant 2).
     pub contact_end_master: Option<f64>,
     /// σ*: the largest hoop stress on the hole edge.
@@ -52,6 +59,8 @@ impl PlateInsertProblem {
         let energy_insert = strain_energy(&p.model, BodyId(1), u)?;
         let end = contact_end(&self.eta_hole(), &solution.gap, &solution.state);
         let end_master = contact_end(&self.eta_master(), &solution.gap, &solution.state);
+        let slips = solution.state.iter().any(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative));
+        let stick = if slips { stick_end(&self.eta_hole(), &solution.slip_increment, &solution.state) } else { end };
         let hoop_max = |body: usize, contour| -> Result<f64, ContactError> {
             let samples = stresses_along_curve(&p.model, BodyId(body), contour, u, StressRecovery::Extrapolated)?;
             Ok(samples.iter().map(|s| s.tangential_stress()).fold(f64::NEG_INFINITY, f64::max))
@@ -63,6 +72,9 @@ impl PlateInsertProblem {
             energy_insert,
             contact_end: end.map(|e| e.0),
             contact_bracket: end.map(|e| e.1),
+            stick_end: stick.map(|e| e.0),
+            stick_bracket: stick.map(|e| e.1),
+            dissipation: solution.dissipation,
             contact_end_master: end_master.map(|e| e.0),
             sigma_star,
             stress_concentration: PLATE_HALF_HEIGHT * sigma_star / pull,

@@ -18,8 +18,8 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
-use crate::report::finish_solution;
-use crate::solution::{ContactSolution, ContactStatus};
+use crate::report::{RawSolution, finish_from_forces};
+use crate::solution::{ContactSolution, ContactStatus, StepStart};
 
 /// Solves the frictionless problem at load factor `w` with at most `max_iterations` active-set
 /// updates.
@@ -63,6 +63,13 @@ pub fn solve_frictionless_active_set(
         }
         active = next;
     }
-    let tau = vec![0.0; m];
-    finish_solution(problem, interface, w, lambda, tau, status, iterations, start.elapsed())
+    let raw = RawSolution {
+        load_factor: w,
+        normal_force: lambda,
+        tangential_force: vec![0.0; m],
+        status,
+        iterations,
+        time: start.elapsed(),
+    };
+    finish_from_forces(problem, interface, raw, &StepStart::initial(m))
 }

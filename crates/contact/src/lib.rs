@@ -11,6 +11,7 @@
 
 pub mod active_set;
 pub mod error;
+pub mod friction;
 pub mod interface;
 pub mod pairing;
 pub mod post;
@@ -18,13 +19,16 @@ pub mod problem;
 pub mod qp;
 pub mod report;
 pub mod solution;
+pub mod tresca_qp;
 
 pub use active_set::solve_frictionless_active_set;
 pub use error::ContactError;
+pub use friction::solve_frictional_active_set;
 pub use interface::Interface;
 pub use pairing::{ContactPair, pair_contours, tributary_weights};
-pub use post::{contact_end, contact_end_from_pressure, pair_tractions};
+pub use post::{contact_end, contact_end_from_pressure, pair_tractions, stick_end};
 pub use problem::{ContactProblem, PairRow};
 pub use qp::solve_frictionless_qp;
-pub use report::{fem_solution, finish_solution, from_displacement};
-pub use solution::{ContactSolution, ContactStatus, KktResiduals, PairState};
+pub use report::{RawSolution, fem_solution, finish_from_displacement, finish_from_forces};
+pub use solution::{ContactSolution, ContactStatus, KktResiduals, PairState, StepStart};
+pub use tresca_qp::solve_frictional_qp;

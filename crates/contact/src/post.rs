@@ -10,6 +10,9 @@
 //!    clamped to [η_c, η_f]. The gap side is used because it is smooth, whereas nodal pressures
 //!    of quadratic edges alternate between corner and mid nodes. (The pressure side, p ∝ √(l − η),
 //!    is [`contact_end_from_pressure`].)
+//! b: bracketed by the last stick node and the first slipping node beyond it; the slip opens
+//!    like the gap, |Δs| ∝ (η − b)^{3/2}, so |Δs|^{2/3} is interpolated over the first two
+//!    slipping nodes, clamped to the bracket.
 //! ```
 
 use crate::problem::ContactProblem;
@@ -61,6 +64,24 @@ pub fn contact_end_from_pressure(eta: &[f64], pressure: &[f64], state: &[PairSta
     let (pc2, pp2) = (pressure[c].powi(2), pressure[prev].powi(2));
     let l = if pp2 > pc2 { eta[c] + pc2 * (eta[c] - eta[prev]) / (pp2 - pc2) } else { eta[c] };
     Some((l.clamp(bracket[0], bracket[1]), bracket))
+}
+
+/// The end of the stick zone on `eta` (stick from small η, then slip): `(b, bracket)` from the
+/// slip increments of the first two slipping pairs (see the module docs). `None` without a
+/// stick-to-slip transition; without slip, use the contact end instead.
+pub fn stick_end(eta: &[f64], slip_increment: &[f64], state: &[PairState]) -> Option<(f64, [f64; 2])> {
+    let mut order: Vec<usize> = (0..eta.len()).collect();
+    order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
+    let slipping = |k: usize| matches!(state[k], PairState::SlipPositive | PairState::SlipNegative);
+    let last_stick = order.iter().rposition(|&k| state[k] == PairState::Stick)?;
+    let first_slip = last_stick + 1 + order[last_stick + 1..].iter().position(|&k| slipping(k))?;
+    let (c, f) = (order[last_stick], order[first_slip]);
+    let bracket = [eta[c], eta[f]];
+    let next = order.get(first_slip + 1).copied().filter(|&k| slipping(k));
+    let Some(f2) = next else { return Some((eta[c], bracket)) };
+    let (d1, d2) = (slip_increment[f].abs().powf(2.0 / 3.0), slip_increment[f2].abs().powf(2.0 / 3.0));
+    let b = if d2 > d1 { eta[f] - d1 * (eta[f2] - eta[f]) / (d2 - d1) } else { eta[f] };
+    Some((b.clamp(bracket[0], bracket[1]), bracket))
 }
 
 #[cfg(test)]

@@ -51,6 +51,10 @@ pub struct ContactProblem {
     pub gap: Vec<f64>,
     /// Friction coefficient per pair (0 = frictionless).
     pub friction: Vec<f64>,
+    /// Whether a pair has a tangential unknown: false where its tangential row has no free DOF
+    /// (e.g. at a symmetry end point, where the tangent lies along a Dirichlet direction and a
+    /// tangential condition would duplicate it; spec §8).
+    pub tangential: Vec<bool>,
     /// Right-hand side of the unit load pattern, `r = f_f − K_fc u_c` with the model's values.
     pub pattern_rhs: Vec<f64>,
     /// Constrained values of the unit load pattern (the model's prescribed values).
@@ -75,6 +79,16 @@ impl ContactProblem {
         }
         let gap = pairs.iter().map(|p| p.gap).collect();
         let friction = vec![0.0; pairs.len()];
+        // A tangential row whose free part is negligible (< 1e-3 of the whole row: the tangent
+        // lies along constrained directions up to the edge geometry's error) has no unknown.
+        let tangential = tangent_rows
+            .iter()
+            .map(|r: &PairRow| {
+                let norm = |v: &[(usize, f64)]| v.iter().map(|(_, c)| c * c).sum::<f64>();
+                let (free, all) = (norm(&r.free), norm(&r.free) + norm(&r.constrained));
+                free > 1e-6 * all
+            })
+            .collect();
         Ok(ContactProblem {
             model,
             system,
@@ -84,6 +98,7 @@ impl ContactProblem {
             tangent_rows,
             gap,
             friction,
+            tangential,
             pattern_rhs,
             pattern_prescribed,
         })
@@ -103,6 +118,23 @@ impl ContactProblem {
         }
         self.gap = gap;
         Ok(())
+    }
+
+    /// Sets the friction coefficient of every pair.
+    ///
+    /// # Errors
+    /// A negative or non-finite coefficient.
+    pub fn set_friction(&mut self, mu: f64) -> Result<(), ContactError> {
+        if !(mu.is_finite() && mu >= 0.0) {
+            return Err(ContactError::InvalidInput(format!("friction coefficient must be finite and ≥ 0, got {mu}")));
+        }
+        self.friction = vec![mu; self.pairs.len()];
+        Ok(())
+    }
+
+    /// Whether any pair has friction.
+    pub fn is_frictional(&self) -> bool {
+        self.friction.iter().any(|mu| *mu > 0.0)
     }
 
     /// Number of pairs.

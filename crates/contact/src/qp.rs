@@ -17,10 +17,10 @@ use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus};
 
 use crate::problem::ContactProblem;
-use crate::report::from_displacement;
-use crate::solution::{ContactSolution, ContactStatus};
+use crate::report::{RawSolution, finish_from_displacement};
+use crate::solution::{ContactSolution, ContactStatus, StepStart};
 
-fn map_status(status: SolverStatus) -> ContactStatus {
+pub(crate) fn map_status(status: SolverStatus) -> ContactStatus {
     match status {
         SolverStatus::Solved => ContactStatus::Converged,
         SolverStatus::PrimalInfeasible | SolverStatus::AlmostPrimalInfeasible => ContactStatus::Infeasible,
@@ -88,6 +88,13 @@ pub fn solve_frictionless_qp(problem: &ContactProblem, w: f64) -> ContactSolutio
         },
         Err(_) => (ContactStatus::Numerical, vec![0.0; n], vec![0.0; m], 0),
     };
-    let displacement = problem.system.dofs.expand(&x, &prescribed);
-    from_displacement(problem, w, &x, displacement, z, vec![0.0; m], status, iterations, start.elapsed())
+    let raw = RawSolution {
+        load_factor: w,
+        normal_force: z,
+        tangential_force: vec![0.0; m],
+        status,
+        iterations,
+        time: start.elapsed(),
+    };
+    finish_from_displacement(problem, &x, raw, &StepStart::initial(m))
 }

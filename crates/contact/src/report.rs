@@ -1,4 +1,13 @@
-//! Turning interface forces into a full [`ContactSolution`]: displacements, gaps, states, KKT.
+//! Turning an algorithm's answer into a full [`ContactSolution`]: displacements, gaps, slips,
+//! states, dissipation and KKT residuals — the same evaluation for every algorithm.
+//!
+//! ```text
+//! gap = g0 + B_N u,  s = B_T u,  Δs = s − s_start,  dissipation = Σ −½(τ_start + τ) Δs
+//! contact  ⇔ λ/F > max(gap, 0)/U      slip ⇔ |Δs|/U > (μλ − |τ|)/F      (in contact)
+//! ```
+//! `F` and `U` are the problem's force and displacement scales (largest contact or load force,
+//! largest displacement): each complementary pair is decided by its larger normalised member,
+//! which is exact for active-set answers and robust for interior-point ones.
 
 use std::time::Duration;
 
@@ -6,85 +15,96 @@ use contact2d_fem::Solution;
 
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
-use crate::solution::{ContactSolution, ContactStatus, KktResiduals, PairState};
+use crate::solution::{ContactSolution, ContactStatus, KktResiduals, PairState, StepStart};
 
-/// Recovers the displacements once from `λ, τ` and evaluates gaps, states and KKT residuals.
-#[allow(clippy::too_many_arguments)]
-pub fn finish_solution(
-    problem: &ContactProblem,
-    interface: &Interface,
-    w: f64,
-    normal_force: Vec<f64>,
-    tangential_force: Vec<f64>,
-    status: ContactStatus,
-    iterations: usize,
-    time: Duration,
-) -> ContactSolution {
-    let u_free = interface.free_displacement(w, &normal_force, &tangential_force);
-    let prescribed: Vec<f64> = problem.pattern_prescribed.iter().map(|v| w * v).collect();
-    let displacement = problem.system.dofs.expand(&u_free, &prescribed);
-    from_displacement(problem, w, &u_free, displacement, normal_force, tangential_force, status, iterations, time)
+/// What an algorithm found, before evaluation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RawSolution {
+    /// Load factor w.
+    pub load_factor: f64,
+    /// λ per pair.
+    pub normal_force: Vec<f64>,
+    /// τ per pair.
+    pub tangential_force: Vec<f64>,
+    /// Outcome.
+    pub status: ContactStatus,
+    /// Iterations.
+    pub iterations: usize,
+    /// Wall time.
+    pub time: Duration,
 }
 
-/// Builds the solution from known free displacements (used by algorithms that solve for `u`).
-#[allow(clippy::too_many_arguments)]
-pub fn from_displacement(
+/// Recovers the displacements once from `λ, τ` through the condensed interface and evaluates.
+pub fn finish_from_forces(
     problem: &ContactProblem,
-    w: f64,
-    u_free: &[f64],
-    displacement: Vec<f64>,
-    normal_force: Vec<f64>,
-    tangential_force: Vec<f64>,
-    status: ContactStatus,
-    iterations: usize,
-    time: Duration,
+    interface: &Interface,
+    raw: RawSolution,
+    start: &StepStart,
 ) -> ContactSolution {
+    let u_free = interface.free_displacement(raw.load_factor, &raw.normal_force, &raw.tangential_force);
+    finish_from_displacement(problem, &u_free, raw, start)
+}
+
+/// Evaluates an answer given as free displacements (algorithms that solve for `u`).
+pub fn finish_from_displacement(
+    problem: &ContactProblem,
+    u_free: &[f64],
+    raw: RawSolution,
+    start: &StepStart,
+) -> ContactSolution {
+    let w = raw.load_factor;
     let prescribed: Vec<f64> = problem.pattern_prescribed.iter().map(|v| w * v).collect();
+    let displacement = problem.system.dofs.expand(u_free, &prescribed);
     let gap: Vec<f64> =
         problem.normal_rows.iter().zip(&problem.gap).map(|(row, g0)| g0 + row.dot(u_free, &prescribed)).collect();
-    // In contact where the normalised force exceeds the normalised gap: exact for an active-set
-    // answer (λ = 0 or gap = 0) and robust for an interior-point one (both small but unequal).
-    // Forces against the larger of the contact forces and the load's nodal forces (so that
-    // round-off forces of an all-free solution are not mistaken for contact).
+    let slip: Vec<f64> = problem.tangent_rows.iter().map(|row| row.dot(u_free, &prescribed)).collect();
+    let slip_increment: Vec<f64> = slip.iter().zip(&start.slip).map(|(s, s0)| s - s0).collect();
+    let (lambda, tau) = (&raw.normal_force, &raw.tangential_force);
     let load_force = problem.pattern_rhs.iter().fold(0.0f64, |a, r| a.max((w * r).abs()));
-    let force_scale = normal_force.iter().fold(load_force, |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE);
-    // Gaps are measured against the problem's displacement scale (not the largest gap, which is
-    // itself round-off when every pair is closed).
-    let gap_scale = gap.iter().chain(&displacement).fold(0.0f64, |a, g| a.max(g.abs())).max(f64::MIN_POSITIVE);
-    let state: Vec<PairState> = normal_force
-        .iter()
-        .zip(&gap)
-        .zip(&tangential_force)
-        .zip(&problem.friction)
-        .map(|(((l, g), t), mu)| {
-            if *l / force_scale <= g.max(0.0) / gap_scale || *l <= 0.0 {
-                PairState::Free
-            } else if *mu > 0.0 && t.abs() >= mu * l * (1.0 - 1e-9) {
-                if *t > 0.0 { PairState::SlipPositive } else { PairState::SlipNegative }
-            } else {
-                PairState::Stick
-            }
-        })
-        .collect();
-    let mut kkt = KktResiduals::default();
+    let force_scale = lambda.iter().chain(tau).fold(load_force, |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE);
+    let length_scale = gap.iter().chain(&displacement).fold(0.0f64, |a, g| a.max(g.abs())).max(f64::MIN_POSITIVE);
+    let mut state = Vec::with_capacity(gap.len());
+    let mut kkt = KktResiduals { min_dissipation: f64::INFINITY, ..KktResiduals::default() };
+    let mut dissipation = 0.0;
     for k in 0..gap.len() {
+        let mu = problem.friction[k];
+        let in_contact = lambda[k] > 0.0 && lambda[k] / force_scale > gap[k].max(0.0) / length_scale;
+        let slack = mu * lambda[k] - tau[k].abs();
+        let slipping =
+            problem.tangential[k] && mu > 0.0 && slip_increment[k].abs() / length_scale > slack / force_scale;
+        state.push(match (in_contact, slipping) {
+            (false, _) => PairState::Free,
+            (true, false) => PairState::Stick,
+            (true, true) if slip_increment[k] > 0.0 => PairState::SlipPositive,
+            (true, true) => PairState::SlipNegative,
+        });
+        let pair_dissipation = -0.5 * (start.tangential_force[k] + tau[k]) * slip_increment[k];
+        dissipation += pair_dissipation;
         kkt.max_penetration = kkt.max_penetration.max(-gap[k]);
-        kkt.max_complementarity = kkt.max_complementarity.max((normal_force[k] * gap[k]).abs());
-        kkt.max_tension = kkt.max_tension.max(-normal_force[k]);
-        kkt.max_cone_violation =
-            kkt.max_cone_violation.max(tangential_force[k].abs() - problem.friction[k] * normal_force[k].max(0.0));
+        kkt.max_complementarity = kkt.max_complementarity.max((lambda[k] * gap[k]).abs());
+        kkt.max_tension = kkt.max_tension.max(-lambda[k]);
+        kkt.max_cone_violation = kkt.max_cone_violation.max(-slack);
+        if slipping {
+            kkt.min_dissipation = kkt.min_dissipation.min(-tau[k] * slip_increment[k]);
+        }
+    }
+    if !kkt.min_dissipation.is_finite() {
+        kkt.min_dissipation = 0.0;
     }
     ContactSolution {
-        status,
+        status: raw.status,
         load_factor: w,
         displacement,
-        normal_force,
-        tangential_force,
+        normal_force: raw.normal_force,
+        tangential_force: raw.tangential_force,
         gap,
         state,
+        slip,
+        slip_increment,
+        dissipation,
         kkt,
-        iterations,
-        time,
+        iterations: raw.iterations,
+        time: raw.time,
     }
 }
 

@@ -43,6 +43,27 @@ pub struct KktResiduals {
     pub max_tension: f64,
 }
 
+/// The state at the start of a load step: the history a frictional step needs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StepStart {
+    /// Relative tangential displacement `s` per pair.
+    pub slip: Vec<f64>,
+    /// Tangential force `τ` per pair.
+    pub tangential_force: Vec<f64>,
+}
+
+impl StepStart {
+    /// The virgin state: no slip, no force.
+    pub fn initial(pairs: usize) -> StepStart {
+        StepStart { slip: vec![0.0; pairs], tangential_force: vec![0.0; pairs] }
+    }
+
+    /// The state at the end of a solved step.
+    pub fn after(solution: &ContactSolution) -> StepStart {
+        StepStart { slip: solution.slip.clone(), tangential_force: solution.tangential_force.clone() }
+    }
+}
+
 /// A solution of a [`crate::ContactProblem`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct ContactSolution {
@@ -60,6 +81,13 @@ pub struct ContactSolution {
     pub gap: Vec<f64>,
     /// State per pair.
     pub state: Vec<PairState>,
+    /// Relative tangential displacement per pair, `s = B_T u` (master minus slave along t).
+    pub slip: Vec<f64>,
+    /// Its increment over the step, `Δs = s − s_start`.
+    pub slip_increment: Vec<f64>,
+    /// Energy dissipated by friction in the step: `Σ_k −½(τ_start + τ) Δs` (trapezoid rule; exact
+    /// for forces varying linearly over the step, e.g. proportional loading).
+    pub dissipation: f64,
     /// KKT residuals.
     pub kkt: KktResiduals,
     /// Iterations of the algorithm.

@@ -214,6 +214,31 @@ fn side_name(side: Side) -> &'static str {
     }
 }
 
+/// Appends `other` to `mesh` as separate nodes and cells, prefixing all of `other`'s group
+/// names with `prefix` (bodies side by side, for contact tests and examples).
+pub fn append_prefixed(mesh: &mut Mesh, other: &Mesh, prefix: &str) {
+    let node_offset = mesh.points.len();
+    let tag_offset = mesh.node_tags.iter().copied().max().unwrap_or(0);
+    let element_offset = mesh.blocks.iter().flat_map(|b| b.element_tags.iter().copied()).max().unwrap_or(0);
+    let group_offset = mesh.groups.iter().map(|g| g.tag).max().unwrap_or(0);
+    let entity_offset = mesh.blocks.iter().map(|b| b.entity_tag).max().unwrap_or(0);
+    mesh.points.extend_from_slice(&other.points);
+    mesh.node_tags.extend(other.node_tags.iter().map(|t| t + tag_offset));
+    for b in &other.blocks {
+        mesh.blocks.push(CellBlock {
+            kind: b.kind,
+            entity_dim: b.entity_dim,
+            entity_tag: b.entity_tag + entity_offset,
+            physical_tags: b.physical_tags.iter().map(|t| t + group_offset).collect(),
+            nodes: b.nodes.iter().map(|n| NodeId(n.0 + node_offset)).collect(),
+            element_tags: b.element_tags.iter().map(|t| t + element_offset).collect(),
+        });
+    }
+    for g in &other.groups {
+        mesh.groups.push(PhysicalGroup { name: format!("{prefix}{}", g.name), dim: g.dim, tag: g.tag + group_offset });
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -242,30 +267,5 @@ mod tests {
             let p = m.points[n.0];
             assert!((p[0].hypot(p[1]) - 1.0).abs() < 1e-15);
         }
-    }
-}
-
-/// Appends `other` to `mesh` as separate nodes and cells, prefixing all of `other`'s group
-/// names with `prefix` (bodies side by side, for contact tests and examples).
-pub fn append_prefixed(mesh: &mut Mesh, other: &Mesh, prefix: &str) {
-    let node_offset = mesh.points.len();
-    let tag_offset = mesh.node_tags.iter().copied().max().unwrap_or(0);
-    let element_offset = mesh.blocks.iter().flat_map(|b| b.element_tags.iter().copied()).max().unwrap_or(0);
-    let group_offset = mesh.groups.iter().map(|g| g.tag).max().unwrap_or(0);
-    let entity_offset = mesh.blocks.iter().map(|b| b.entity_tag).max().unwrap_or(0);
-    mesh.points.extend_from_slice(&other.points);
-    mesh.node_tags.extend(other.node_tags.iter().map(|t| t + tag_offset));
-    for b in &other.blocks {
-        mesh.blocks.push(CellBlock {
-            kind: b.kind,
-            entity_dim: b.entity_dim,
-            entity_tag: b.entity_tag + entity_offset,
-            physical_tags: b.physical_tags.iter().map(|t| t + group_offset).collect(),
-            nodes: b.nodes.iter().map(|n| NodeId(n.0 + node_offset)).collect(),
-            element_tags: b.element_tags.iter().map(|t| t + element_offset).collect(),
-        });
-    }
-    for g in &other.groups {
-        mesh.groups.push(PhysicalGroup { name: format!("{prefix}{}", g.name), dim: g.dim, tag: g.tag + group_offset });
     }
 }

@@ -1,0 +1,200 @@
+//! Coulomb friction in one quasi-static load step by a primal-dual active set (semi-smooth
+//! Newton) on the condensed interface.
+//!
+//! ```text
+//! gap = g0 + w h_N + C_NN λ + C_NT τ          s = w h_T + C_TN λ + C_TT τ,   Δs = s − s_start
+//! free:   λ = 0, τ = 0                        (gap ≥ 0)
+//! stick:  gap = 0, Δs = 0                     (|τ| ≤ μλ)
+//! slip+:  gap = 0, τ = −μλ                    (Δs > 0: master slides along +t; f1 = μp + q = 0)
+//! slip−:  gap = 0, τ = +μλ                    (Δs < 0; f2 = μp − q = 0)
+//! update: contact ⇔ λ − c_N gap > 0;  in contact, with θ = τ − c_T Δs:
+//!         stick ⇔ |θ| ≤ μ(λ − c_N gap);  else slip with τ = μλ sign θ
+//! ```
+//!
+//! With the paper's signs p = −λ/w, q = −τ/w (w the tributary length): the friction force on the
+//! master opposes its slip, so the dissipation −τ Δs = q Δv_s w ≥ 0 (Q ≥ 0 in (5.1)).
+//! The equations of a state are linear but not symmetric (the slip rows couple τ to λ); they are
+//! solved densely (2 × pairs unknowns). Convergence is not guaranteed for large μ: the iteration
+//! limit is then reported as [`ContactStatus::MaxIterations`].
+//!
+//! # References
+//! Hüeber, Stadler & Wohlmuth (2008), SIAM J. Sci. Comput. 30(2): a primal-dual active set
+//! algorithm for three-dimensional contact problems with Coulomb friction.
+
+use std::time::Instant;
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::interface::Interface;
+use crate::problem::ContactProblem;
+use crate::report::{RawSolution, finish_from_forces};
+use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
+
+/// Solves one frictional step to load factor `w` from the history `start`, starting from the
+/// state guess `guess` (e.g. the previous step's states; `None`: all in contact and sticking).
+pub fn solve_frictional_active_set(
+    problem: &ContactProblem,
+    interface: &Interface,
+    w: f64,
+    start: &StepStart,
+    guess: Option<&[PairState]>,
+    max_iterations: usize,
+) -> ContactSolution {
+    let clock = Instant::now();
+    let m = problem.num_pairs();
+    let frictional = interface.c_tt.nrows() == m;
+    let mut state: Vec<PairState> = match guess {
+        Some(g) if g.len() == m => g.to_vec(),
+        _ => vec![PairState::Stick; m],
+    };
+    let mean_diag = |c: &DMatrix<f64>| (0..c.nrows()).map(|k| c[(k, k)]).sum::<f64>() / c.nrows().max(1) as f64;
+    let c_n = 1.0 / mean_diag(&interface.c_nn).max(f64::MIN_POSITIVE);
+    let c_t = if frictional { 1.0 / mean_diag(&interface.c_tt).max(f64::MIN_POSITIVE) } else { 0.0 };
+    let (mut lambda, mut tau) = (vec![0.0; m], vec![0.0; m]);
+    let mut status = ContactStatus::MaxIterations;
+    let mut iterations = 0;
+    for it in 1..=max_iterations {
+        iterations = it;
+        let Some((l, t)) = solve_state(problem, interface, w, start, &state, frictional) else {
+            status = ContactStatus::Numerical;
+            break;
+        };
+        (lambda, tau) = (l, t);
+        let next = update_state(problem, interface, w, start, &lambda, &tau, c_n, c_t, frictional);
+        if next == state {
+            status = ContactStatus::Converged;
+            break;
+        }
+        state = next;
+    }
+    let raw = RawSolution {
+        load_factor: w,
+        normal_force: lambda,
+        tangential_force: tau,
+        status,
+        iterations,
+        time: clock.elapsed(),
+    };
+    finish_from_forces(problem, interface, raw, start)
+}
+
+/// gap_k and s_k for given forces.
+fn interface_values(
+    interface: &Interface,
+    w: f64,
+    g0: &[f64],
+    lambda: &[f64],
+    tau: &[f64],
+    frictional: bool,
+) -> (Vec<f64>, Vec<f64>) {
+    let m = lambda.len();
+    let l = DVector::from_column_slice(lambda);
+    let mut gap = &interface.c_nn * &l;
+    let mut s = DVector::zeros(m);
+    if frictional {
+        let t = DVector::from_column_slice(tau);
+        gap += &interface.c_nt * &t;
+        s = &interface.c_tn * &l + &interface.c_tt * &t;
+    }
+    let gap = (0..m).map(|k| g0[k] + w * interface.h_normal[k] + gap[k]).collect();
+    let s = (0..m).map(|k| if frictional { w * interface.h_tangent[k] + s[k] } else { 0.0 }).collect();
+    (gap, s)
+}
+
+/// Solves the linear equations of a given state: unknowns `[λ; τ]`.
+fn solve_state(
+    problem: &ContactProblem,
+    interface: &Interface,
+    w: f64,
+    start: &StepStart,
+    state: &[PairState],
+    frictional: bool,
+) -> Option<(Vec<f64>, Vec<f64>)> {
+    let m = state.len();
+    let mut a = DMatrix::<f64>::zeros(2 * m, 2 * m);
+    let mut b = DVector::<f64>::zeros(2 * m);
+    for k in 0..m {
+        let (rn, rt) = (k, m + k);
+        let mu = problem.friction[k];
+        match state[k] {
+            PairState::Free => {
+                a[(rn, k)] = 1.0;
+                a[(rt, m + k)] = 1.0;
+                continue;
+            }
+            _ => {
+                // gap_k = 0
+                for j in 0..m {
+                    a[(rn, j)] = interface.c_nn[(k, j)];
+                    if frictional {
+                        a[(rn, m + j)] = interface.c_nt[(k, j)];
+                    }
+                }
+                b[rn] = -(problem.gap[k] + w * interface.h_normal[k]);
+            }
+        }
+        if !frictional || !problem.tangential[k] || mu == 0.0 {
+            a[(rt, m + k)] = 1.0; // τ = 0
+            continue;
+        }
+        match state[k] {
+            PairState::Stick => {
+                // s_k = s_start_k
+                for j in 0..m {
+                    a[(rt, j)] = interface.c_tn[(k, j)];
+                    a[(rt, m + j)] = interface.c_tt[(k, j)];
+                }
+                b[rt] = start.slip[k] - w * interface.h_tangent[k];
+            }
+            PairState::SlipPositive => {
+                a[(rt, m + k)] = 1.0;
+                a[(rt, k)] = mu;
+            }
+            PairState::SlipNegative => {
+                a[(rt, m + k)] = 1.0;
+                a[(rt, k)] = -mu;
+            }
+            PairState::Free => {}
+        }
+    }
+    let x = a.lu().solve(&b)?;
+    if x.iter().any(|v| !v.is_finite()) {
+        return None;
+    }
+    Some((x.rows(0, m).iter().copied().collect(), x.rows(m, m).iter().copied().collect()))
+}
+
+#[allow(clippy::too_many_arguments)]
+fn update_state(
+    problem: &ContactProblem,
+    interface: &Interface,
+    w: f64,
+    start: &StepStart,
+    lambda: &[f64],
+    tau: &[f64],
+    c_n: f64,
+    c_t: f64,
+    frictional: bool,
+) -> Vec<PairState> {
+    let (gap, s) = interface_values(interface, w, &problem.gap, lambda, tau, frictional);
+    (0..lambda.len())
+        .map(|k| {
+            let normal = lambda[k] - c_n * gap[k];
+            if normal <= 0.0 {
+                return PairState::Free;
+            }
+            let mu = problem.friction[k];
+            if !frictional || !problem.tangential[k] || mu == 0.0 {
+                return PairState::Stick;
+            }
+            let theta = tau[k] - c_t * (s[k] - start.slip[k]);
+            if theta.abs() <= mu * normal {
+                PairState::Stick
+            } else if theta > 0.0 {
+                PairState::SlipNegative
+            } else {
+                PairState::SlipPositive
+            }
+        })
+        .collect()
+}

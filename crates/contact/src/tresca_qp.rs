@@ -1,0 +1,139 @@
+//! Coulomb friction by Clarabel: each load step as a sequence of Tresca problems (convex QPs with
+//! a given slip bound `g_k`), the bound updated to `μ λ_k` of the last iterate until the Coulomb
+//! fixed point — an independent check of the condensed active-set algorithms.
+//!
+//! ```text
+//! Tresca QP:  minimise  ½ uᵀK u − w rᵀu + Σ_k g_k t_k
+//!             subject to  gap_k = g0_k + (B_N u)_k ≥ 0,   t_k ≥ |Δs_k|,  Δs_k = (B_T u)_k − s_start,k
+//! duals:      λ = z_N,   τ = z₊ − z₋ (the rows t − Δs ≥ 0 and t + Δs ≥ 0),   z₊ + z₋ = g
+//! fixed point: g⁽ʲ⁺¹⁾ = μ λ⁽ʲ⁾, from the frictionless λ, until max|Δλ| ≤ 1e-8 max λ
+//!             (the interior-point solves are accurate to ~1e-9 relative, so a tighter test
+//!             would only measure their noise)
+//! ```
+//!
+//! Variables are scaled like the frictionless QP (`u = s x`, `t = s y`). The fixed point need
+//! not converge for large μ: the limit is then reported as [`ContactStatus::MaxIterations`].
+
+use std::time::Instant;
+
+use clarabel::algebra::CscMatrix;
+use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT};
+
+use crate::problem::ContactProblem;
+use crate::qp::{map_status, solve_frictionless_qp};
+use crate::report::{RawSolution, finish_from_displacement};
+use crate::solution::{ContactSolution, ContactStatus, StepStart};
+
+/// One Tresca solve: `(status, u_free, λ, τ, iterations)`.
+type TrescaAnswer = (ContactStatus, Vec<f64>, Vec<f64>, Vec<f64>, usize);
+
+/// Solves one frictional step to load factor `w` from `start` by the Tresca fixed point.
+pub fn solve_frictional_qp(
+    problem: &ContactProblem,
+    w: f64,
+    start: &StepStart,
+    max_fixed_point: usize,
+) -> ContactSolution {
+    let clock = Instant::now();
+    let m = problem.num_pairs();
+    let mut lambda = solve_frictionless_qp(problem, w).normal_force;
+    let mut answer: TrescaAnswer = (ContactStatus::MaxIterations, vec![], vec![0.0; m], vec![0.0; m], 0);
+    let mut status = ContactStatus::MaxIterations;
+    let mut iterations = 0;
+    for it in 1..=max_fixed_point {
+        iterations = it;
+        let bound: Vec<f64> = lambda.iter().zip(&problem.friction).map(|(l, mu)| mu * l.max(0.0)).collect();
+        answer = solve_tresca(problem, w, start, &bound);
+        if answer.0 != ContactStatus::Converged {
+            status = answer.0;
+            break;
+        }
+        let scale = answer.2.iter().fold(0.0f64, |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE);
+        let change = answer.2.iter().zip(&lambda).fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
+        lambda.clone_from(&answer.2);
+        if change <= 1e-8 * scale {
+            status = ContactStatus::Converged;
+            break;
+        }
+    }
+    let (_, u_free, normal_force, tangential_force, _) = answer;
+    let u_free = if u_free.is_empty() { vec![0.0; problem.system.dofs.num_free()] } else { u_free };
+    let raw = RawSolution { load_factor: w, normal_force, tangential_force, status, iterations, time: clock.elapsed() };
+    finish_from_displacement(problem, &u_free, raw, start)
+}
+
+fn solve_tresca(problem: &ContactProblem, w: f64, start: &StepStart, bound: &[f64]) -> TrescaAnswer {
+    let n = problem.system.dofs.num_free();
+    let m = problem.num_pairs();
+    let friction_pairs: Vec<usize> = (0..m).filter(|&k| problem.tangential[k] && problem.friction[k] > 0.0).collect();
+    let nt = friction_pairs.len();
+    let prescribed: Vec<f64> = problem.pattern_prescribed.iter().map(|v| w * v).collect();
+    let constrained_part =
+        |row: &crate::problem::PairRow| row.constrained.iter().map(|(j, v)| v * prescribed[*j]).sum::<f64>();
+    let b_normal: Vec<f64> =
+        problem.normal_rows.iter().zip(&problem.gap).map(|(r, g0)| g0 + constrained_part(r)).collect();
+    let c_t: Vec<f64> =
+        friction_pairs.iter().map(|&k| constrained_part(&problem.tangent_rows[k]) - start.slip[k]).collect();
+    let s = b_normal.iter().chain(&prescribed).chain(&c_t).fold(0.0f64, |a, v| a.max(v.abs()));
+    let s = if s > 0.0 { s } else { 1.0 };
+
+    // P = [K 0; 0 0] (upper triangle of K from its stored lower triangle).
+    let k = problem.system.stiffness.as_ref();
+    let (mut pr, mut pc, mut pv) = (vec![], vec![], vec![]);
+    for j in 0..k.ncols() {
+        for (i, v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
+            pr.push(j);
+            pc.push(i);
+            pv.push(*v);
+        }
+    }
+    let p = CscMatrix::new_from_triplets(n + nt, n + nt, pr, pc, pv);
+    let mut q: Vec<f64> = problem.pattern_rhs.iter().map(|r| -w * r / s).collect();
+    q.extend(friction_pairs.iter().map(|&k| bound[k] / s));
+
+    let (mut ar, mut ac, mut av, mut b) = (vec![], vec![], vec![], vec![]);
+    for (row, r) in problem.normal_rows.iter().enumerate() {
+        for (i, v) in &r.free {
+            ar.push(row);
+            ac.push(*i);
+            av.push(-v);
+        }
+        b.push(b_normal[row] / s);
+    }
+    for (j, &kk) in friction_pairs.iter().enumerate() {
+        for (sign, offset) in [(1.0, m + 2 * j), (-1.0, m + 2 * j + 1)] {
+            // sign +1: t − Δs ≥ 0 ;  sign −1: t + Δs ≥ 0
+            for (i, v) in &problem.tangent_rows[kk].free {
+                ar.push(offset);
+                ac.push(*i);
+                av.push(sign * v);
+            }
+            ar.push(offset);
+            ac.push(n + j);
+            av.push(-1.0);
+            b.push(-sign * c_t[j] / s);
+        }
+    }
+    let a = CscMatrix::new_from_triplets(m + 2 * nt, n + nt, ar, ac, av);
+    let settings = DefaultSettingsBuilder::default()
+        .verbose(false)
+        .tol_gap_abs(1e-11)
+        .tol_gap_rel(1e-11)
+        .tol_feas(1e-11)
+        .max_iter(200)
+        .build();
+    let cones = [NonnegativeConeT(m + 2 * nt)];
+    let Ok(settings) = settings else { return (ContactStatus::Numerical, vec![], vec![0.0; m], vec![0.0; m], 0) };
+    let Ok(mut solver) = DefaultSolver::new(&p, &q, &a, &b, &cones, settings) else {
+        return (ContactStatus::Numerical, vec![], vec![0.0; m], vec![0.0; m], 0);
+    };
+    solver.solve();
+    let sol = &solver.solution;
+    let u: Vec<f64> = sol.x[..n].iter().map(|v| v * s).collect();
+    let lambda: Vec<f64> = sol.z[..m].iter().map(|v| v * s).collect();
+    let mut tau = vec![0.0; m];
+    for (j, &kk) in friction_pairs.iter().enumerate() {
+        tau[kk] = s * (sol.z[m + 2 * j] - sol.z[m + 2 * j + 1]);
+    }
+    (map_status(sol.status), u, lambda, tau, sol.iterations as usize)
+}
