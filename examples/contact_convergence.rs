@@ -16,7 +16,7 @@ use std::time::Instant;
 
 use contact2d::contact::{ContactSolution, Interface, solve_frictionless_active_set, solve_frictionless_qp};
 use contact2d::doc_sections::write_section;
-use contact2d::plate_insert::{GapModel, PairingVariant, PlateInsert};
+use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
 
 struct Case {
     title: &'static str,
@@ -80,6 +80,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 eps,
                 clearance: case.clearance,
                 gap_model: GapModel::Paper,
+                friction: 0.0,
+                pairs: PairDiscretisation::NodeToSegment,
             }
             .build()?;
             let setup = t0.elapsed().as_secs_f64();

@@ -14,20 +14,21 @@
 //! gap = "paper"                 # or "geometric"
 //! friction = 0.0                # μ
 //! load = 1.0                    # w, the pulled-edge displacement
+//! pairs = "node_to_node"        # or "node_to_segment" (the mesh as given)
 //!
 //! [solver]
 //! algorithm = "active_set"      # or "clarabel"
 //! max_iterations = 100
 //! ```
 //!
-//! Unknown keys are errors. `--set key.path=value` overrides any value before the scene is
-//! checked (the value is parsed as TOML, falling back to a string).
+//! Unknown keys are errors. `--set key.path=value` sets any value (also one the file leaves at its
+//! default) before the scene is checked (the value is parsed as TOML, falling back to a string).
 
 use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
-use crate::plate_insert::{GapModel, PairingVariant, PlateInsert};
+use crate::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
 
 /// Errors reading a scene.
 #[derive(Debug, thiserror::Error)]
@@ -112,6 +113,24 @@ pub struct PlateInsertSection {
     pub friction: f64,
     /// w.
     pub load: f64,
+    /// `node_to_node` (slave nodes slid onto the paired points, the paper's pairs) or
+    /// `node_to_segment` (the mesh as given).
+    #[serde(default = "node_to_node")]
+    pub pairs: PairsKey,
+}
+
+fn node_to_node() -> PairsKey {
+    PairsKey::NodeToNode
+}
+
+/// Scene spelling of [`PairDiscretisation`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PairsKey {
+    /// Node-to-node after morphing.
+    NodeToNode,
+    /// Node-to-segment on the given mesh.
+    NodeToSegment,
 }
 
 fn one() -> f64 {
@@ -199,6 +218,11 @@ impl Scene {
                 GapKey::Paper => GapModel::Paper,
                 GapKey::Geometric => GapModel::Geometric,
             },
+            friction: p.friction,
+            pairs: match p.pairs {
+                PairsKey::NodeToNode => PairDiscretisation::NodeToNode,
+                PairsKey::NodeToSegment => PairDiscretisation::NodeToSegment,
+            },
         }
     }
 }
@@ -216,8 +240,9 @@ fn apply_override(root: &mut toml::Value, assignment: &str) -> Result<(), SceneE
     for (i, part) in parts.iter().enumerate() {
         let table = node.as_table_mut().ok_or_else(|| err(format!("\"{}\" is not a table", parts[..i].join("."))))?;
         if i + 1 == parts.len() {
-            let slot = table.get_mut(*part).ok_or_else(|| err(format!("no key \"{key}\" in the scene")))?;
-            *slot = parsed;
+            // A key the file leaves at its default may be set; whether it exists at all is
+            // decided when the scene is checked (unknown keys are errors there).
+            table.insert((*part).to_string(), parsed);
             return Ok(());
         }
         node =
@@ -264,7 +289,10 @@ algorithm = "active_set"
         let path = write(&format!("{SCENE}\nbogus = 1\n"));
         assert!(matches!(Scene::load(&path, &[]), Err(SceneError::Invalid { .. })));
         let path = write(SCENE);
-        assert!(matches!(Scene::load(&path, &["plate_insert.nope=1".into()]), Err(SceneError::Override { .. })));
+        assert!(matches!(Scene::load(&path, &["plate_insert.nope=1".into()]), Err(SceneError::Invalid { .. })));
+        assert!(matches!(Scene::load(&path, &["nosuchtable.x=1".into()]), Err(SceneError::Override { .. })));
+        let s = Scene::load(&path, &["plate_insert.friction=0.3".into()]).unwrap();
+        assert_eq!(s.plate_insert.friction, 0.3);
         assert!(matches!(Scene::load(&path, &["solver.algorithm=newton".into()]), Err(SceneError::Invalid { .. })));
         assert!(matches!(Scene::load(&path, &["noequals".into()]), Err(SceneError::Override { .. })));
         assert!(matches!(Scene::load(Path::new("/nonexistent.toml"), &[]), Err(SceneError::Io { .. })));

@@ -13,7 +13,7 @@
 //! replacement differs from the geometric distance by O(ε²): |diff| ≤ 2 ε² (Taylor expansion).
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use contact2d::plate_insert::{GapModel, PairingVariant, PlateInsert};
+use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
 
 const EPS: f64 = 0.05;
 
@@ -26,6 +26,8 @@ fn build(variant: PairingVariant, gap_model: GapModel) -> contact2d::plate_inser
         eps: EPS,
         clearance: EPS, // c = ε: ω = 1, gaps stay in length units
         gap_model,
+        friction: 0.0,
+        pairs: PairDiscretisation::NodeToSegment,
     }
     .build()
     .unwrap()
@@ -106,6 +108,8 @@ fn neat_fit_pairs_are_node_to_node_with_zero_gap() {
         eps: 0.0,
         clearance: 0.0,
         gap_model: GapModel::Geometric,
+        friction: 0.0,
+        pairs: PairDiscretisation::NodeToSegment,
     }
     .build()
     .unwrap();

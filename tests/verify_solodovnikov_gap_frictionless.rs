@@ -22,7 +22,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use contact2d::contact::{ContactStatus, Interface, solve_frictionless_active_set, solve_frictionless_qp};
-use contact2d::plate_insert::{GapModel, PairingVariant, PlateInsert, PlateInsertProblem};
+use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem};
 
 const W: f64 = 0.3838;
 
@@ -35,6 +35,8 @@ fn case(n: usize) -> PlateInsertProblem {
         eps: 0.05,
         clearance: 1.0,
         gap_model: GapModel::Paper,
+        friction: 0.0,
+        pairs: PairDiscretisation::NodeToNode,
     }
     .build()
     .unwrap()

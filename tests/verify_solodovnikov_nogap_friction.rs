@@ -28,10 +28,10 @@
 use contact2d::contact::{
     ContactSolution, ContactStatus, Interface, PairState, StepStart, solve_frictional_active_set, solve_frictional_qp,
 };
-use contact2d::plate_insert::{GapModel, PairingVariant, PlateInsert, PlateInsertProblem};
+use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem};
 
 fn case(n: usize) -> PlateInsertProblem {
-    let mut case = PlateInsert {
+    let case = PlateInsert {
         mesh: format!("meshes/plate_insert/plate_insert_eps0_N{n}.msh"),
         stiffness_ratio: 1.0,
         poissons_ratio: 0.3,
@@ -39,10 +39,12 @@ fn case(n: usize) -> PlateInsertProblem {
         eps: 0.0,
         clearance: 0.0,
         gap_model: GapModel::Paper,
+        friction: 0.3,
+        pairs: PairDiscretisation::NodeToSegment,
     }
     .build()
     .unwrap();
-    case.problem.set_friction(0.3).unwrap();
+    assert!(case.problem.is_gapless());
     case
 }
 

@@ -25,7 +25,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use contact2d::contact::{ContactStatus, Interface, PairState, solve_frictionless_active_set, solve_frictionless_qp};
-use contact2d::plate_insert::{GapModel, PairingVariant, PlateInsert};
+use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
 
 fn within(measured: f64, published: f64, rel: f64, what: &str) {
     let err = (measured - published).abs() / published.abs();
@@ -41,6 +41,8 @@ fn check_level(n: usize) {
         eps: 0.0,
         clearance: 0.0,
         gap_model: GapModel::Paper,
+        friction: 0.0,
+        pairs: PairDiscretisation::NodeToSegment,
     }
     .build()
     .unwrap();
@@ -95,6 +97,8 @@ fn no_gap_frictionless_solution_scales_linearly_with_the_load() {
         eps: 0.0,
         clearance: 0.0,
         gap_model: GapModel::Paper,
+        friction: 0.0,
+        pairs: PairDiscretisation::NodeToSegment,
     }
     .build()
     .unwrap();

@@ -10,9 +10,10 @@
 //!
 //! Non-dimensional: E1 = 1, lengths by R, the load factor w multiplies the pulled-edge value 1.
 
-use contact2d_contact::{ContactError, ContactProblem, pair_contours};
+use contact2d_contact::{ContactError, ContactProblem, node_to_node_targets, pair_contours};
 use contact2d_element::{Material, PlaneCondition};
 use contact2d_fem::{Component, Model};
+use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, read_msh};
 
 mod results;
@@ -54,6 +55,21 @@ pub struct PlateInsert {
     pub clearance: f64,
     /// How gaps are computed.
     pub gap_model: GapModel,
+    /// Coulomb friction coefficient μ.
+    pub friction: f64,
+    /// Node-to-segment pairs on the mesh as given, or node-to-node pairs after sliding the
+    /// slave nodes to the paired points (the paper's discretisation, spec §6).
+    pub pairs: PairDiscretisation,
+}
+
+/// How pairs are discretised.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PairDiscretisation {
+    /// Closest points on the slave's quadratic edges (the mesh is used as given).
+    NodeToSegment,
+    /// The slave contour's nodes are moved along their curve onto the paired points (mesh
+    /// morphing, topology unchanged), so every pair is node-to-node.
+    NodeToNode,
 }
 
 /// The problem plus the master contour (for η and stresses along it).
@@ -77,7 +93,24 @@ impl PlateInsert {
     /// # Errors
     /// Mesh, model or pairing errors.
     pub fn build(&self) -> Result<PlateInsertProblem, ContactError> {
-        let mesh = read_msh(&self.mesh)?;
+        let mut mesh = read_msh(&self.mesh)?;
+        if self.pairs == PairDiscretisation::NodeToNode {
+            // Pair once node-to-segment, slide the slave nodes to the paired points, pair again.
+            let (model, hole, insert) = self.model(mesh.clone())?;
+            let (pairs, slave) = self.pair(&model, &hole, &insert)?;
+            let targets = node_to_node_targets(&pairs, slave)?;
+            move_nodes(&mut mesh, &targets, 2)?;
+        }
+        let (model, hole, insert_edge) = self.model(mesh)?;
+        let (pairs, _) = self.pair(&model, &hole, &insert_edge)?;
+        let mut problem = ContactProblem::new(model, pairs)?;
+        problem.set_gaps(self.gaps(&problem)?)?;
+        problem.set_friction(self.friction)?;
+        Ok(PlateInsertProblem { problem, hole, insert: insert_edge, variant: self.variant, eps: self.eps })
+    }
+
+    /// The model of the two bodies with the boundary conditions of spec §2, and both contours.
+    fn model(&self, mesh: contact2d_mesh::Mesh) -> Result<(Model, Contour, Contour), ContactError> {
         let mut model = Model::new(mesh);
         let plate = Material::new(1.0, self.poissons_ratio, PlaneCondition::Stress).map_err(fem_input)?;
         let insert =
@@ -91,13 +124,20 @@ impl PlateInsert {
         model.fix("insert_inner", Component::X, 0.0)?;
         let hole = Contour::from_group(&model.mesh, "hole_edge")?;
         let insert_edge = Contour::from_group(&model.mesh, "insert_edge")?;
-        let pairs = match self.variant {
-            PairingVariant::HoleMaster => pair_contours(&model, &hole, &insert_edge, "insert")?,
-            PairingVariant::InsertMaster => pair_contours(&model, &insert_edge, &hole, "plate")?,
-        };
-        let mut problem = ContactProblem::new(model, pairs)?;
-        problem.set_gaps(self.gaps(&problem)?)?;
-        Ok(PlateInsertProblem { problem, hole, insert: insert_edge, variant: self.variant, eps: self.eps })
+        Ok((model, hole, insert_edge))
+    }
+
+    /// The pairs of the chosen variant and the slave contour.
+    fn pair<'c>(
+        &self,
+        model: &Model,
+        hole: &'c Contour,
+        insert: &'c Contour,
+    ) -> Result<(Vec<contact2d_contact::ContactPair>, &'c Contour), ContactError> {
+        Ok(match self.variant {
+            PairingVariant::HoleMaster => (pair_contours(model, hole, insert, "insert")?, insert),
+            PairingVariant::InsertMaster => (pair_contours(model, insert, hole, "plate")?, hole),
+        })
     }
 
     /// The gap of every pair under [`PlateInsert::gap_model`], in displacement units.

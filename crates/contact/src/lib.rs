@@ -12,6 +12,7 @@
 pub mod active_set;
 pub mod error;
 pub mod friction;
+pub mod history;
 pub mod interface;
 pub mod pairing;
 pub mod post;
@@ -24,8 +25,9 @@ pub mod tresca_qp;
 pub use active_set::solve_frictionless_active_set;
 pub use error::ContactError;
 pub use friction::solve_frictional_active_set;
+pub use history::{HistoryStep, StepAlgorithm, equal_steps, solve_history};
 pub use interface::Interface;
-pub use pairing::{ContactPair, pair_contours, tributary_weights};
+pub use pairing::{ContactPair, node_to_node_targets, pair_contours, tributary_weights};
 pub use post::{contact_end, contact_end_from_pressure, pair_tractions, stick_end};
 pub use problem::{ContactProblem, PairRow};
 pub use qp::solve_frictionless_qp;

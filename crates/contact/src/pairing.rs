@@ -221,3 +221,27 @@ fn set_gamma(pairs: &mut [ContactPair]) {
         }
     }
 }
+
+/// Where the slave contour's nodes must go for every pair to become node-to-node: the paired
+/// points, in order of their arc length along the slave curve, are given to the slave contour's
+/// nodes in their order (the paper's node sets of pairs). The mesh can then be morphed with
+/// `contact2d_mesh::morph::move_nodes` and pairing repeated.
+///
+/// # Errors
+/// [`ContactError::Pairing`] when the slave contour does not have one node per pair.
+pub fn node_to_node_targets(pairs: &[ContactPair], slave: &Contour) -> Result<Vec<(NodeId, [f64; 2])>, ContactError> {
+    if slave.nodes.len() != pairs.len() {
+        return Err(ContactError::Pairing {
+            master: String::new(),
+            slave: slave.name.clone(),
+            reason: format!(
+                "node-to-node pairs need one slave node per pair: {} slave nodes, {} pairs",
+                slave.nodes.len(),
+                pairs.len()
+            ),
+        });
+    }
+    let mut order: Vec<&ContactPair> = pairs.iter().collect();
+    order.sort_by(|a, b| a.slave_arc_length.total_cmp(&b.slave_arc_length));
+    Ok(slave.nodes.iter().zip(order).map(|(n, pair)| (*n, pair.slave_point)).collect())
+}

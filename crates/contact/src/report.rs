@@ -2,11 +2,11 @@
 //! states, dissipation and KKT residuals — the same evaluation for every algorithm.
 //!
 //! ```text
-//! gap = g0 + B_N u,  s = B_T u,  Δs = s − s_start,  dissipation = Σ −½(τ_start + τ) Δs
+//! gap = g0 + B_N u,  s = B_T u,  Δs = s − s_start,  dissipation = Σ_slipping −½(τ_start + τ) Δs
 //! contact  ⇔ λ/F > max(gap, 0)/U      slip ⇔ |Δs|/U > (μλ − |τ|)/F      (in contact)
 //! ```
-//! `F` and `U` are the problem's force and displacement scales (largest contact or load force,
-//! largest displacement): each complementary pair is decided by its larger normalised member,
+//! `F` and `U` are the problem's force and displacement scales (largest contact, load or
+//! stiffness-times-displacement force; largest gap or displacement): each complementary pair is decided by its larger normalised member,
 //! which is exact for active-set answers and robust for interior-point ones.
 
 use std::time::Duration;
@@ -60,9 +60,8 @@ pub fn finish_from_displacement(
     let slip: Vec<f64> = problem.tangent_rows.iter().map(|row| row.dot(u_free, &prescribed)).collect();
     let slip_increment: Vec<f64> = slip.iter().zip(&start.slip).map(|(s, s0)| s - s0).collect();
     let (lambda, tau) = (&raw.normal_force, &raw.tangential_force);
-    let load_force = problem.pattern_rhs.iter().fold(0.0f64, |a, r| a.max((w * r).abs()));
-    let force_scale = lambda.iter().chain(tau).fold(load_force, |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE);
     let length_scale = gap.iter().chain(&displacement).fold(0.0f64, |a, g| a.max(g.abs())).max(f64::MIN_POSITIVE);
+    let force_scale = force_scale(problem, w, lambda, tau, length_scale);
     let mut state = Vec::with_capacity(gap.len());
     let mut kkt = KktResiduals { min_dissipation: f64::INFINITY, ..KktResiduals::default() };
     let mut dissipation = 0.0;
@@ -70,16 +69,21 @@ pub fn finish_from_displacement(
         let mu = problem.friction[k];
         let in_contact = lambda[k] > 0.0 && lambda[k] / force_scale > gap[k].max(0.0) / length_scale;
         let slack = mu * lambda[k] - tau[k].abs();
+        // A slip at round-off level (1e-12 of the length scale) is none.
+        let normalised_slip = slip_increment[k].abs() / length_scale;
         let slipping =
-            problem.tangential[k] && mu > 0.0 && slip_increment[k].abs() / length_scale > slack / force_scale;
+            problem.tangential[k] && mu > 0.0 && normalised_slip > 1e-12 && normalised_slip > slack / force_scale;
         state.push(match (in_contact, slipping) {
             (false, _) => PairState::Free,
             (true, false) => PairState::Stick,
             (true, true) if slip_increment[k] > 0.0 => PairState::SlipPositive,
             (true, true) => PairState::SlipNegative,
         });
-        let pair_dissipation = -0.5 * (start.tangential_force[k] + tau[k]) * slip_increment[k];
-        dissipation += pair_dissipation;
+        // Friction works only where the pair slips at the end of the step (a pair that opened
+        // moves tangentially without force; a stuck pair does not move).
+        if slipping && in_contact {
+            dissipation += -0.5 * (start.tangential_force[k] + tau[k]) * slip_increment[k];
+        }
         kkt.max_penetration = kkt.max_penetration.max(-gap[k]);
         kkt.max_complementarity = kkt.max_complementarity.max((lambda[k] * gap[k]).abs());
         kkt.max_tension = kkt.max_tension.max(-lambda[k]);
@@ -106,6 +110,18 @@ pub fn finish_from_displacement(
         iterations: raw.iterations,
         time: raw.time,
     }
+}
+
+/// The force scale `F`: the largest of the contact forces, the load's nodal forces, and the
+/// force `k̄ U` that the largest stiffness entry exerts over the displacement scale (so that an
+/// unloaded state's round-off forces are not mistaken for contact).
+pub(crate) fn force_scale(problem: &ContactProblem, w: f64, lambda: &[f64], tau: &[f64], length_scale: f64) -> f64 {
+    let k = problem.system.stiffness.as_ref();
+    let k_max = (0..k.ncols())
+        .flat_map(|j| k.row_idx_of_col(j).zip(k.val_of_col(j)).filter(move |(i, _)| *i == j).map(|(_, v)| v.abs()))
+        .fold(0.0f64, f64::max);
+    let load_force = problem.pattern_rhs.iter().fold(0.0f64, |a, r| a.max((w * r).abs()));
+    lambda.iter().chain(tau).fold(load_force.max(k_max * length_scale), |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE)
 }
 
 /// Reactions of a contact solution: `K u − f` at constrained DOFs, as a fem [`Solution`].

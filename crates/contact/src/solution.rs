@@ -85,8 +85,9 @@ pub struct ContactSolution {
     pub slip: Vec<f64>,
     /// Its increment over the step, `Δs = s − s_start`.
     pub slip_increment: Vec<f64>,
-    /// Energy dissipated by friction in the step: `Σ_k −½(τ_start + τ) Δs` (trapezoid rule; exact
-    /// for forces varying linearly over the step, e.g. proportional loading).
+    /// Energy dissipated by friction in the step: `Σ −½(τ_start + τ) Δs` over the pairs slipping at
+    /// the end of the step (trapezoid rule; exact for forces varying linearly over the step, e.g.
+    /// proportional loading; a pair that opens or sticks does no friction work).
     pub dissipation: f64,
     /// KKT residuals.
     pub kkt: KktResiduals,

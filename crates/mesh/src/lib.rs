@@ -4,6 +4,7 @@ pub mod contour;
 pub mod error;
 pub mod generate;
 pub mod mesh;
+pub mod morph;
 pub mod msh;
 
 pub use contour::{Contour, ContourEdge};

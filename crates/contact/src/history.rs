@@ -1,0 +1,70 @@
+//! Quasi-static loading histories: a sequence of load factors solved step by step, each step
+//! starting from the slips and tangential forces the previous one ended with.
+//!
+//! ```text
+//! for w_1, w_2, ...:  solve the step to w_i from StepStart(s_{i-1}, τ_{i-1});  Φ_f += dissipation_i
+//! ```
+//!
+//! Decreasing loads (unloading) are allowed: the algorithms here do not assume a growing
+//! contact zone.
+
+use crate::friction::solve_frictional_active_set;
+use crate::interface::Interface;
+use crate::problem::ContactProblem;
+use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
+use crate::tresca_qp::solve_frictional_qp;
+
+/// An algorithm that solves one step of a history.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum StepAlgorithm {
+    /// The primal-dual active set on the condensed interface (frictional or not).
+    ActiveSet,
+    /// Clarabel: frictionless QP, or Tresca QPs to the Coulomb fixed point.
+    Clarabel,
+}
+
+/// One solved step with the dissipation accumulated up to it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct HistoryStep {
+    /// The step's solution.
+    pub solution: ContactSolution,
+    /// Φ_f accumulated over the history up to and including this step.
+    pub dissipated: f64,
+}
+
+/// Solves the loads in order from the virgin state. Stops early at the first step that does
+/// not converge (its solution is the last entry, with its status).
+pub fn solve_history(
+    problem: &ContactProblem,
+    interface: &Interface,
+    algorithm: StepAlgorithm,
+    loads: &[f64],
+    max_iterations: usize,
+) -> Vec<HistoryStep> {
+    let mut start = StepStart::initial(problem.num_pairs());
+    let mut guess: Option<Vec<PairState>> = None;
+    let mut dissipated = 0.0;
+    let mut steps = Vec::with_capacity(loads.len());
+    for &w in loads {
+        let solution = match algorithm {
+            StepAlgorithm::ActiveSet => {
+                solve_frictional_active_set(problem, interface, w, &start, guess.as_deref(), max_iterations)
+            }
+            StepAlgorithm::Clarabel => solve_frictional_qp(problem, w, &start, max_iterations),
+        };
+        dissipated += solution.dissipation;
+        start = StepStart::after(&solution);
+        guess = Some(solution.state.clone());
+        let converged = solution.status == ContactStatus::Converged;
+        steps.push(HistoryStep { solution, dissipated });
+        if !converged {
+            break;
+        }
+    }
+    steps
+}
+
+/// `steps` equal increments from 0 to `w`.
+pub fn equal_steps(w: f64, steps: usize) -> Vec<f64> {
+    (1..=steps).map(|i| w * i as f64 / steps as f64).collect()
+}
