@@ -84,18 +84,27 @@ fn run(cli: Cli) -> anyhow::Result<()> {
 fn print_report(r: &contact2d::run::RunReport) {
     let opt = |v: Option<f64>| v.map_or("-".to_string(), |x| format!("{x:.4}"));
     println!(
-        "scene {}  ({} DOFs, {} pairs, {:?}, {} after {} iterations)",
-        r.scene, r.dofs, r.pairs, r.algorithm, r.status, r.iterations
+        "scene {}  ({} DOFs, {} pairs, {:?}, {} after {} iterations in {} step(s))",
+        r.scene,
+        r.dofs,
+        r.pairs,
+        r.algorithm,
+        r.status,
+        r.iterations,
+        r.steps.len()
     );
-    println!("  w      = {}", r.w);
+    println!("  w      = {}   mu = {}", r.w, r.mu);
     println!("  l      = {}   (bracket {:?}, master's own {})", opt(r.l), r.l_bracket, opt(r.l_master));
-    println!("  P      = {:.5}", r.P);
+    println!("  b      = {}   (bracket {:?})", opt(r.b), r.b_bracket);
+    println!("  P      = {:.5}   W = {:.6}", r.P, r.W);
     println!("  Phi_E1 = {:.6}   Phi_E2 = {:.6}   Phi_f = {:.6}", r.Phi_E1, r.Phi_E2, r.Phi_f);
     println!("  sigma* = {:.4}   K = {:.3}", r.sigma_star, r.K);
-    println!("  KKT: penetration {:.1e}, complementarity {:.1e}", r.kkt.max_penetration, r.kkt.max_complementarity);
+    println!(
+        "  KKT: penetration {:.1e}, complementarity {:.1e}, cone {:.1e}, min dissipation {:.1e}",
+        r.kkt.max_penetration, r.kkt.max_complementarity, r.kkt.max_cone_violation, r.kkt.min_dissipation
+    );
     println!("  time {:.3} s (contact solve {:.4} s)", r.time_s, r.solve_time_s);
 }
-
 fn main() -> ExitCode {
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,15 +1,12 @@
-//! Running a scene: build the problem, solve with the chosen algorithm, report the paper's
-//! quantities.
-//!
-//! The no-gap frictionless case is linear in w: it is solved once at w = 1 and scaled (the
-//! displacements and forces; the quantities follow), which is exact for that case.
+//! Running a scene: build the problem, solve with the chosen algorithm over the load history,
+//! report the paper's quantities.
 
 use std::time::Instant;
 
 use serde::Serialize;
 
 use contact2d_contact::{
-    ContactError, ContactSolution, ContactStatus, Interface, solve_frictionless_active_set, solve_frictionless_qp,
+    ContactError, ContactSolution, ContactStatus, Interface, StepAlgorithm, equal_steps, solve_history,
 };
 
 use crate::scene::{ContactAlgorithm, Scene};
@@ -39,8 +36,10 @@ pub struct RunReport {
     pub l_bracket: Option<[f64; 2]>,
     /// Contact end on the master's own coordinate.
     pub l_master: Option<f64>,
-    /// End of the stick zone (equal to l without friction: no slip).
+    /// End of the stick zone (equal to l when nothing slips).
     pub b: Option<f64>,
+    /// The mesh bracket of b.
+    pub b_bracket: Option<[f64; 2]>,
     /// Pulling force.
     pub P: f64,
     /// Strain energy of the plate.
@@ -49,6 +48,9 @@ pub struct RunReport {
     pub Phi_E2: f64,
     /// Dissipated energy.
     pub Phi_f: f64,
+    /// Work of the pulling force, ∫ P dw (trapezoid over the steps; P w / 2 for one
+    /// proportional step).
+    pub W: f64,
     /// Largest hoop stress on the hole edge.
     pub sigma_star: f64,
     /// K = H σ* / P.
@@ -57,6 +59,8 @@ pub struct RunReport {
     pub insert_hoop_max: f64,
     /// Load w.
     pub w: f64,
+    /// Friction coefficient μ.
+    pub mu: f64,
     /// Free DOFs.
     pub dofs: usize,
     /// Contact pairs.
@@ -65,76 +69,128 @@ pub struct RunReport {
     pub algorithm: ContactAlgorithm,
     /// Outcome.
     pub status: String,
-    /// Iterations of the algorithm.
+    /// Iterations of the algorithm, summed over the steps.
     pub iterations: usize,
-    /// KKT residuals.
+    /// KKT residuals (of the last step; the dissipation minimum over all steps).
     pub kkt: KktReport,
+    /// The load history, one entry per step.
+    pub steps: Vec<StepReport>,
     /// Wall time of the whole run (mesh reading to quantities), seconds.
     pub time_s: f64,
     /// Wall time of the contact algorithm alone, seconds.
     pub solve_time_s: f64,
 }
 
+/// One step of a history in the JSON output.
+#[allow(non_snake_case)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StepReport {
+    /// Load w at the end of the step.
+    pub w: f64,
+    /// Contact end.
+    pub l: Option<f64>,
+    /// Stick end.
+    pub b: Option<f64>,
+    /// Pulling force.
+    pub P: f64,
+    /// Plate strain energy.
+    pub Phi_E1: f64,
+    /// Insert strain energy.
+    pub Phi_E2: f64,
+    /// Dissipation accumulated up to this step.
+    pub Phi_f: f64,
+    /// Work of the pulling force accumulated up to this step (trapezoid in w).
+    pub W: f64,
+}
+
 /// Runs a scene.
 ///
+/// Without gap the solution is linear in w, with or without friction (spec §5.2: the zones form
+/// at the first instant and never change): it is solved once at w = 1 and scaled. Otherwise the
+/// load goes up in `steps` equal steps with the chosen algorithm, the slips carried over.
+///
 /// # Errors
-/// Problem set-up failures; an unsupported combination (friction before its algorithm lands)
-/// is [`ContactError::InvalidInput`].
+/// Problem set-up failures.
 pub fn run_scene(scene: &Scene) -> Result<RunReport, ContactError> {
     let start = Instant::now();
     let p = &scene.plate_insert;
-    if p.friction != 0.0 {
-        return Err(ContactError::InvalidInput(format!(
-            "friction = {} requested: frictional contact is not available yet in this version",
-            p.friction
-        )));
-    }
     if !p.load.is_finite() || p.load < 0.0 {
         return Err(ContactError::InvalidInput(format!("load w = {} must be finite and non-negative", p.load)));
     }
+    if p.steps == 0 {
+        return Err(ContactError::InvalidInput("steps must be at least 1".into()));
+    }
     let case = scene.plate_insert().build()?;
     let problem = &case.problem;
-    // Linear in w without gap and friction: solve at w = 1 and scale.
-    let scaled = problem.is_gapless();
-    let w_solve = if scaled { 1.0 } else { p.load };
-    let mut solution = match scene.solver.algorithm {
-        ContactAlgorithm::ActiveSet => {
-            let interface = Interface::new(problem);
-            solve_frictionless_active_set(problem, &interface, w_solve, scene.solver.max_iterations)
-        }
-        ContactAlgorithm::Clarabel => solve_frictionless_qp(problem, w_solve),
+    let interface = Interface::new(problem);
+    let algorithm = match scene.solver.algorithm {
+        ContactAlgorithm::ActiveSet => StepAlgorithm::ActiveSet,
+        ContactAlgorithm::Clarabel => StepAlgorithm::Clarabel,
     };
+    let scaled = problem.is_gapless();
+    let loads = if scaled { vec![1.0] } else { equal_steps(p.load, p.steps) };
+    let mut history = solve_history(problem, &interface, algorithm, &loads, scene.solver.max_iterations);
     if scaled {
-        scale_solution(&mut solution, p.load);
+        for step in &mut history {
+            scale_solution(&mut step.solution, p.load);
+            step.dissipated *= p.load * p.load;
+        }
     }
-    let q = case.results(&solution)?;
+    let mut steps = Vec::with_capacity(history.len());
+    let (mut work, mut last_w, mut last_p) = (0.0, 0.0, 0.0);
+    for step in &history {
+        let q = case.results(&step.solution)?;
+        let w = step.solution.load_factor;
+        work += 0.5 * (last_p + q.pull) * (w - last_w);
+        (last_w, last_p) = (w, q.pull);
+        steps.push((
+            StepReport {
+                w,
+                l: q.contact_end,
+                b: q.stick_end,
+                P: q.pull,
+                Phi_E1: q.energy_plate,
+                Phi_E2: q.energy_insert,
+                Phi_f: step.dissipated,
+                W: work,
+            },
+            q,
+        ));
+    }
+    let last = history.last().ok_or_else(|| ContactError::InvalidInput("no load step".into()))?;
+    let solution = &last.solution;
+    let (final_step, q) = steps.last().cloned().ok_or_else(|| ContactError::InvalidInput("no load step".into()))?;
     Ok(RunReport {
         scene: scene.name.clone(),
         l: q.contact_end,
         l_bracket: q.contact_bracket,
         l_master: q.contact_end_master,
-        b: q.contact_end,
+        b: q.stick_end,
+        b_bracket: q.stick_bracket,
         P: q.pull,
         Phi_E1: q.energy_plate,
         Phi_E2: q.energy_insert,
-        Phi_f: 0.0,
+        Phi_f: final_step.Phi_f,
+        W: final_step.W,
         sigma_star: q.sigma_star,
         K: q.stress_concentration,
         insert_hoop_max: q.insert_hoop_max,
         w: p.load,
+        mu: p.friction,
         dofs: problem.system.dofs.num_free(),
         pairs: problem.num_pairs(),
         algorithm: scene.solver.algorithm,
         status: status_name(solution.status).into(),
-        iterations: solution.iterations,
+        iterations: history.iter().map(|s| s.solution.iterations).sum(),
         kkt: KktReport {
             max_penetration: solution.kkt.max_penetration,
             max_complementarity: solution.kkt.max_complementarity,
             max_cone_violation: solution.kkt.max_cone_violation,
-            min_dissipation: solution.kkt.min_dissipation,
+            min_dissipation: history.iter().map(|s| s.solution.kkt.min_dissipation).fold(f64::INFINITY, f64::min),
         },
+        steps: steps.into_iter().map(|(s, _)| s).collect(),
         time_s: start.elapsed().as_secs_f64(),
-        solve_time_s: solution.time.as_secs_f64(),
+        solve_time_s: history.iter().map(|s| s.solution.time.as_secs_f64()).sum(),
     })
 }
 
@@ -147,12 +203,22 @@ fn status_name(status: ContactStatus) -> &'static str {
     }
 }
 
-/// Scales a solution of a problem that is linear in the load (no gap, no friction).
+/// Scales a solution of a problem that is linear in the load (no gap): forces, displacements,
+/// slips linearly, the dissipation quadratically.
 fn scale_solution(s: &mut ContactSolution, w: f64) {
     s.load_factor = w;
-    for v in s.displacement.iter_mut().chain(&mut s.normal_force).chain(&mut s.tangential_force).chain(&mut s.gap) {
+    for v in s
+        .displacement
+        .iter_mut()
+        .chain(&mut s.normal_force)
+        .chain(&mut s.tangential_force)
+        .chain(&mut s.gap)
+        .chain(&mut s.slip)
+        .chain(&mut s.slip_increment)
+    {
         *v *= w;
     }
+    s.dissipation *= w * w;
     s.kkt.max_penetration *= w;
     s.kkt.max_complementarity *= w * w;
     s.kkt.max_tension *= w;

@@ -11,9 +11,10 @@
 //! poissons_ratio = 0.3
 //! eps = 0.0                     # geometric clearance of the mesh (insert radius 1 - eps)
 //! clearance = 0.0               # c, the clearance in displacement units
-//! gap = "paper"                 # or "geometric"
+//! gap = "paper"                 # default "geometric"; "paper" is the stricter u_ρc / u_rc
 //! friction = 0.0                # μ
 //! load = 1.0                    # w, the pulled-edge displacement
+//! steps = 1                     # equal load steps from 0 to w (a history for friction)
 //! pairs = "node_to_node"        # or "node_to_segment" (the mesh as given)
 //!
 //! [solver]
@@ -105,14 +106,17 @@ pub struct PlateInsertSection {
     /// c in displacement units.
     #[serde(default)]
     pub clearance: f64,
-    /// `paper` or `geometric`.
-    #[serde(default = "paper")]
+    /// `geometric` (default) or `paper`.
+    #[serde(default = "geometric")]
     pub gap: GapKey,
     /// μ.
     #[serde(default)]
     pub friction: f64,
     /// w.
     pub load: f64,
+    /// Equal load steps from 0 to w (the history; 1 = one step).
+    #[serde(default = "one_step")]
+    pub steps: usize,
     /// `node_to_node` (slave nodes slid onto the paired points, the paper's pairs) or
     /// `node_to_segment` (the mesh as given).
     #[serde(default = "node_to_node")]
@@ -133,14 +137,17 @@ pub enum PairsKey {
     NodeToSegment,
 }
 
+fn one_step() -> usize {
+    1
+}
 fn one() -> f64 {
     1.0
 }
 fn nu() -> f64 {
     0.3
 }
-fn paper() -> GapKey {
-    GapKey::Paper
+fn geometric() -> GapKey {
+    GapKey::Geometric
 }
 
 /// Scene spelling of [`PairingVariant`].
