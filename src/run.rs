@@ -200,6 +200,7 @@ fn status_name(status: ContactStatus) -> &'static str {
         ContactStatus::MaxIterations => "max_iterations",
         ContactStatus::Infeasible => "infeasible",
         ContactStatus::Numerical => "numerical",
+        ContactStatus::Inadmissible => "inadmissible",
     }
 }
 

@@ -61,7 +61,10 @@ pub fn solve_frictional_active_set(
         };
         (lambda, tau) = (l, t);
         let next = update_state(problem, interface, w, start, &lambda, &tau, c_n, c_t, frictional);
-        if next == state {
+        // Converged when the state repeats, or when the iterate already satisfies every
+        // condition to round-off (a degenerate pair — λ = gap = 0 or |τ| = μλ with Δs = 0 —
+        // may otherwise flip forever on round-off).
+        if next == state || admissible(problem, interface, w, start, &state, &lambda, &tau, frictional) {
             status = ContactStatus::Converged;
             break;
         }
@@ -197,4 +200,33 @@ fn update_state(
             }
         })
         .collect()
+}
+
+/// Whether the solution of `state` satisfies all contact and friction conditions to round-off
+/// (1e-10 of the force and length scales).
+#[allow(clippy::too_many_arguments)]
+fn admissible(
+    problem: &ContactProblem,
+    interface: &Interface,
+    w: f64,
+    start: &StepStart,
+    state: &[PairState],
+    lambda: &[f64],
+    tau: &[f64],
+    frictional: bool,
+) -> bool {
+    let (gap, s) = interface_values(interface, w, &problem.gap, lambda, tau, frictional);
+    let force = lambda.iter().chain(tau).fold(0.0f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
+    let length = gap.iter().fold(0.0f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
+    let (tf, tg) = (1e-10 * force, 1e-10 * length);
+    (0..lambda.len()).all(|k| {
+        let ds = s[k] - start.slip[k];
+        let mu_lambda = problem.friction[k] * lambda[k];
+        match state[k] {
+            PairState::Free => gap[k] >= -tg,
+            PairState::Stick => lambda[k] >= -tf && tau[k].abs() <= mu_lambda + tf,
+            PairState::SlipPositive => lambda[k] >= -tf && ds >= -tg,
+            PairState::SlipNegative => lambda[k] >= -tf && ds <= tg,
+        }
+    })
 }

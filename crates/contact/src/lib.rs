@@ -10,6 +10,7 @@
 //! master node's tributary length, so `p < 0` in contact.
 
 pub mod active_set;
+pub mod boussinesq;
 pub mod error;
 pub mod friction;
 pub mod history;
@@ -23,6 +24,7 @@ pub mod solution;
 pub mod tresca_qp;
 
 pub use active_set::solve_frictionless_active_set;
+pub use boussinesq::{BoussinesqLoading, BoussinesqStep, Violation, Zones, solve_boussinesq_step};
 pub use error::ContactError;
 pub use friction::solve_frictional_active_set;
 pub use history::{HistoryStep, StepAlgorithm, equal_steps, solve_history};

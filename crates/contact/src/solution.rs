@@ -26,6 +26,9 @@ pub enum ContactStatus {
     Infeasible,
     /// A numerical failure (singular interface matrix, solver breakdown).
     Numerical,
+    /// The algorithm's assumed structure gave a solution that violates an inequality of the
+    /// contact conditions (the offending pairs are reported by the algorithm).
+    Inadmissible,
 }
 
 /// Residuals of the discrete KKT conditions, in force and length units of the problem.

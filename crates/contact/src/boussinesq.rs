@@ -1,0 +1,280 @@
+//! The paired-node Boussinesq algorithm of Solodovnikov (1998), section 6, on the condensed
+//! interface.
+//!
+//! ```text
+//! pairs ordered by η from the bearing point; zones: stick [0, b), slip [b, l], free beyond l
+//! problem A (6.1) for given zones:
+//!   stick:  gap = 0,  Δs = 0  (v − vh = v_s_τ)          slip: gap = 0,  τ = σ μ λ  (f = 0)
+//!   free:   λ = τ = 0
+//! A = w A1 + A2: A1 carries the load (w = 1, no gap, no history), A2 the gaps and the history
+//! (w = 0); both share one matrix (nonsymmetric through the slip rows), factored once per zone
+//! configuration (dense LU of the condensed equations: the bodies' Cholesky factors did the
+//! sparse work) and solved with two right-hand sides.
+//! Boussinesq condition: λ = 0 at the last contact pair l*  ⇒  w = −λ2(l*)/λ1(l*)   (with gap);
+//! without gap w is given and l* is the last pair that keeps λ ≥ 0.
+//! b iteration: start with everything stuck; the first stuck pair outside the cone starts the
+//! slip zone, with σ from the sign of its excess; repeat until b repeats.
+//! Finally every inequality of (5.1) is checked: λ > 0 inside the contact zone, |τ| ≤ μλ on
+//! stick, −τΔs ≥ 0 on slip, gap ≥ 0 on the free zone; violations are reported, never hidden.
+//! ```
+//!
+//! Zone ends fall on pairs (nodes): the mesh resolves l and b to its node spacing unless the
+//! nodes are placed at l* and b* (mesh morphing); see docs/algorithms.md.
+//!
+//! # References
+//! V. N. Solodovnikov (1998), Solution of a contact problem for a plate with a deformable insert,
+//! section 6 (problems A, A1, A2 and the Boussinesq principle).
+
+use std::time::Instant;
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::interface::Interface;
+use crate::problem::ContactProblem;
+use crate::report::{RawSolution, finish_from_forces};
+use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
+
+/// How a Boussinesq step is loaded.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum BoussinesqLoading {
+    /// The contact zone ends at the pair `order[index]` (the paper's steps in l); w follows from
+    /// the Boussinesq condition. Needs a gap or a history (else w is undetermined).
+    ContactEnd(usize),
+    /// The load w is given and l* is searched (the no-gap case).
+    Load(f64),
+}
+
+/// The zones found by the algorithm, as positions in `order`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Zones {
+    /// Number of stuck pairs: `order[..stick]`.
+    pub stick: usize,
+    /// Position of the last contact pair l*.
+    pub contact_end: usize,
+    /// The slip state of the slip zone (if any).
+    pub slip: Option<PairState>,
+}
+
+/// A violated inequality of (5.1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Violation {
+    /// The pair.
+    pub pair: usize,
+    /// Which condition.
+    pub condition: &'static str,
+}
+
+/// The outcome of a Boussinesq step.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BoussinesqStep {
+    /// The solution (status [`ContactStatus::Inadmissible`] if any inequality fails).
+    pub solution: ContactSolution,
+    /// The zones.
+    pub zones: Zones,
+    /// Violated inequalities (empty when admissible).
+    pub violations: Vec<Violation>,
+}
+
+/// One Boussinesq step from `start` with the pairs in `order` (by η from the bearing point).
+pub fn solve_boussinesq_step(
+    problem: &ContactProblem,
+    interface: &Interface,
+    order: &[usize],
+    loading: BoussinesqLoading,
+    start: &StepStart,
+    max_iterations: usize,
+) -> BoussinesqStep {
+    let clock = Instant::now();
+    let m = problem.num_pairs();
+    let frictional = interface.c_tt.nrows() == m && problem.is_frictional();
+    let mut zones = match loading {
+        BoussinesqLoading::ContactEnd(i) => Zones { stick: i + 1, contact_end: i, slip: None },
+        BoussinesqLoading::Load(_) => Zones { stick: m, contact_end: m.saturating_sub(1), slip: None },
+    };
+    let mut iterations = 0;
+    let mut answer = None;
+    for it in 1..=max_iterations.max(1) {
+        iterations = it;
+        let Some((w, lambda, tau)) = solve_zones(problem, interface, order, zones, loading, start, frictional) else {
+            break;
+        };
+        // Without gap: shorten the contact zone while its last pair pulls (λ < 0).
+        if let BoussinesqLoading::Load(_) = loading {
+            let last = order[zones.contact_end];
+            if lambda[last] < 0.0 && zones.contact_end > 0 {
+                zones.contact_end -= 1;
+                zones.stick = zones.stick.min(zones.contact_end + 1);
+                continue;
+            }
+        }
+        let next = next_stick_end(problem, order, zones, &lambda, &tau, frictional);
+        answer = Some((w, lambda, tau));
+        match next {
+            Some(z) if z != zones => zones = z,
+            _ => break,
+        }
+    }
+    let Some((w, lambda, tau)) = answer else {
+        let raw = RawSolution {
+            load_factor: 0.0,
+            normal_force: vec![0.0; m],
+            tangential_force: vec![0.0; m],
+            status: ContactStatus::Numerical,
+            iterations,
+            time: clock.elapsed(),
+        };
+        return BoussinesqStep {
+            solution: finish_from_forces(problem, interface, raw, start),
+            zones,
+            violations: vec![],
+        };
+    };
+    let (mut lambda, mut tau) = (lambda, tau);
+    if let BoussinesqLoading::ContactEnd(_) = loading {
+        // The Boussinesq condition: the last contact pair carries exactly no force.
+        let last = order[zones.contact_end];
+        (lambda[last], tau[last]) = (0.0, 0.0);
+    }
+    let raw = RawSolution {
+        load_factor: w,
+        normal_force: lambda,
+        tangential_force: tau,
+        status: ContactStatus::Converged,
+        iterations,
+        time: clock.elapsed(),
+    };
+    let mut solution = finish_from_forces(problem, interface, raw, start);
+    let violations = check_inequalities(problem, order, zones, &solution);
+    if !violations.is_empty() {
+        solution.status = ContactStatus::Inadmissible;
+    }
+    BoussinesqStep { solution, zones, violations }
+}
+
+/// Solves problem A for given zones: `(w, λ, τ)`.
+fn solve_zones(
+    problem: &ContactProblem,
+    interface: &Interface,
+    order: &[usize],
+    zones: Zones,
+    loading: BoussinesqLoading,
+    start: &StepStart,
+    frictional: bool,
+) -> Option<(f64, Vec<f64>, Vec<f64>)> {
+    let m = problem.num_pairs();
+    let mut a = DMatrix::<f64>::zeros(2 * m, 2 * m);
+    // Column 0: A1 (unit load), column 1: A2 (gaps and history).
+    let mut b = DMatrix::<f64>::zeros(2 * m, 2);
+    let mut role = vec![PairState::Free; m];
+    for (pos, &k) in order.iter().enumerate() {
+        if pos > zones.contact_end {
+            break;
+        }
+        role[k] = if pos < zones.stick { PairState::Stick } else { zones.slip.unwrap_or(PairState::Stick) };
+    }
+    for k in 0..m {
+        let (rn, rt) = (k, m + k);
+        if role[k] == PairState::Free {
+            a[(rn, k)] = 1.0;
+            a[(rt, m + k)] = 1.0;
+            continue;
+        }
+        for j in 0..m {
+            a[(rn, j)] = interface.c_nn[(k, j)];
+            if frictional {
+                a[(rn, m + j)] = interface.c_nt[(k, j)];
+            }
+        }
+        b[(rn, 0)] = -interface.h_normal[k];
+        b[(rn, 1)] = -problem.gap[k];
+        let mu = problem.friction[k];
+        if !frictional || !problem.tangential[k] || mu == 0.0 {
+            a[(rt, m + k)] = 1.0;
+            continue;
+        }
+        match role[k] {
+            PairState::Stick => {
+                for j in 0..m {
+                    a[(rt, j)] = interface.c_tn[(k, j)];
+                    a[(rt, m + j)] = interface.c_tt[(k, j)];
+                }
+                b[(rt, 0)] = -interface.h_tangent[k];
+                b[(rt, 1)] = start.slip[k];
+            }
+            PairState::SlipPositive => {
+                a[(rt, m + k)] = 1.0;
+                a[(rt, k)] = mu;
+            }
+            PairState::SlipNegative => {
+                a[(rt, m + k)] = 1.0;
+                a[(rt, k)] = -mu;
+            }
+            PairState::Free => {}
+        }
+    }
+    let x = a.lu().solve(&b)?;
+    let w = match loading {
+        BoussinesqLoading::Load(w) => w,
+        BoussinesqLoading::ContactEnd(_) => {
+            let last = order[zones.contact_end];
+            let (l1, l2) = (x[(last, 0)], x[(last, 1)]);
+            if l1.abs() <= f64::EPSILON * l2.abs().max(1e-300) {
+                return None;
+            }
+            -l2 / l1
+        }
+    };
+    let combined = DVector::from_fn(2 * m, |i, _| w * x[(i, 0)] + x[(i, 1)]);
+    if combined.iter().any(|v| !v.is_finite()) {
+        return None;
+    }
+    Some((w, combined.rows(0, m).iter().copied().collect(), combined.rows(m, m).iter().copied().collect()))
+}
+
+/// The b iteration: the first stuck pair outside the cone starts the slip zone.
+fn next_stick_end(
+    problem: &ContactProblem,
+    order: &[usize],
+    zones: Zones,
+    lambda: &[f64],
+    tau: &[f64],
+    frictional: bool,
+) -> Option<Zones> {
+    if !frictional {
+        return None;
+    }
+    for (pos, &k) in order.iter().enumerate().take(zones.stick.min(zones.contact_end + 1)) {
+        let mu = problem.friction[k];
+        if problem.tangential[k] && tau[k].abs() > mu * lambda[k].max(0.0) * (1.0 + 1e-12) {
+            // τ > μλ: the force needed to stick exceeds the cone; slip with τ = +μλ (Δs < 0).
+            let slip = if tau[k] > 0.0 { PairState::SlipNegative } else { PairState::SlipPositive };
+            return Some(Zones { stick: pos, contact_end: zones.contact_end, slip: Some(slip) });
+        }
+    }
+    None
+}
+
+/// The inequalities of (5.1) on the zones found.
+fn check_inequalities(problem: &ContactProblem, order: &[usize], zones: Zones, s: &ContactSolution) -> Vec<Violation> {
+    let lambda_scale = s.normal_force.iter().fold(0.0f64, |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE);
+    let gap_scale = s.displacement.iter().fold(0.0f64, |a, u| a.max(u.abs())).max(f64::MIN_POSITIVE);
+    let tol = 1e-9;
+    let mut v = vec![];
+    for (pos, &k) in order.iter().enumerate() {
+        let (l, t) = (s.normal_force[k], s.tangential_force[k]);
+        if pos < zones.contact_end {
+            if l <= -tol * lambda_scale {
+                v.push(Violation { pair: k, condition: "p < 0 in the contact zone" });
+            }
+            if pos < zones.stick && t.abs() > problem.friction[k] * l + tol * lambda_scale && problem.tangential[k] {
+                v.push(Violation { pair: k, condition: "|q| <= mu|p| on the stick zone" });
+            }
+            if pos >= zones.stick && -t * s.slip_increment[k] < -tol * lambda_scale * gap_scale {
+                v.push(Violation { pair: k, condition: "Q >= 0 on the slip zone" });
+            }
+        } else if pos > zones.contact_end && s.gap[k] < -tol * gap_scale {
+            v.push(Violation { pair: k, condition: "no penetration on the free zone" });
+        }
+    }
+    v
+}
