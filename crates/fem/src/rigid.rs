@@ -58,46 +58,46 @@ fn constraint_rank(model: &Model, dofs: &DofMap, nodes: &[usize]) -> usize {
     eig.iter().filter(|&&e| e > 1e-10 * largest && e > 1e-14).count()
 }
 
-/// Connected pieces of a body (nodes linked by sharing a cell), by union-find.
+/// Connected pieces of a body (nodes linked by sharing a cell), by union-find over a dense
+/// parent array (union by size, path halving): linear in the mesh size.
 fn connected_pieces(body: &crate::model::Body) -> Vec<Vec<usize>> {
-    use std::collections::HashMap;
-    let mut parent: HashMap<usize, usize> = HashMap::new();
-    fn find(parent: &mut HashMap<usize, usize>, x: usize) -> usize {
-        let mut r = x;
-        while let Some(&p) = parent.get(&r) {
-            if p == r {
-                break;
-            }
-            r = p;
+    let n = body.nodes.iter().map(|v| v.0 + 1).max().unwrap_or(0);
+    let mut parent: Vec<usize> = (0..n).collect();
+    let mut size = vec![1usize; n];
+    let find = |parent: &mut Vec<usize>, mut x: usize| {
+        while parent[x] != x {
+            parent[x] = parent[parent[x]];
+            x = parent[x];
         }
-        parent.insert(x, r);
-        r
-    }
+        x
+    };
     for i in 0..body.num_cells() {
         let nodes = body.cell_nodes(i);
         let first = nodes[0].0;
-        parent.entry(first).or_insert(first);
-        for n in nodes {
-            parent.entry(n.0).or_insert(n.0);
-            let (a, b) = (find(&mut parent, first), find(&mut parent, n.0));
+        for v in &nodes[1..] {
+            let (mut a, mut b) = (find(&mut parent, first), find(&mut parent, v.0));
             if a != b {
-                parent.insert(a, b);
+                if size[a] < size[b] {
+                    std::mem::swap(&mut a, &mut b);
+                }
+                parent[b] = a;
+                size[a] += size[b];
             }
         }
     }
-    let keys: Vec<usize> = parent.keys().copied().collect();
-    let mut pieces: HashMap<usize, Vec<usize>> = HashMap::new();
-    for k in keys {
-        let r = find(&mut parent, k);
-        pieces.entry(r).or_default().push(k);
+    let mut in_body = vec![false; n];
+    for v in &body.nodes {
+        in_body[v.0] = true;
     }
-    let mut out: Vec<Vec<usize>> = pieces
-        .into_values()
-        .map(|mut v| {
-            v.sort_unstable();
-            v
-        })
-        .collect();
-    out.sort();
-    out
+    let mut piece_of_root: std::collections::HashMap<usize, usize> = std::collections::HashMap::new();
+    let mut pieces: Vec<Vec<usize>> = vec![];
+    for node in (0..n).filter(|&v| in_body[v]) {
+        let root = find(&mut parent, node);
+        let index = *piece_of_root.entry(root).or_insert_with(|| {
+            pieces.push(vec![]);
+            pieces.len() - 1
+        });
+        pieces[index].push(node);
+    }
+    pieces
 }

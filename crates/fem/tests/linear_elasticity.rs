@@ -113,3 +113,25 @@ fn edge_traction_scales_with_the_body_thickness() {
         assert!((sol.node_displacement(3)[0] - 1.0).abs() < 1e-12, "thickness {thickness}");
     }
 }
+
+/// A body made of two disconnected pieces, only one of them supported: the other piece is
+/// reported (union-find over the cells finds the pieces).
+#[test]
+fn an_unsupported_piece_of_a_body_is_reported() {
+    let mut mesh = rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 2, 2);
+    let other = rectangle(CellKind::Quad4, [3.0, 4.0], [0.0, 1.0], 2, 2);
+    contact2d_mesh::generate::append_prefixed(&mut mesh, &other, "b_");
+    // Put the second piece's cells into the first region.
+    let domain_tag = mesh.groups.iter().find(|g| g.name == "domain").unwrap().tag;
+    for b in mesh.blocks.iter_mut().filter(|b| b.kind == CellKind::Quad4) {
+        b.physical_tags = vec![domain_tag];
+    }
+    let mut model = Model::new(mesh);
+    model.add_body("domain", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
+    model.fix("left", Component::X, 0.0).unwrap();
+    model.fix("left", Component::Y, 0.0).unwrap();
+    match solve_linear(&model) {
+        Err(FemError::UnconstrainedBody { free_modes: 3, .. }) => {}
+        other => panic!("expected the free piece to be reported, got {other:?}"),
+    }
+}
