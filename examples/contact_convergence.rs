@@ -75,6 +75,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     case.eps
                 ),
                 stiffness_ratio: 1.0,
+                rigid_insert: false,
                 poissons_ratio: 0.3,
                 variant: case.variant,
                 eps,

@@ -34,6 +34,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let case = PlateInsert {
                 mesh: format!("{}/meshes/plate_insert/plate_insert_eps0.05_N{n}.msh", env!("CARGO_MANIFEST_DIR")),
                 stiffness_ratio: 1.0,
+                rigid_insert: false,
                 poissons_ratio: 0.3,
                 variant,
                 eps: 0.05,

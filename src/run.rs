@@ -55,8 +55,8 @@ pub struct RunReport {
     pub sigma_star: f64,
     /// K = H σ* / P.
     pub K: f64,
-    /// Largest hoop stress of the insert on its edge.
-    pub insert_hoop_max: f64,
+    /// Largest hoop stress of the insert on its edge (`None` for a rigid insert).
+    pub insert_hoop_max: Option<f64>,
     /// Load w.
     pub w: f64,
     /// Friction coefficient μ.

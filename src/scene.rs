@@ -8,6 +8,7 @@
 //! mesh = "meshes/plate_insert/plate_insert_eps0_N64.msh"  # relative to the scene file
 //! variant = "hole_master"       # or "insert_master" (the paper's variants 1 and 2)
 //! stiffness_ratio = 1.0         # E2 / E1
+//! rigid_insert = false          # true: the insert is a rigid, fixed contour
 //! poissons_ratio = 0.3
 //! eps = 0.0                     # geometric clearance of the mesh (insert radius 1 - eps)
 //! clearance = 0.0               # c, the clearance in displacement units
@@ -97,6 +98,9 @@ pub struct PlateInsertSection {
     /// E2 / E1.
     #[serde(default = "one")]
     pub stiffness_ratio: f64,
+    /// A rigid, fixed insert contour instead of an elastic insert.
+    #[serde(default)]
+    pub rigid_insert: bool,
     /// ν of both bodies.
     #[serde(default = "nu")]
     pub poissons_ratio: f64,
@@ -214,6 +218,7 @@ impl Scene {
         PlateInsert {
             mesh: self.base_dir.join(&p.mesh).display().to_string(),
             stiffness_ratio: p.stiffness_ratio,
+            rigid_insert: p.rigid_insert,
             poissons_ratio: p.poissons_ratio,
             variant: match p.variant {
                 VariantKey::HoleMaster => PairingVariant::HoleMaster,

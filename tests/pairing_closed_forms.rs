@@ -21,6 +21,7 @@ fn build(variant: PairingVariant, gap_model: GapModel) -> contact2d::plate_inser
     PlateInsert {
         mesh: "meshes/plate_insert/plate_insert_eps0.05_N32.msh".into(),
         stiffness_ratio: 1.0,
+        rigid_insert: false,
         poissons_ratio: 0.3,
         variant,
         eps: EPS,
@@ -103,6 +104,7 @@ fn neat_fit_pairs_are_node_to_node_with_zero_gap() {
     let case = PlateInsert {
         mesh: "meshes/plate_insert/plate_insert_eps0_N16.msh".into(),
         stiffness_ratio: 1.0,
+        rigid_insert: false,
         poissons_ratio: 0.3,
         variant: PairingVariant::HoleMaster,
         eps: 0.0,

@@ -34,6 +34,7 @@ fn case(eps: f64, clearance: f64) -> PlateInsertProblem {
     PlateInsert {
         mesh: format!("meshes/plate_insert/plate_insert_eps{}_N32.msh", if eps > 0.0 { "0.05" } else { "0" }),
         stiffness_ratio: 1.0,
+        rigid_insert: false,
         poissons_ratio: 0.3,
         variant: PairingVariant::HoleMaster,
         eps,

@@ -70,6 +70,7 @@ fn case(variant: PairingVariant, n: usize) -> PlateInsertProblem {
     PlateInsert {
         mesh: format!("meshes/plate_insert/plate_insert_eps0.05_N{n}.msh"),
         stiffness_ratio: 1.0,
+        rigid_insert: false,
         poissons_ratio: 0.3,
         variant,
         eps: 0.05,

@@ -30,6 +30,7 @@ fn case(n: usize) -> PlateInsertProblem {
     PlateInsert {
         mesh: format!("meshes/plate_insert/plate_insert_eps0.05_N{n}.msh"),
         stiffness_ratio: 1.0,
+        rigid_insert: false,
         poissons_ratio: 0.3,
         variant: PairingVariant::InsertMaster,
         eps: 0.05,

@@ -34,6 +34,7 @@ fn case(n: usize) -> PlateInsertProblem {
     let case = PlateInsert {
         mesh: format!("meshes/plate_insert/plate_insert_eps0_N{n}.msh"),
         stiffness_ratio: 1.0,
+        rigid_insert: false,
         poissons_ratio: 0.3,
         variant: PairingVariant::HoleMaster,
         eps: 0.0,

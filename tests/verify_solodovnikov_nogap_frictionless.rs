@@ -36,6 +36,7 @@ fn check_level(n: usize) {
     let case = PlateInsert {
         mesh: format!("meshes/plate_insert/plate_insert_eps0_N{n}.msh"),
         stiffness_ratio: 1.0,
+        rigid_insert: false,
         poissons_ratio: 0.3,
         variant: PairingVariant::HoleMaster,
         eps: 0.0,
@@ -92,6 +93,7 @@ fn no_gap_frictionless_solution_scales_linearly_with_the_load() {
     let case = PlateInsert {
         mesh: "meshes/plate_insert/plate_insert_eps0_N16.msh".into(),
         stiffness_ratio: 1.0,
+        rigid_insert: false,
         poissons_ratio: 0.3,
         variant: PairingVariant::HoleMaster,
         eps: 0.0,

@@ -43,8 +43,10 @@ pub enum GapModel {
 pub struct PlateInsert {
     /// Path of the .msh file.
     pub mesh: String,
-    /// E2 / E1.
+    /// E2 / E1 (ignored for a rigid insert).
     pub stiffness_ratio: f64,
+    /// The insert as a rigid, fixed contour instead of an elastic body (the [pin] limit).
+    pub rigid_insert: bool,
     /// ν1 and ν2.
     pub poissons_ratio: f64,
     /// Pairing variant.
@@ -103,7 +105,11 @@ impl PlateInsert {
         }
         let (model, hole, insert_edge) = self.model(mesh)?;
         let (pairs, _) = self.pair(&model, &hole, &insert_edge)?;
-        let mut problem = ContactProblem::new(model, pairs)?;
+        let mut problem = if self.rigid_insert {
+            ContactProblem::with_rigid_slave(model, pairs)?
+        } else {
+            ContactProblem::new(model, pairs)?
+        };
         problem.set_gaps(self.gaps(&problem)?)?;
         problem.set_friction(self.friction)?;
         Ok(PlateInsertProblem { problem, hole, insert: insert_edge, variant: self.variant, eps: self.eps })
@@ -116,12 +122,16 @@ impl PlateInsert {
         let insert =
             Material::new(self.stiffness_ratio, self.poissons_ratio, PlaneCondition::Stress).map_err(fem_input)?;
         model.add_body("plate", plate, 1.0)?;
-        model.add_body("insert", insert, 1.0)?;
-        for group in ["top", "bottom_plate", "right", "insert_inner", "insert_symmetry"] {
+        for group in ["top", "bottom_plate", "right"] {
             model.fix(group, Component::Y, 0.0)?;
         }
         model.fix("right", Component::X, 1.0)?;
-        model.fix("insert_inner", Component::X, 0.0)?;
+        if !self.rigid_insert {
+            model.add_body("insert", insert, 1.0)?;
+            model.fix("insert_inner", Component::X, 0.0)?;
+            model.fix("insert_inner", Component::Y, 0.0)?;
+            model.fix("insert_symmetry", Component::Y, 0.0)?;
+        }
         let hole = Contour::from_group(&model.mesh, "hole_edge")?;
         let insert_edge = Contour::from_group(&model.mesh, "insert_edge")?;
         Ok((model, hole, insert_edge))

@@ -2,7 +2,7 @@
 //!
 //! ```text
 //! P     = Σ reactions in x1 on the pulled edge x1 = L2       (= ∫_0^H σ11 dx2)
-//! Φ_E1, Φ_E2 = strain energies of plate and insert
+//! Φ_E1, Φ_E2 = strain energies of plate and insert (Φ_E2 = 0 for a rigid insert)
 //! l     = contact end on η = 1 − φ/π of the hole edge (gap^{2/3} interpolation, see contact::post)
 //! b     = stick end likewise (slip^{2/3} interpolation)
 //! σ*    = max over the hole edge of σ_φφ (Gauss-point stresses extrapolated to the nodes, averaged)
@@ -42,8 +42,8 @@ pub struct PlateInsertResults {
     pub sigma_star: f64,
     /// K = H σ* / P.
     pub stress_concentration: f64,
-    /// Largest hoop stress of the insert on its outer edge.
-    pub insert_hoop_max: f64,
+    /// Largest hoop stress of the insert on its outer edge (`None` for a rigid insert).
+    pub insert_hoop_max: Option<f64>,
 }
 
 impl PlateInsertProblem {
@@ -56,16 +56,20 @@ impl PlateInsertProblem {
         let u = &solution.displacement;
         let pull = fem_solution(p, solution).reaction_resultant(&p.model, "right")?[0];
         let energy_plate = strain_energy(&p.model, BodyId(0), u)?;
-        let energy_insert = strain_energy(&p.model, BodyId(1), u)?;
+        let insert = p.model.body("insert").map(|(id, _)| id);
+        let energy_insert = match insert {
+            Some(id) => strain_energy(&p.model, id, u)?,
+            None => 0.0,
+        };
         let end = contact_end(&self.eta_hole(), &solution.gap, &solution.state);
         let end_master = contact_end(&self.eta_master(), &solution.gap, &solution.state);
         let slips = solution.state.iter().any(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative));
         let stick = if slips { stick_end(&self.eta_hole(), &solution.slip_increment, &solution.state) } else { end };
-        let hoop_max = |body: usize, contour| -> Result<f64, ContactError> {
-            let samples = stresses_along_curve(&p.model, BodyId(body), contour, u, StressRecovery::Extrapolated)?;
+        let hoop_max = |body: BodyId, contour| -> Result<f64, ContactError> {
+            let samples = stresses_along_curve(&p.model, body, contour, u, StressRecovery::Extrapolated)?;
             Ok(samples.iter().map(|s| s.tangential_stress()).fold(f64::NEG_INFINITY, f64::max))
         };
-        let sigma_star = hoop_max(0, &self.hole)?;
+        let sigma_star = hoop_max(BodyId(0), &self.hole)?;
         Ok(PlateInsertResults {
             pull,
             energy_plate,
@@ -78,7 +82,10 @@ impl PlateInsertProblem {
             contact_end_master: end_master.map(|e| e.0),
             sigma_star,
             stress_concentration: PLATE_HALF_HEIGHT * sigma_star / pull,
-            insert_hoop_max: hoop_max(1, &self.insert)?,
+            insert_hoop_max: match insert {
+                Some(id) => Some(hoop_max(id, &self.insert)?),
+                None => None,
+            },
         })
     }
 }

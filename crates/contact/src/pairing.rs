@@ -50,7 +50,8 @@ pub struct ContactPair {
 
 /// Builds the pairs of every node of `master` with the closest point of `slave`.
 ///
-/// `slave_body` names the body the slave contour bounds (to orient the normals outward).
+/// `slave_region` names the 2D physical group the slave contour bounds — a body's region, or a
+/// rigid obstacle's — to orient the normals outward.
 ///
 /// # Errors
 /// [`ContactError::Pairing`] if the slave body is unknown, a contour is degenerate, or the normal
@@ -59,11 +60,10 @@ pub fn pair_contours(
     model: &Model,
     master: &Contour,
     slave: &Contour,
-    slave_body: &str,
+    slave_region: &str,
 ) -> Result<Vec<ContactPair>, ContactError> {
     let err = |reason: String| ContactError::Pairing { master: master.name.clone(), slave: slave.name.clone(), reason };
-    let (_, body) = model.body(slave_body).ok_or_else(|| err(format!("no body named \"{slave_body}\"")))?;
-    let centroids = slave_edge_centroids(model, body, slave).map_err(err)?;
+    let centroids = slave_edge_centroids(model, slave_region, slave).map_err(err)?;
     let weights = tributary_weights(master);
     let mut pairs = Vec::with_capacity(master.nodes.len());
     for (k, &m) in master.nodes.iter().enumerate() {
@@ -153,11 +153,13 @@ fn snap(xi: f64) -> f64 {
     xi
 }
 
-fn slave_edge_centroids(model: &Model, body: &contact2d_fem::Body, slave: &Contour) -> Result<Vec<[f64; 2]>, String> {
+fn slave_edge_centroids(model: &Model, region: &str, slave: &Contour) -> Result<Vec<[f64; 2]>, String> {
     use std::collections::HashMap;
+    let blocks = model.mesh.blocks_in_group(region).map_err(|e| e.to_string())?;
+    let cells: Vec<&[NodeId]> = blocks.iter().filter(|b| b.kind.dim() == 2).flat_map(|b| b.cells()).collect();
     let mut cells_of: HashMap<NodeId, Vec<usize>> = HashMap::new();
-    for i in 0..body.num_cells() {
-        for n in body.cell_nodes(i) {
+    for (i, cell) in cells.iter().enumerate() {
+        for n in *cell {
             cells_of.entry(*n).or_default().push(i);
         }
     }
@@ -167,13 +169,16 @@ fn slave_edge_centroids(model: &Model, body: &contact2d_fem::Body, slave: &Conto
         .map(|e| {
             let cell = cells_of
                 .get(&e.nodes[0])
-                .and_then(|cs| cs.iter().find(|&&c| body.cell_nodes(c).contains(&e.nodes[1])))
+                .and_then(|cs| cs.iter().find(|&&c| cells[c].contains(&e.nodes[1])))
                 .ok_or_else(|| {
-                    format!("slave edge at node index {} does not bound body \"{}\"", e.nodes[0].0, body.name)
+                    format!("slave edge at node index {} does not bound region \"{region}\"", e.nodes[0].0)
                 })?;
-            let coords = body.cell_coords(&model.mesh, *cell);
-            let k = coords.len() as f64;
-            Ok([coords.iter().map(|p| p[0]).sum::<f64>() / k, coords.iter().map(|p| p[1]).sum::<f64>() / k])
+            let k = cells[*cell].len() as f64;
+            let sum = cells[*cell].iter().fold([0.0, 0.0], |a, n| {
+                let p = model.mesh.points[n.0];
+                [a[0] + p[0], a[1] + p[1]]
+            });
+            Ok([sum[0] / k, sum[1] / k])
         })
         .collect()
 }

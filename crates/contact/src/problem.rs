@@ -67,6 +67,19 @@ impl ContactProblem {
     /// # Errors
     /// From assembly/factorisation, or a pair whose nodes have no DOFs.
     pub fn new(model: Model, pairs: Vec<ContactPair>) -> Result<ContactProblem, ContactError> {
+        ContactProblem::build(model, pairs, SlaveKind::Deformable)
+    }
+
+    /// Like [`ContactProblem::new`], with the slave contour a rigid, fixed obstacle: its nodes
+    /// belong to no body and do not move (exact, not a large modulus).
+    ///
+    /// # Errors
+    /// As [`ContactProblem::new`], or a slave node that belongs to a body.
+    pub fn with_rigid_slave(model: Model, pairs: Vec<ContactPair>) -> Result<ContactProblem, ContactError> {
+        ContactProblem::build(model, pairs, SlaveKind::Rigid)
+    }
+
+    fn build(model: Model, pairs: Vec<ContactPair>, slave: SlaveKind) -> Result<ContactProblem, ContactError> {
         let system = assemble(&model)?;
         let solver = CholeskySolver::factor(&system.stiffness)?;
         let pattern_prescribed = system.dofs.prescribed_values().to_vec();
@@ -74,8 +87,8 @@ impl ContactProblem {
         let mut normal_rows = Vec::with_capacity(pairs.len());
         let mut tangent_rows = Vec::with_capacity(pairs.len());
         for p in &pairs {
-            normal_rows.push(pair_row(&system, p, p.normal)?);
-            tangent_rows.push(pair_row(&system, p, p.tangent)?);
+            normal_rows.push(pair_row(&system, p, p.normal, slave)?);
+            tangent_rows.push(pair_row(&system, p, p.tangent, slave)?);
         }
         let gap = pairs.iter().map(|p| p.gap).collect();
         let friction = vec![0.0; pairs.len()];
@@ -148,7 +161,19 @@ impl ContactProblem {
     }
 }
 
-fn pair_row(system: &LinearSystem, pair: &ContactPair, dir: [f64; 2]) -> Result<PairRow, ContactError> {
+/// Whether the slave side deforms or is a rigid obstacle.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum SlaveKind {
+    Deformable,
+    Rigid,
+}
+
+fn pair_row(
+    system: &LinearSystem,
+    pair: &ContactPair,
+    dir: [f64; 2],
+    slave: SlaveKind,
+) -> Result<PairRow, ContactError> {
     let mut row = PairRow::default();
     let mut push = |node: usize, scale: f64| -> Result<(), ContactError> {
         for c in [Component::X, Component::Y] {
@@ -168,7 +193,17 @@ fn pair_row(system: &LinearSystem, pair: &ContactPair, dir: [f64; 2]) -> Result<
     };
     push(pair.master.0, 1.0)?;
     for (n, w) in &pair.slave {
-        push(n.0, -w)?;
+        let active = !matches!(system.dofs.kind(Dof::of(n.0, Component::X)), DofKind::Inactive);
+        match (slave, active) {
+            (SlaveKind::Deformable, _) => push(n.0, -w)?,
+            (SlaveKind::Rigid, false) => {}
+            (SlaveKind::Rigid, true) => {
+                return Err(ContactError::InvalidInput(format!(
+                    "rigid slave contour: node index {} belongs to a body",
+                    n.0
+                )));
+            }
+        }
     }
     Ok(row)
 }
