@@ -6,7 +6,8 @@ use std::time::Instant;
 use serde::Serialize;
 
 use contact2d_contact::{
-    ContactError, ContactSolution, ContactStatus, Interface, StepAlgorithm, equal_steps, solve_history,
+    BoussinesqLoading, ContactError, ContactSolution, ContactStatus, Interface, StepAlgorithm, equal_steps,
+    solve_boussinesq_history, solve_history,
 };
 
 use crate::scene::{ContactAlgorithm, Scene};
@@ -117,19 +118,38 @@ pub fn run_scene(scene: &Scene) -> Result<RunReport, ContactError> {
     if !p.load.is_finite() || p.load < 0.0 {
         return Err(ContactError::InvalidInput(format!("load w = {} must be finite and non-negative", p.load)));
     }
+    if !p.l_steps.is_empty() && scene.solver.algorithm != ContactAlgorithm::Boussinesq {
+        return Err(ContactError::InvalidInput("l_steps needs the boussinesq algorithm".into()));
+    }
     if p.steps == 0 {
         return Err(ContactError::InvalidInput("steps must be at least 1".into()));
     }
     let case = scene.plate_insert().build()?;
     let problem = &case.problem;
     let interface = Interface::new(problem);
-    let algorithm = match scene.solver.algorithm {
-        ContactAlgorithm::ActiveSet => StepAlgorithm::ActiveSet,
-        ContactAlgorithm::Clarabel => StepAlgorithm::Clarabel,
-    };
-    let scaled = problem.is_gapless();
+    let scaled = problem.is_gapless() && p.l_steps.is_empty();
     let loads = if scaled { vec![1.0] } else { equal_steps(p.load, p.steps) };
-    let mut history = solve_history(problem, &interface, algorithm, &loads, scene.solver.max_iterations);
+    let max_iterations = scene.solver.max_iterations;
+    let mut history = match scene.solver.algorithm {
+        ContactAlgorithm::ActiveSet => {
+            solve_history(problem, &interface, StepAlgorithm::ActiveSet, &loads, max_iterations)
+        }
+        ContactAlgorithm::Clarabel => {
+            solve_history(problem, &interface, StepAlgorithm::Clarabel, &loads, max_iterations)
+        }
+        ContactAlgorithm::Boussinesq => {
+            let eta = case.eta_master();
+            let mut order: Vec<usize> = (0..eta.len()).collect();
+            order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
+            let loadings: Vec<BoussinesqLoading> = if p.l_steps.is_empty() {
+                loads.iter().map(|w| BoussinesqLoading::Load(*w)).collect()
+            } else {
+                p.l_steps.iter().map(|l| BoussinesqLoading::ContactEnd(nearest_position(&order, &eta, *l))).collect()
+            };
+            // The contact-end search of a given load moves one pair per iteration.
+            solve_boussinesq_history(problem, &interface, &order, &loadings, max_iterations.max(2 * order.len()))
+        }
+    };
     if scaled {
         for step in &mut history {
             scale_solution(&mut step.solution, p.load);
@@ -158,6 +178,7 @@ pub fn run_scene(scene: &Scene) -> Result<RunReport, ContactError> {
         ));
     }
     let last = history.last().ok_or_else(|| ContactError::InvalidInput("no load step".into()))?;
+    let w_final = last.solution.load_factor;
     let solution = &last.solution;
     let (final_step, q) = steps.last().cloned().ok_or_else(|| ContactError::InvalidInput("no load step".into()))?;
     Ok(RunReport {
@@ -175,7 +196,7 @@ pub fn run_scene(scene: &Scene) -> Result<RunReport, ContactError> {
         sigma_star: q.sigma_star,
         K: q.stress_concentration,
         insert_hoop_max: q.insert_hoop_max,
-        w: p.load,
+        w: if p.l_steps.is_empty() { p.load } else { w_final },
         mu: p.friction,
         dofs: problem.system.dofs.num_free(),
         pairs: problem.num_pairs(),
@@ -192,6 +213,15 @@ pub fn run_scene(scene: &Scene) -> Result<RunReport, ContactError> {
         time_s: start.elapsed().as_secs_f64(),
         solve_time_s: history.iter().map(|s| s.solution.time.as_secs_f64()).sum(),
     })
+}
+
+/// The position in `order` of the pair whose η is nearest to `l`.
+fn nearest_position(order: &[usize], eta: &[f64], l: f64) -> usize {
+    order
+        .iter()
+        .enumerate()
+        .min_by(|a, b| (eta[*a.1] - l).abs().total_cmp(&(eta[*b.1] - l).abs()))
+        .map_or(0, |(pos, _)| pos)
 }
 
 fn status_name(status: ContactStatus) -> &'static str {

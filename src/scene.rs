@@ -16,10 +16,11 @@
 //! friction = 0.0                # μ
 //! load = 1.0                    # w, the pulled-edge displacement
 //! steps = 1                     # equal load steps from 0 to w (a history for friction)
+//! l_steps = [0.05, 0.1]         # Boussinesq only: steps in the contact end l instead of w
 //! pairs = "node_to_node"        # or "node_to_segment" (the mesh as given)
 //!
 //! [solver]
-//! algorithm = "active_set"      # or "clarabel"
+//! algorithm = "active_set"      # or "clarabel", "boussinesq"
 //! max_iterations = 100
 //! ```
 //!
@@ -68,8 +69,11 @@ pub enum SceneError {
 pub enum ContactAlgorithm {
     /// Primal-dual active set on the condensed interface.
     ActiveSet,
-    /// The QP of (5.3) solved by Clarabel in the full displacement space.
+    /// The QP of (5.3) solved by Clarabel in the full displacement space (Tresca fixed point
+    /// with friction).
     Clarabel,
+    /// The paper's paired-node Boussinesq algorithm (section 6).
+    Boussinesq,
 }
 
 /// The solver section.
@@ -121,6 +125,11 @@ pub struct PlateInsertSection {
     /// Equal load steps from 0 to w (the history; 1 = one step).
     #[serde(default = "one_step")]
     pub steps: usize,
+    /// With the Boussinesq algorithm: the contact ends l of the steps (the paper's loading in
+    /// steps of l, on the master's own η); the load w of each step follows. `load` and `steps`
+    /// are then unused.
+    #[serde(default)]
+    pub l_steps: Vec<f64>,
     /// `node_to_node` (slave nodes slid onto the paired points, the paper's pairs) or
     /// `node_to_segment` (the mesh as given).
     #[serde(default = "node_to_node")]

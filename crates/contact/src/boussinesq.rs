@@ -278,3 +278,29 @@ fn check_inequalities(problem: &ContactProblem, order: &[usize], zones: Zones, s
     }
     v
 }
+
+/// A loading history solved by Boussinesq steps, each from the state the previous one ended in
+/// (the first from the virgin state: v_s = 0). Stops after the first step that is not converged
+/// (inadmissible or numerical), which is returned last.
+pub fn solve_boussinesq_history(
+    problem: &ContactProblem,
+    interface: &Interface,
+    order: &[usize],
+    loadings: &[BoussinesqLoading],
+    max_iterations: usize,
+) -> Vec<crate::history::HistoryStep> {
+    let mut start = StepStart::initial(problem.num_pairs());
+    let mut dissipated = 0.0;
+    let mut steps = Vec::with_capacity(loadings.len());
+    for &loading in loadings {
+        let step = solve_boussinesq_step(problem, interface, order, loading, &start, max_iterations);
+        dissipated += step.solution.dissipation;
+        start = StepStart::after(&step.solution);
+        let converged = step.solution.status == ContactStatus::Converged;
+        steps.push(crate::history::HistoryStep { solution: step.solution, dissipated });
+        if !converged {
+            break;
+        }
+    }
+    steps
+}

@@ -24,7 +24,9 @@ pub mod solution;
 pub mod tresca_qp;
 
 pub use active_set::solve_frictionless_active_set;
-pub use boussinesq::{BoussinesqLoading, BoussinesqStep, Violation, Zones, solve_boussinesq_step};
+pub use boussinesq::{
+    BoussinesqLoading, BoussinesqStep, Violation, Zones, solve_boussinesq_history, solve_boussinesq_step,
+};
 pub use error::ContactError;
 pub use friction::solve_frictional_active_set;
 pub use history::{HistoryStep, StepAlgorithm, equal_steps, solve_history};
