@@ -1,0 +1,347 @@
+//! Foundation benchmark: one linear plane-elasticity solve on a structured Quad9 cantilever of a
+//! requested size, each phase of the pipeline timed on its own.
+//!
+//! ```text
+//!        y = 1 ┌──────────────────────────────────────┐
+//!  u1 = u2 = 0 │  nx × ny Quad9 cells, nx = 4 ny      │ ← traction (0, -1) on "right"
+//!     ("left") │  E = 1000, ν = 0.3, plane stress     │
+//!        y = 0 └──────────────────────────────────────┘
+//!            x = 0                                  x = 4
+//!
+//!   DOFs = 2 (2 nx + 1)(2 ny + 1) ≈ 32 ny²;   ny is chosen so that this is closest to the request.
+//!   Timoshenko tip deflection (sanity check): δ = P L³ / (3 E I) + P L / (κ G A) ≈ 0.2685
+//! ```
+//!
+//! Phases: mesh generation, model setup (`add_body`, which checks every Jacobian), assembly
+//! (`assemble`: DOF map, rigid-mode check, element matrices, triplets → CSC, edge loads),
+//! symbolic analysis (ordering, elimination tree, supernodes), numeric factorisation
+//! `K_ff = L Lᵀ`, solve. The factorisation goes through faer's low-level API with the defaults
+//! that `CholeskySolver` uses (`SymbolicLlt::try_new` + `Llt::try_new_with_symbolic`: AMD,
+//! supernodal when worthwhile, global parallelism), so that the symbolic and numeric times and the
+//! size of `L` can be reported separately.
+//!
+//! Prototypes, to measure what a change in the library would gain:
+//! * `--assembly pattern`: the rigid-mode check with a `Vec` union-find, then the CSC pattern of
+//!   `K_ff` from the node graph and element matrices added in place, in parallel over column
+//!   blocks (no triplets, no sort); `--verify` compares it entry by entry with `assemble`.
+//! * `--ordering amd-nodes`: AMD on the node graph (each node's DOFs together) instead of the DOF graph.
+//! * `--ordering nd`: geometric nested dissection of the node graph instead of AMD.
+//! * `--index u32`: the factorisation with 32-bit instead of 64-bit sparse indices.
+//! * `--breakdown`: the pieces of `assemble` timed one by one through the public API, the triplet
+//!   sort on its own, and a refill of a kept pattern (`new_from_argsort`).
+//!
+//! The peak resident set size after each phase is read from `/proc/self/status` (Linux).
+//!
+//! Run: `cargo run --release --example bench_linear -- 1000000`; results in docs/benchmarks.md.
+
+use std::time::Instant;
+
+use anyhow::{Result, anyhow, bail};
+use clap::{Parser, ValueEnum};
+use contact2d_element::{Material, PlaneCondition};
+use contact2d_fem::{Component, Csc, Dof, DofKind, DofMap, EdgeLoad, Model, assemble};
+use contact2d_mesh::{CellKind, Mesh, generate};
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::perm::PermRef;
+use faer::sparse::linalg::cholesky::{LltRef, SymbolicCholeskyRaw, SymmetricOrdering, factorize_symbolic_cholesky};
+use faer::sparse::{SparseColMat, SparseColMatRef, SymbolicSparseColMat};
+use faer::{Conj, Mat, Side};
+
+#[path = "bench_linear/prototypes.rs"]
+mod prototypes;
+
+use prototypes::{
+    assemble_pattern, breakdown, check_rigid_modes_fast, nested_dissection, node_amd, tip_load, verify_against_crate,
+};
+
+/// How `K_ff` is assembled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Assembly {
+    /// `contact2d_fem::assemble` (triplets summed by `SparseColMat::try_new_from_triplets`).
+    Crate,
+    /// The prototype [`assemble_pattern`].
+    Pattern,
+}
+
+/// The integer type of the sparse indices handed to the factorisation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum IndexWidth {
+    /// `usize`, as `contact2d_fem::Csc`.
+    U64,
+    /// `u32` (prototype: `K_ff` converted after assembly, the conversion timed on its own).
+    U32,
+}
+
+/// The fill-reducing ordering of the Cholesky factorisation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Ordering {
+    /// faer's default, approximate minimum degree.
+    Amd,
+    /// The prototype [`node_amd`]: AMD on the node graph.
+    AmdNodes,
+    /// The prototype [`nested_dissection`].
+    Nd,
+}
+
+#[derive(Debug, Parser)]
+#[command(about = "Time each phase of a linear Quad9 cantilever solve")]
+struct Args {
+    /// Requested number of DOFs (the mesh is chosen to be the closest).
+    #[arg(default_value_t = 100_000)]
+    dofs: usize,
+    /// Assembly of `K_ff`.
+    #[arg(long, value_enum, default_value_t = Assembly::Crate)]
+    assembly: Assembly,
+    /// Fill-reducing ordering.
+    #[arg(long, value_enum, default_value_t = Ordering::Amd)]
+    ordering: Ordering,
+    /// Index width of the factorisation.
+    #[arg(long, value_enum, default_value_t = IndexWidth::U64)]
+    index: IndexWidth,
+    /// With `--assembly pattern`: also run `assemble` and compare the two matrices.
+    #[arg(long)]
+    verify: bool,
+    /// Time the pieces of `assemble` one by one instead of solving.
+    #[arg(long)]
+    breakdown: bool,
+}
+
+/// Wall-clock time and peak RSS after each phase.
+struct Phases {
+    start: Instant,
+    rows: Vec<(&'static str, f64, Option<f64>)>,
+}
+
+impl Phases {
+    fn new() -> Phases {
+        Phases { start: Instant::now(), rows: vec![] }
+    }
+
+    /// Records the time since the previous call under `name`.
+    fn lap(&mut self, name: &'static str) {
+        let now = Instant::now();
+        self.rows.push((name, (now - self.start).as_secs_f64(), peak_rss_mib()));
+        self.start = now;
+    }
+}
+
+/// `VmHWM` of this process in MiB, if `/proc/self/status` can be read.
+fn peak_rss_mib() -> Option<f64> {
+    let status = std::fs::read_to_string("/proc/self/status").ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmHWM:"))?;
+    let kib: f64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib / 1024.0)
+}
+
+fn main() -> Result<()> {
+    let args = Args::parse();
+    let ny = ((args.dofs as f64 / 32.0).sqrt().round() as usize).max(1);
+    let mut phases = Phases::new();
+
+    let mesh = generate::rectangle(CellKind::Quad9, [0.0, 4.0], [0.0, 1.0], 4 * ny, ny);
+    phases.lap("mesh generation");
+
+    let model = setup_model(mesh)?;
+    phases.lap("model setup (add_body)");
+    if args.breakdown {
+        return breakdown(&model);
+    }
+
+    let (k, rhs, dofs) = match args.assembly {
+        Assembly::Crate => {
+            let system = assemble(&model)?;
+            let rhs = system.rhs(system.dofs.prescribed_values());
+            (system.stiffness, rhs, system.dofs)
+        }
+        Assembly::Pattern => {
+            let dofs = model.dof_map()?;
+            check_rigid_modes_fast(&model, &dofs)?;
+            (assemble_pattern(&model, &dofs)?, tip_load(&model, &dofs)?, dofs)
+        }
+    };
+    phases.lap("assembly");
+
+    let perm = match args.ordering {
+        Ordering::Amd => None,
+        Ordering::AmdNodes => Some(node_amd(&model, &dofs)?),
+        Ordering::Nd => Some(nested_dissection(&model, &dofs)),
+    };
+    let (u, stats) = match args.index {
+        IndexWidth::U64 => factor_and_solve(k.as_ref(), perm, &rhs, &mut phases)?,
+        IndexWidth::U32 => {
+            let k32 = to_u32(&k)?;
+            let perm32 = perm.map(|(f, i)| (to_u32_vec(&f), to_u32_vec(&i)));
+            phases.lap("convert indices to u32");
+            factor_and_solve(k32.as_ref(), perm32, &rhs, &mut phases)?
+        }
+    };
+    report(&args, &model, &k, &dofs, &stats, &u, &rhs, &phases);
+    if args.verify && args.assembly == Assembly::Pattern {
+        verify_against_crate(&model, &k)?;
+    }
+    Ok(())
+}
+
+/// Size and cost of a Cholesky factor.
+struct FactorStats {
+    /// "supernodal, N supernodes" or "simplicial".
+    kind: String,
+    /// Structural nonzeros of `L` (lower triangle, diagonal included).
+    nnz_l: u128,
+    /// Values faer stores (dense diagonal blocks of supernodes included).
+    stored: usize,
+    /// `Σ_j c_j²` over the columns of `L` with `c_j` entries (supernodal only).
+    flops: Option<f64>,
+}
+
+/// Symbolic analysis (AMD, or the given `(forward, inverse)` permutation), numeric
+/// factorisation and solve, as `CholeskySolver` does them; one phase each.
+fn factor_and_solve<I: faer::Index>(
+    k: SparseColMatRef<'_, I, f64>,
+    perm: Option<(Vec<I>, Vec<I>)>,
+    rhs: &[f64],
+    phases: &mut Phases,
+) -> Result<(Vec<f64>, FactorStats)> {
+    let ordering = match &perm {
+        None => SymmetricOrdering::Amd,
+        Some((fwd, inv)) => SymmetricOrdering::Custom(PermRef::new_checked(fwd, inv, fwd.len())),
+    };
+    let symbolic = factorize_symbolic_cholesky(k.symbolic(), Side::Lower, ordering, Default::default())
+        .map_err(|e| anyhow!("symbolic analysis: {e:?}"))?;
+    phases.lap("symbolic analysis");
+
+    let par = faer::get_global_parallelism();
+    let mut l_values = vec![0.0; symbolic.len_val()];
+    let mut scratch = MemBuffer::try_new(symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default()))
+        .map_err(|e| anyhow!("factorisation workspace: {e:?}"))?;
+    symbolic
+        .factorize_numeric_llt(
+            &mut l_values,
+            k,
+            Side::Lower,
+            Default::default(),
+            par,
+            MemStack::new(&mut scratch),
+            Default::default(),
+        )
+        .map_err(|e| anyhow!("numeric factorisation: {e:?}"))?;
+    drop(scratch);
+    phases.lap("numeric factorisation");
+
+    let mut x = Mat::from_fn(rhs.len(), 1, |i, _| rhs[i]);
+    let mut scratch = MemBuffer::try_new(symbolic.solve_in_place_scratch::<f64>(1, par))
+        .map_err(|e| anyhow!("solve workspace: {e:?}"))?;
+    LltRef::new(&symbolic, &l_values).solve_in_place_with_conj(Conj::No, x.as_mut(), par, MemStack::new(&mut scratch));
+    phases.lap("solve");
+
+    let stats = match symbolic.raw() {
+        SymbolicCholeskyRaw::Supernodal(s) => {
+            // Per supernode: a dense lower-trapezoidal block of `cols` columns and `cols + below` rows.
+            let (mut nnz_l, mut flops) = (0u128, 0f64);
+            for sn in 0..s.n_supernodes() {
+                let cols = (s.supernode_end()[sn].zx() - s.supernode_begin()[sn].zx()) as u128;
+                let below = s.nnz_per_super()[sn].zx() as u128;
+                nnz_l += cols * (cols + 1) / 2 + cols * below;
+                // A column with c entries costs about c² flops in L Lᵀ.
+                flops += (1..=cols).map(|c| ((c + below) * (c + below)) as f64).sum::<f64>();
+            }
+            let kind = format!("supernodal, {} supernodes", s.n_supernodes());
+            FactorStats { kind, nnz_l, stored: symbolic.len_val(), flops: Some(flops) }
+        }
+        SymbolicCholeskyRaw::Simplicial(s) => {
+            FactorStats { kind: "simplicial".into(), nnz_l: s.len_val() as u128, stored: s.len_val(), flops: None }
+        }
+    };
+    Ok(((0..x.nrows()).map(|i| x[(i, 0)]).collect(), stats))
+}
+
+/// `k` with 32-bit indices.
+fn to_u32(k: &Csc) -> Result<SparseColMat<u32, f64>> {
+    let (symbolic, values) = k.as_ref().parts();
+    let pattern = SymbolicSparseColMat::new_checked(
+        k.nrows(),
+        k.ncols(),
+        to_u32_vec(symbolic.col_ptr()),
+        None,
+        to_u32_vec(symbolic.row_idx()),
+    );
+    if k.compute_nnz() >= u32::MAX as usize / 2 {
+        bail!("too many nonzeros for u32 indices");
+    }
+    Ok(SparseColMat::new(pattern, values.to_vec()))
+}
+
+fn to_u32_vec(v: &[usize]) -> Vec<u32> {
+    v.iter().map(|&i| i as u32).collect()
+}
+
+/// Clamps the left side and pulls the right side down with a unit traction.
+fn setup_model(mesh: Mesh) -> Result<Model> {
+    let mut model = Model::new(mesh);
+    model.add_body("domain", Material::new(1000.0, 0.3, PlaneCondition::Stress)?, 1.0)?;
+    model.fix("left", Component::X, 0.0)?;
+    model.fix("left", Component::Y, 0.0)?;
+    model.add_edge_load(EdgeLoad::Traction { group: "right".into(), traction: [0.0, -1.0] })?;
+    Ok(model)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn report(
+    args: &Args,
+    model: &Model,
+    k: &Csc,
+    dofs: &DofMap,
+    stats: &FactorStats,
+    u: &[f64],
+    rhs: &[f64],
+    phases: &Phases,
+) {
+    let nnz_lower = k.compute_nnz();
+    println!("requested DOFs       {}", args.dofs);
+    println!("assembly/order/index {:?}, {:?}, {:?}", args.assembly, args.ordering, args.index);
+    println!("rayon threads        {}", rayon::current_num_threads());
+    println!("nodes                {}", model.mesh.num_nodes());
+    println!("Quad9 elements       {}", model.bodies.iter().map(|b| b.num_cells()).sum::<usize>());
+    println!("DOFs (all / free)    {} / {}", dofs.num_global(), dofs.num_free());
+    println!("nnz(K_ff) lower/full {nnz_lower} / {}", 2 * nnz_lower - k.ncols());
+    println!("factor               {}", stats.kind);
+    println!("nnz(L)               {} ({} values stored)", stats.nnz_l, stats.stored);
+    if let Some(flops) = stats.flops {
+        println!("factor flops         {flops:.3e}");
+    }
+    // Correctness: residual of the solve and the tip deflection at (4, 0.5).
+    let ku = apply_lower(k, u);
+    let res = ku.iter().zip(rhs).map(|(a, b)| (a - b) * (a - b)).sum::<f64>().sqrt();
+    let norm = rhs.iter().map(|b| b * b).sum::<f64>().sqrt();
+    let mx = model.mesh.points.iter().take_while(|p| p[1] == 0.0).count();
+    let tip_node = (model.mesh.num_nodes() / mx / 2) * mx + mx - 1;
+    let tip = match dofs.kind(Dof::of(tip_node, Component::Y)) {
+        DofKind::Free(i) => u[i],
+        _ => f64::NAN,
+    };
+    println!("‖K u - f‖ / ‖f‖      {:.2e}", res / norm);
+    println!("tip deflection       {tip:.6} at {:?} (Timoshenko ≈ -0.2685)", model.mesh.points[tip_node]);
+    println!();
+    let mut total = 0.0;
+    for (name, secs, rss) in &phases.rows {
+        total += secs;
+        let rss = rss.map_or_else(|| "?".to_string(), |r| format!("{r:.0}"));
+        println!("{name:<28} {secs:>9.3} s   peak RSS so far {rss:>6} MiB");
+    }
+    println!("{:<28} {total:>9.3} s", "total");
+}
+
+/// `y = K x` from the stored lower triangle.
+fn apply_lower(k: &Csc, x: &[f64]) -> Vec<f64> {
+    let k = k.as_ref();
+    let mut y = vec![0.0; x.len()];
+    for j in 0..k.ncols() {
+        for (i, v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
+            y[i] += v * x[j];
+            if i != j {
+                y[j] += v * x[i];
+            }
+        }
+    }
+    y
+}
