@@ -147,7 +147,7 @@ pub fn run_scene(scene: &Scene) -> Result<RunReport, ContactError> {
                 p.l_steps.iter().map(|l| BoussinesqLoading::ContactEnd(nearest_position(&order, &eta, *l))).collect()
             };
             // The contact-end search of a given load moves one pair per iteration.
-            solve_boussinesq_history(problem, &interface, &order, &loadings, max_iterations.max(2 * order.len()))
+            solve_boussinesq_history(problem, &interface, &order, &loadings, max_iterations.max(2 * order.len()))?
         }
     };
     if scaled {

@@ -25,8 +25,8 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use contact2d::contact::{
-    BoussinesqLoading, ContactSolution, ContactStatus, Interface, StepStart, solve_boussinesq_step,
-    solve_frictional_active_set, solve_frictional_qp,
+    BoussinesqLoading, ContactSolution, ContactStatus, Interface, StepStart, solve_boussinesq_history,
+    solve_boussinesq_step, solve_frictional_active_set, solve_frictional_qp,
 };
 use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem};
 
@@ -108,4 +108,16 @@ fn boussinesq_steps_in_l_equal_the_active_set_and_clarabel() {
         }
         (start_b, start_a, last_w) = (StepStart::after(&b.solution), StepStart::after(&a), w);
     }
+}
+
+/// The Boussinesq algorithm assumes a growing contact zone (spec §6): it refuses to unload, with
+/// an error that names the other algorithms.
+#[test]
+fn boussinesq_refuses_to_unload() {
+    let case = case(0.05, 1.0);
+    let interface = Interface::new(&case.problem);
+    let order = order(&case);
+    let loadings = [BoussinesqLoading::ContactEnd(7), BoussinesqLoading::ContactEnd(5)];
+    let err = solve_boussinesq_history(&case.problem, &interface, &order, &loadings, 100).unwrap_err();
+    assert!(err.to_string().contains("cannot unload"), "{err}");
 }

@@ -29,6 +29,7 @@ use std::time::Instant;
 
 use nalgebra::{DMatrix, DVector};
 
+use crate::error::ContactError;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
@@ -282,13 +283,32 @@ fn check_inequalities(problem: &ContactProblem, order: &[usize], zones: Zones, s
 /// A loading history solved by Boussinesq steps, each from the state the previous one ended in
 /// (the first from the virgin state: v_s = 0). Stops after the first step that is not converged
 /// (inadmissible or numerical), which is returned last.
+///
+/// # Errors
+/// The algorithm assumes a growing contact zone (spec §6): a decreasing load or contact end
+/// (unloading) is refused with [`ContactError::InvalidInput`]; unload with the active set or
+/// Clarabel (`solve_history`).
 pub fn solve_boussinesq_history(
     problem: &ContactProblem,
     interface: &Interface,
     order: &[usize],
     loadings: &[BoussinesqLoading],
     max_iterations: usize,
-) -> Vec<crate::history::HistoryStep> {
+) -> Result<Vec<crate::history::HistoryStep>, ContactError> {
+    for pair in loadings.windows(2) {
+        let decreasing = match (pair[0], pair[1]) {
+            (BoussinesqLoading::Load(a), BoussinesqLoading::Load(b)) => b < a,
+            (BoussinesqLoading::ContactEnd(a), BoussinesqLoading::ContactEnd(b)) => b < a,
+            _ => false,
+        };
+        if decreasing {
+            return Err(ContactError::InvalidInput(format!(
+                "the Boussinesq algorithm assumes a growing contact zone and cannot unload ({:?} after {:?}); \
+                 use the active set or Clarabel",
+                pair[1], pair[0]
+            )));
+        }
+    }
     let mut start = StepStart::initial(problem.num_pairs());
     let mut dissipated = 0.0;
     let mut steps = Vec::with_capacity(loadings.len());
@@ -302,5 +322,5 @@ pub fn solve_boussinesq_history(
             break;
         }
     }
-    steps
+    Ok(steps)
 }
