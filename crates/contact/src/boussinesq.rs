@@ -27,13 +27,12 @@
 
 use std::time::Instant;
 
-use nalgebra::{DMatrix, DVector};
-
 use crate::error::ContactError;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
 use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
+use crate::state_equations::{combine, state_system};
 
 /// How a Boussinesq step is loaded.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -163,57 +162,11 @@ fn solve_zones(
     frictional: bool,
 ) -> Option<(f64, Vec<f64>, Vec<f64>)> {
     let m = problem.num_pairs();
-    let mut a = DMatrix::<f64>::zeros(2 * m, 2 * m);
-    // Column 0: A1 (unit load), column 1: A2 (gaps and history).
-    let mut b = DMatrix::<f64>::zeros(2 * m, 2);
     let mut role = vec![PairState::Free; m];
-    for (pos, &k) in order.iter().enumerate() {
-        if pos > zones.contact_end {
-            break;
-        }
+    for (pos, &k) in order.iter().enumerate().take(zones.contact_end + 1) {
         role[k] = if pos < zones.stick { PairState::Stick } else { zones.slip.unwrap_or(PairState::Stick) };
     }
-    for k in 0..m {
-        let (rn, rt) = (k, m + k);
-        if role[k] == PairState::Free {
-            a[(rn, k)] = 1.0;
-            a[(rt, m + k)] = 1.0;
-            continue;
-        }
-        for j in 0..m {
-            a[(rn, j)] = interface.c_nn[(k, j)];
-            if frictional {
-                a[(rn, m + j)] = interface.c_nt[(k, j)];
-            }
-        }
-        b[(rn, 0)] = -interface.h_normal[k];
-        b[(rn, 1)] = -problem.gap[k];
-        let mu = problem.friction[k];
-        if !frictional || !problem.tangential[k] || mu == 0.0 {
-            a[(rt, m + k)] = 1.0;
-            continue;
-        }
-        match role[k] {
-            PairState::Stick => {
-                for j in 0..m {
-                    a[(rt, j)] = interface.c_tn[(k, j)];
-                    a[(rt, m + j)] = interface.c_tt[(k, j)];
-                }
-                b[(rt, 0)] = -interface.h_tangent[k];
-                b[(rt, 1)] = start.slip[k];
-            }
-            PairState::SlipPositive => {
-                a[(rt, m + k)] = 1.0;
-                a[(rt, k)] = mu;
-            }
-            PairState::SlipNegative => {
-                a[(rt, m + k)] = 1.0;
-                a[(rt, k)] = -mu;
-            }
-            PairState::Free => {}
-        }
-    }
-    let x = a.lu().solve(&b)?;
+    let x = state_system(problem, interface, start, &role, frictional).solve()?;
     let w = match loading {
         BoussinesqLoading::Load(w) => w,
         BoussinesqLoading::ContactEnd(_) => {
@@ -225,11 +178,8 @@ fn solve_zones(
             -l2 / l1
         }
     };
-    let combined = DVector::from_fn(2 * m, |i, _| w * x[(i, 0)] + x[(i, 1)]);
-    if combined.iter().any(|v| !v.is_finite()) {
-        return None;
-    }
-    Some((w, combined.rows(0, m).iter().copied().collect(), combined.rows(m, m).iter().copied().collect()))
+    let (lambda, tau) = combine(&x, w);
+    Some((w, lambda, tau))
 }
 
 /// The b iteration: the first stuck pair outside the cone starts the slip zone.

@@ -29,6 +29,7 @@ use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
 use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
+use crate::state_equations::{combine, state_system};
 
 /// Solves one frictional step to load factor `w` from the history `start`, starting from the
 /// state guess `guess` (e.g. the previous step's states; `None`: all in contact and sticking).
@@ -104,7 +105,7 @@ fn interface_values(
     (gap, s)
 }
 
-/// Solves the linear equations of a given state: unknowns `[λ; τ]`.
+/// Solves the linear equations of a given state at load `w`: `(λ, τ)`.
 fn solve_state(
     problem: &ContactProblem,
     interface: &Interface,
@@ -113,58 +114,8 @@ fn solve_state(
     state: &[PairState],
     frictional: bool,
 ) -> Option<(Vec<f64>, Vec<f64>)> {
-    let m = state.len();
-    let mut a = DMatrix::<f64>::zeros(2 * m, 2 * m);
-    let mut b = DVector::<f64>::zeros(2 * m);
-    for k in 0..m {
-        let (rn, rt) = (k, m + k);
-        let mu = problem.friction[k];
-        match state[k] {
-            PairState::Free => {
-                a[(rn, k)] = 1.0;
-                a[(rt, m + k)] = 1.0;
-                continue;
-            }
-            _ => {
-                // gap_k = 0
-                for j in 0..m {
-                    a[(rn, j)] = interface.c_nn[(k, j)];
-                    if frictional {
-                        a[(rn, m + j)] = interface.c_nt[(k, j)];
-                    }
-                }
-                b[rn] = -(problem.gap[k] + w * interface.h_normal[k]);
-            }
-        }
-        if !frictional || !problem.tangential[k] || mu == 0.0 {
-            a[(rt, m + k)] = 1.0; // τ = 0
-            continue;
-        }
-        match state[k] {
-            PairState::Stick => {
-                // s_k = s_start_k
-                for j in 0..m {
-                    a[(rt, j)] = interface.c_tn[(k, j)];
-                    a[(rt, m + j)] = interface.c_tt[(k, j)];
-                }
-                b[rt] = start.slip[k] - w * interface.h_tangent[k];
-            }
-            PairState::SlipPositive => {
-                a[(rt, m + k)] = 1.0;
-                a[(rt, k)] = mu;
-            }
-            PairState::SlipNegative => {
-                a[(rt, m + k)] = 1.0;
-                a[(rt, k)] = -mu;
-            }
-            PairState::Free => {}
-        }
-    }
-    let x = a.lu().solve(&b)?;
-    if x.iter().any(|v| !v.is_finite()) {
-        return None;
-    }
-    Some((x.rows(0, m).iter().copied().collect(), x.rows(m, m).iter().copied().collect()))
+    let x = state_system(problem, interface, start, state, frictional).solve()?;
+    Some(combine(&x, w))
 }
 
 #[allow(clippy::too_many_arguments)]

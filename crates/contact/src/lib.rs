@@ -21,6 +21,7 @@ pub mod problem;
 pub mod qp;
 pub mod report;
 pub mod solution;
+mod state_equations;
 pub mod tresca_qp;
 
 pub use active_set::solve_frictionless_active_set;
