@@ -45,7 +45,8 @@ pub struct PlateInsert {
     pub mesh: String,
     /// E2 / E1 (ignored for a rigid insert).
     pub stiffness_ratio: f64,
-    /// The insert as a rigid, fixed contour instead of an elastic body (the [pin] limit).
+    /// The insert as a rigid, fixed contour instead of an elastic body (the rigid-pin limit of
+    /// Solodovnikov 1997).
     pub rigid_insert: bool,
     /// ν1 and ν2.
     pub poissons_ratio: f64,
