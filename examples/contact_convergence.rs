@@ -83,6 +83,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 gap_model: GapModel::Paper,
                 friction: 0.0,
                 pairs: PairDiscretisation::NodeToSegment,
+                placed_nodes: vec![],
             }
             .build()?;
             let setup = t0.elapsed().as_secs_f64();

@@ -48,6 +48,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             gap_model: GapModel::Paper,
             friction: 0.3,
             pairs: PairDiscretisation::NodeToNode,
+            placed_nodes: vec![],
         }
         .build()?;
         let setup = t0.elapsed().as_secs_f64();

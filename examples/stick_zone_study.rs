@@ -42,6 +42,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 gap_model: GapModel::Paper,
                 friction: 0.3,
                 pairs: PairDiscretisation::NodeToNode,
+                placed_nodes: vec![],
             }
             .build()?;
             let interface = Interface::new(&case.problem);

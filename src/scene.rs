@@ -244,6 +244,7 @@ impl Scene {
                 PairsKey::NodeToNode => PairDiscretisation::NodeToNode,
                 PairsKey::NodeToSegment => PairDiscretisation::NodeToSegment,
             },
+            placed_nodes: vec![],
         }
     }
 }

@@ -29,6 +29,7 @@ fn build(variant: PairingVariant, gap_model: GapModel) -> contact2d::plate_inser
         gap_model,
         friction: 0.0,
         pairs: PairDiscretisation::NodeToSegment,
+        placed_nodes: vec![],
     }
     .build()
     .unwrap()
@@ -112,6 +113,7 @@ fn neat_fit_pairs_are_node_to_node_with_zero_gap() {
         gap_model: GapModel::Geometric,
         friction: 0.0,
         pairs: PairDiscretisation::NodeToSegment,
+        placed_nodes: vec![],
     }
     .build()
     .unwrap();

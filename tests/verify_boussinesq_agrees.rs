@@ -42,6 +42,7 @@ fn case(eps: f64, clearance: f64) -> PlateInsertProblem {
         gap_model: GapModel::Paper,
         friction: 0.3,
         pairs: PairDiscretisation::NodeToNode,
+        placed_nodes: vec![],
     }
     .build()
     .unwrap()

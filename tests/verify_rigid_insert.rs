@@ -32,6 +32,7 @@ fn case(n: usize, rigid: bool, ratio: f64) -> PlateInsertProblem {
         gap_model: GapModel::Paper,
         friction: 0.3,
         pairs: PairDiscretisation::NodeToNode,
+        placed_nodes: vec![],
     }
     .build()
     .unwrap()

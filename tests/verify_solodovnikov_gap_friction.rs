@@ -78,6 +78,7 @@ fn case(variant: PairingVariant, n: usize) -> PlateInsertProblem {
         gap_model: GapModel::Paper,
         friction: 0.3,
         pairs: PairDiscretisation::NodeToNode,
+        placed_nodes: vec![],
     }
     .build()
     .unwrap()

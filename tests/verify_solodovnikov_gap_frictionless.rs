@@ -38,6 +38,7 @@ fn case(n: usize) -> PlateInsertProblem {
         gap_model: GapModel::Paper,
         friction: 0.0,
         pairs: PairDiscretisation::NodeToNode,
+        placed_nodes: vec![],
     }
     .build()
     .unwrap()

@@ -33,6 +33,7 @@ fn history_v1_behaves_as_the_paper_reports() {
         gap_model: GapModel::Paper,
         friction: 0.3,
         pairs: PairDiscretisation::NodeToNode,
+        placed_nodes: vec![],
     }
     .build()
     .unwrap();

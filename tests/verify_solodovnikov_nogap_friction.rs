@@ -42,6 +42,7 @@ fn case(n: usize) -> PlateInsertProblem {
         gap_model: GapModel::Paper,
         friction: 0.3,
         pairs: PairDiscretisation::NodeToSegment,
+        placed_nodes: vec![],
     }
     .build()
     .unwrap();

@@ -44,6 +44,7 @@ fn check_level(n: usize) {
         gap_model: GapModel::Paper,
         friction: 0.0,
         pairs: PairDiscretisation::NodeToSegment,
+        placed_nodes: vec![],
     }
     .build()
     .unwrap();
@@ -101,6 +102,7 @@ fn no_gap_frictionless_solution_scales_linearly_with_the_load() {
         gap_model: GapModel::Paper,
         friction: 0.0,
         pairs: PairDiscretisation::NodeToSegment,
+        placed_nodes: vec![],
     }
     .build()
     .unwrap();

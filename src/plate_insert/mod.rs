@@ -16,7 +16,9 @@ use contact2d_fem::{Component, Model};
 use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, read_msh};
 
+mod placement;
 mod results;
+pub use placement::{PlacedContactEnd, contact_end_by_placement};
 pub use results::{PLATE_HALF_HEIGHT, PlateInsertResults};
 
 /// Which contour is the master of the pairs (the paper's two variants).
@@ -63,6 +65,9 @@ pub struct PlateInsert {
     /// Node-to-segment pairs on the mesh as given, or node-to-node pairs after sliding the
     /// slave nodes to the paired points (the paper's discretisation, spec §6).
     pub pairs: PairDiscretisation,
+    /// Master-contour positions η (on the master's own coordinate) where a corner node is to be
+    /// placed exactly (the paper's nodes at l* and b*; empty: the mesh as generated).
+    pub placed_nodes: Vec<f64>,
 }
 
 /// How pairs are discretised.
@@ -97,6 +102,15 @@ impl PlateInsert {
     /// Mesh, model or pairing errors.
     pub fn build(&self) -> Result<PlateInsertProblem, ContactError> {
         let mut mesh = read_msh(&self.mesh)?;
+        if !self.placed_nodes.is_empty() {
+            let (_, hole, insert) = self.model(mesh.clone())?;
+            let master = match self.variant {
+                PairingVariant::HoleMaster => &hole,
+                PairingVariant::InsertMaster => &insert,
+            };
+            let targets = self.placement_targets(&mesh, master)?;
+            move_nodes(&mut mesh, &targets, 2)?;
+        }
         if self.pairs == PairDiscretisation::NodeToNode {
             // Pair once node-to-segment, slide the slave nodes to the paired points, pair again.
             let (model, hole, insert) = self.model(mesh.clone())?;
@@ -114,6 +128,53 @@ impl PlateInsert {
         problem.set_gaps(self.gaps(&problem)?)?;
         problem.set_friction(self.friction)?;
         Ok(PlateInsertProblem { problem, hole, insert: insert_edge, variant: self.variant, eps: self.eps })
+    }
+
+    /// New positions of the master corner nodes nearest to each η of `placed_nodes` (on the
+    /// master circle), with the mid nodes of their two edges re-centred between the corners.
+    fn placement_targets(
+        &self,
+        mesh: &contact2d_mesh::Mesh,
+        master: &Contour,
+    ) -> Result<Vec<(contact2d_mesh::NodeId, [f64; 2])>, ContactError> {
+        // The master circle: the hole (centre 0, radius 1) or the insert (centre −ε, radius 1 − ε).
+        let (centre, radius) = match self.variant {
+            PairingVariant::HoleMaster => (-0.0, 1.0),
+            PairingVariant::InsertMaster => (-self.eps, 1.0 - self.eps),
+        };
+        let angle = |p: [f64; 2]| p[1].atan2(p[0] - centre);
+        let at = |a: f64| [centre + radius * a.cos(), radius * a.sin()];
+        let n = master.nodes.len();
+        if n < 5 || !master.edges.iter().all(|e| e.quadratic) {
+            return Err(ContactError::InvalidInput("node placement needs a quadratic master contour".into()));
+        }
+        let mut angles: Vec<f64> = master.nodes.iter().map(|v| angle(mesh.points[v.0])).collect();
+        let mut used = vec![];
+        for &eta in &self.placed_nodes {
+            if !(eta > 0.0 && eta < 1.0) {
+                return Err(ContactError::InvalidInput(format!("placed node at η = {eta} outside (0, 1)")));
+            }
+            let target = std::f64::consts::PI * (1.0 - eta);
+            // Interior corner nodes only (even positions; the ends stay on the symmetry line).
+            let corner = (1..n / 2)
+                .map(|c| 2 * c)
+                .filter(|i| !used.contains(i))
+                .min_by(|a, b| (angles[*a] - target).abs().total_cmp(&(angles[*b] - target).abs()))
+                .ok_or_else(|| ContactError::InvalidInput("no corner node left to place".into()))?;
+            if !(target < angles[corner - 2].max(angles[corner + 2])
+                && target > angles[corner - 2].min(angles[corner + 2]))
+            {
+                return Err(ContactError::InvalidInput(format!("η = {eta} cannot be reached by moving one node")));
+            }
+            angles[corner] = target;
+            angles[corner - 1] = 0.5 * (angles[corner - 2] + target);
+            angles[corner + 1] = 0.5 * (target + angles[corner + 2]);
+            used.push(corner);
+        }
+        let mut moved: Vec<usize> = used.iter().flat_map(|&c| [c - 1, c, c + 1]).collect();
+        moved.sort_unstable();
+        moved.dedup();
+        Ok(moved.into_iter().map(|i| (master.nodes[i], at(angles[i]))).collect())
     }
 
     /// The model of the two bodies with the boundary conditions of spec §2, and both contours.

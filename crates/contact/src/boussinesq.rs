@@ -42,6 +42,15 @@ pub enum BoussinesqLoading {
     ContactEnd(usize),
     /// The load w is given and l* is searched (the no-gap case).
     Load(f64),
+    /// Both given: the contact zone ends at `order[contact_end]` and the load is `load`; the
+    /// force left at l* measures how far the Boussinesq condition is from holding (used to
+    /// place a node at l* by root finding).
+    Fixed {
+        /// Position of l* in `order`.
+        contact_end: usize,
+        /// The load w.
+        load: f64,
+    },
 }
 
 /// The zones found by the algorithm, as positions in `order`.
@@ -88,7 +97,9 @@ pub fn solve_boussinesq_step(
     let m = problem.num_pairs();
     let frictional = interface.c_tt.nrows() == m && problem.is_frictional();
     let mut zones = match loading {
-        BoussinesqLoading::ContactEnd(i) => Zones { stick: i + 1, contact_end: i, slip: None },
+        BoussinesqLoading::ContactEnd(i) | BoussinesqLoading::Fixed { contact_end: i, .. } => {
+            Zones { stick: i + 1, contact_end: i, slip: None }
+        }
         BoussinesqLoading::Load(_) => Zones { stick: m, contact_end: m.saturating_sub(1), slip: None },
     };
     let mut iterations = 0;
@@ -168,7 +179,7 @@ fn solve_zones(
     }
     let x = state_system(problem, interface, start, &role, frictional).solve()?;
     let w = match loading {
-        BoussinesqLoading::Load(w) => w,
+        BoussinesqLoading::Load(w) | BoussinesqLoading::Fixed { load: w, .. } => w,
         BoussinesqLoading::ContactEnd(_) => {
             let last = order[zones.contact_end];
             let (l1, l2) = (x[(last, 0)], x[(last, 1)]);
