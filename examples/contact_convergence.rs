@@ -16,7 +16,7 @@ use std::time::Instant;
 
 use contact2d::contact::{ContactSolution, Interface, solve_frictionless_active_set, solve_frictionless_qp};
 use contact2d::doc_sections::write_section;
-use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
+use contact2d::plate_insert::{PairingVariant, PlateInsert};
 
 struct Case {
     title: &'static str,
@@ -69,21 +69,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let eps: f64 = case.eps.parse()?;
             let t0 = Instant::now();
             let problem = PlateInsert {
-                mesh: format!(
-                    "{}/meshes/plate_insert/plate_insert_eps{}_N{n}.msh",
-                    env!("CARGO_MANIFEST_DIR"),
-                    case.eps
-                ),
-                stiffness_ratio: 1.0,
-                rigid_insert: false,
-                poissons_ratio: 0.3,
                 variant: case.variant,
                 eps,
                 clearance: case.clearance,
-                gap_model: GapModel::Paper,
-                friction: 0.0,
-                pairs: PairDiscretisation::NodeToNode,
-                placed_nodes: vec![],
+                ..PlateInsert::paper(format!(
+                    "{}/meshes/plate_insert/plate_insert_eps{}_N{n}.msh",
+                    env!("CARGO_MANIFEST_DIR"),
+                    case.eps
+                ))
             }
             .build()?;
             let setup = t0.elapsed().as_secs_f64();

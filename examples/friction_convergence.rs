@@ -15,7 +15,7 @@ use contact2d::contact::{
     solve_frictional_qp,
 };
 use contact2d::doc_sections::write_section;
-use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
+use contact2d::plate_insert::PlateInsert;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut out = String::new();
@@ -38,17 +38,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for n in [16usize, 32, 64, 128] {
         let t0 = Instant::now();
         let case = PlateInsert {
-            mesh: format!("{}/meshes/plate_insert/plate_insert_eps0_N{n}.msh", env!("CARGO_MANIFEST_DIR")),
-            stiffness_ratio: 1.0,
-            rigid_insert: false,
-            poissons_ratio: 0.3,
-            variant: PairingVariant::HoleMaster,
-            eps: 0.0,
-            clearance: 0.0,
-            gap_model: GapModel::Paper,
             friction: 0.3,
-            pairs: PairDiscretisation::NodeToNode,
-            placed_nodes: vec![],
+            ..PlateInsert::paper(format!(
+                "{}/meshes/plate_insert/plate_insert_eps0_N{n}.msh",
+                env!("CARGO_MANIFEST_DIR")
+            ))
         }
         .build()?;
         let setup = t0.elapsed().as_secs_f64();

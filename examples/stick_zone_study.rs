@@ -12,7 +12,7 @@ use std::fmt::Write;
 
 use contact2d::contact::{Interface, StepAlgorithm, equal_steps, solve_history};
 use contact2d::doc_sections::write_section;
-use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
+use contact2d::plate_insert::{PairingVariant, PlateInsert};
 
 const STEPS: [usize; 8] = [1, 2, 3, 4, 5, 8, 20, 40];
 
@@ -32,17 +32,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for (row, variant) in [("U(1)", PairingVariant::HoleMaster), ("U(2)", PairingVariant::InsertMaster)] {
         for n in [32usize, 64] {
             let case = PlateInsert {
-                mesh: format!("{}/meshes/plate_insert/plate_insert_eps0.05_N{n}.msh", env!("CARGO_MANIFEST_DIR")),
-                stiffness_ratio: 1.0,
-                rigid_insert: false,
-                poissons_ratio: 0.3,
                 variant,
                 eps: 0.05,
                 clearance: 1.0,
-                gap_model: GapModel::Paper,
                 friction: 0.3,
-                pairs: PairDiscretisation::NodeToNode,
-                placed_nodes: vec![],
+                ..PlateInsert::paper(format!(
+                    "{}/meshes/plate_insert/plate_insert_eps0.05_N{n}.msh",
+                    env!("CARGO_MANIFEST_DIR")
+                ))
             }
             .build()?;
             let interface = Interface::new(&case.problem);

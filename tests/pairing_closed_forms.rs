@@ -19,17 +19,12 @@ const EPS: f64 = 0.05;
 
 fn build(variant: PairingVariant, gap_model: GapModel) -> contact2d::plate_insert::PlateInsertProblem {
     PlateInsert {
-        mesh: "meshes/plate_insert/plate_insert_eps0.05_N32.msh".into(),
-        stiffness_ratio: 1.0,
-        rigid_insert: false,
-        poissons_ratio: 0.3,
         variant,
         eps: EPS,
         clearance: EPS, // c = ε: ω = 1, gaps stay in length units
         gap_model,
-        friction: 0.0,
         pairs: PairDiscretisation::NodeToSegment,
-        placed_nodes: vec![],
+        ..PlateInsert::paper("meshes/plate_insert/plate_insert_eps0.05_N32.msh")
     }
     .build()
     .unwrap()
@@ -103,17 +98,9 @@ fn variant2_pairs_match_r_s_phi_hat_gamma2_and_u_rc() {
 #[test]
 fn neat_fit_pairs_are_node_to_node_with_zero_gap() {
     let case = PlateInsert {
-        mesh: "meshes/plate_insert/plate_insert_eps0_N16.msh".into(),
-        stiffness_ratio: 1.0,
-        rigid_insert: false,
-        poissons_ratio: 0.3,
-        variant: PairingVariant::HoleMaster,
-        eps: 0.0,
-        clearance: 0.0,
         gap_model: GapModel::Geometric,
-        friction: 0.0,
         pairs: PairDiscretisation::NodeToSegment,
-        placed_nodes: vec![],
+        ..PlateInsert::paper("meshes/plate_insert/plate_insert_eps0_N16.msh")
     }
     .build()
     .unwrap();

@@ -28,21 +28,17 @@ use contact2d::contact::{
     BoussinesqLoading, ContactSolution, ContactStatus, Interface, StepStart, solve_boussinesq_history,
     solve_boussinesq_step, solve_frictional_active_set, solve_frictional_qp,
 };
-use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem};
+use contact2d::plate_insert::{PlateInsert, PlateInsertProblem};
 
 fn case(eps: f64, clearance: f64) -> PlateInsertProblem {
     PlateInsert {
-        mesh: format!("meshes/plate_insert/plate_insert_eps{}_N32.msh", if eps > 0.0 { "0.05" } else { "0" }),
-        stiffness_ratio: 1.0,
-        rigid_insert: false,
-        poissons_ratio: 0.3,
-        variant: PairingVariant::HoleMaster,
         eps,
         clearance,
-        gap_model: GapModel::Paper,
         friction: 0.3,
-        pairs: PairDiscretisation::NodeToNode,
-        placed_nodes: vec![],
+        ..PlateInsert::paper(format!(
+            "meshes/plate_insert/plate_insert_eps{}_N32.msh",
+            if eps > 0.0 { "0.05" } else { "0" }
+        ))
     }
     .build()
     .unwrap()

@@ -16,22 +16,10 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use contact2d::contact::pair_tractions;
-use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert, contact_end_by_placement};
+use contact2d::plate_insert::{PlateInsert, contact_end_by_placement};
 
 fn template(mu: f64) -> PlateInsert {
-    PlateInsert {
-        mesh: "meshes/plate_insert/plate_insert_eps0_N32.msh".into(),
-        stiffness_ratio: 1.0,
-        rigid_insert: false,
-        poissons_ratio: 0.3,
-        variant: PairingVariant::HoleMaster,
-        eps: 0.0,
-        clearance: 0.0,
-        gap_model: GapModel::Paper,
-        friction: mu,
-        pairs: PairDiscretisation::NodeToNode,
-        placed_nodes: vec![],
-    }
+    PlateInsert { friction: mu, ..PlateInsert::paper("meshes/plate_insert/plate_insert_eps0_N32.msh") }
 }
 
 #[test]

@@ -18,21 +18,14 @@
 
 use contact2d::contact::{ContactStatus, Interface, StepStart, solve_frictional_active_set, solve_frictional_qp};
 use contact2d::fem::{BodyId, StressRecovery, stresses_along_curve};
-use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem};
+use contact2d::plate_insert::{PlateInsert, PlateInsertProblem};
 
 fn case(n: usize, rigid: bool, ratio: f64) -> PlateInsertProblem {
     PlateInsert {
-        mesh: format!("meshes/plate_insert/plate_insert_eps0_N{n}.msh"),
         stiffness_ratio: ratio,
         rigid_insert: rigid,
-        poissons_ratio: 0.3,
-        variant: PairingVariant::HoleMaster,
-        eps: 0.0,
-        clearance: 0.0,
-        gap_model: GapModel::Paper,
         friction: 0.3,
-        pairs: PairDiscretisation::NodeToNode,
-        placed_nodes: vec![],
+        ..PlateInsert::paper(format!("meshes/plate_insert/plate_insert_eps0_N{n}.msh"))
     }
     .build()
     .unwrap()

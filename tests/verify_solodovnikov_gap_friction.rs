@@ -28,9 +28,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use contact2d::contact::{ContactStatus, HistoryStep, Interface, PairState, StepAlgorithm, equal_steps, solve_history};
-use contact2d::plate_insert::{
-    GapModel, PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem, PlateInsertResults,
-};
+use contact2d::plate_insert::{PairingVariant, PlateInsert, PlateInsertProblem, PlateInsertResults};
 
 const W: f64 = 0.3838;
 
@@ -68,17 +66,11 @@ const U2: Row = Row {
 
 fn case(variant: PairingVariant, n: usize) -> PlateInsertProblem {
     PlateInsert {
-        mesh: format!("meshes/plate_insert/plate_insert_eps0.05_N{n}.msh"),
-        stiffness_ratio: 1.0,
-        rigid_insert: false,
-        poissons_ratio: 0.3,
         variant,
         eps: 0.05,
         clearance: 1.0,
-        gap_model: GapModel::Paper,
         friction: 0.3,
-        pairs: PairDiscretisation::NodeToNode,
-        placed_nodes: vec![],
+        ..PlateInsert::paper(format!("meshes/plate_insert/plate_insert_eps0.05_N{n}.msh"))
     }
     .build()
     .unwrap()

@@ -22,23 +22,16 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use contact2d::contact::{ContactStatus, Interface, solve_frictionless_active_set, solve_frictionless_qp};
-use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem};
+use contact2d::plate_insert::{PairingVariant, PlateInsert, PlateInsertProblem};
 
 const W: f64 = 0.3838;
 
 fn case(n: usize) -> PlateInsertProblem {
     PlateInsert {
-        mesh: format!("meshes/plate_insert/plate_insert_eps0.05_N{n}.msh"),
-        stiffness_ratio: 1.0,
-        rigid_insert: false,
-        poissons_ratio: 0.3,
         variant: PairingVariant::InsertMaster,
         eps: 0.05,
         clearance: 1.0,
-        gap_model: GapModel::Paper,
-        friction: 0.0,
-        pairs: PairDiscretisation::NodeToNode,
-        placed_nodes: vec![],
+        ..PlateInsert::paper(format!("meshes/plate_insert/plate_insert_eps0.05_N{n}.msh"))
     }
     .build()
     .unwrap()

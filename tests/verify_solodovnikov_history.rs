@@ -18,22 +18,15 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use contact2d::contact::{BoussinesqLoading, ContactStatus, Interface, PairState, solve_boussinesq_history};
-use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
+use contact2d::plate_insert::PlateInsert;
 
 #[test]
 fn history_v1_behaves_as_the_paper_reports() {
     let case = PlateInsert {
-        mesh: "meshes/plate_insert/plate_insert_eps0.05_N32.msh".into(),
-        stiffness_ratio: 1.0,
-        rigid_insert: false,
-        poissons_ratio: 0.3,
-        variant: PairingVariant::HoleMaster,
         eps: 0.05,
         clearance: 1.0,
-        gap_model: GapModel::Paper,
         friction: 0.3,
-        pairs: PairDiscretisation::NodeToNode,
-        placed_nodes: vec![],
+        ..PlateInsert::paper("meshes/plate_insert/plate_insert_eps0.05_N32.msh")
     }
     .build()
     .unwrap();

@@ -28,21 +28,13 @@
 use contact2d::contact::{
     ContactSolution, ContactStatus, Interface, PairState, StepStart, solve_frictional_active_set, solve_frictional_qp,
 };
-use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem};
+use contact2d::plate_insert::{PairDiscretisation, PlateInsert, PlateInsertProblem};
 
 fn case(n: usize) -> PlateInsertProblem {
     let case = PlateInsert {
-        mesh: format!("meshes/plate_insert/plate_insert_eps0_N{n}.msh"),
-        stiffness_ratio: 1.0,
-        rigid_insert: false,
-        poissons_ratio: 0.3,
-        variant: PairingVariant::HoleMaster,
-        eps: 0.0,
-        clearance: 0.0,
-        gap_model: GapModel::Paper,
         friction: 0.3,
         pairs: PairDiscretisation::NodeToSegment,
-        placed_nodes: vec![],
+        ..PlateInsert::paper(format!("meshes/plate_insert/plate_insert_eps0_N{n}.msh"))
     }
     .build()
     .unwrap();

@@ -25,7 +25,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use contact2d::contact::{ContactStatus, Interface, PairState, solve_frictionless_active_set, solve_frictionless_qp};
-use contact2d::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
+use contact2d::plate_insert::{PairDiscretisation, PlateInsert};
 
 fn within(measured: f64, published: f64, rel: f64, what: &str) {
     let err = (measured - published).abs() / published.abs();
@@ -34,17 +34,8 @@ fn within(measured: f64, published: f64, rel: f64, what: &str) {
 
 fn check_level(n: usize) {
     let case = PlateInsert {
-        mesh: format!("meshes/plate_insert/plate_insert_eps0_N{n}.msh"),
-        stiffness_ratio: 1.0,
-        rigid_insert: false,
-        poissons_ratio: 0.3,
-        variant: PairingVariant::HoleMaster,
-        eps: 0.0,
-        clearance: 0.0,
-        gap_model: GapModel::Paper,
-        friction: 0.0,
         pairs: PairDiscretisation::NodeToSegment,
-        placed_nodes: vec![],
+        ..PlateInsert::paper(format!("meshes/plate_insert/plate_insert_eps0_N{n}.msh"))
     }
     .build()
     .unwrap();
@@ -92,17 +83,8 @@ fn no_gap_frictionless_n64_matches_the_paper_with_both_algorithms() {
 #[test]
 fn no_gap_frictionless_solution_scales_linearly_with_the_load() {
     let case = PlateInsert {
-        mesh: "meshes/plate_insert/plate_insert_eps0_N16.msh".into(),
-        stiffness_ratio: 1.0,
-        rigid_insert: false,
-        poissons_ratio: 0.3,
-        variant: PairingVariant::HoleMaster,
-        eps: 0.0,
-        clearance: 0.0,
-        gap_model: GapModel::Paper,
-        friction: 0.0,
         pairs: PairDiscretisation::NodeToSegment,
-        placed_nodes: vec![],
+        ..PlateInsert::paper("meshes/plate_insert/plate_insert_eps0_N16.msh")
     }
     .build()
     .unwrap();

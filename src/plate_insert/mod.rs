@@ -96,6 +96,25 @@ pub struct PlateInsertProblem {
 }
 
 impl PlateInsert {
+    /// The paper's case on the mesh at `mesh`: E2 = E1, ν = 0.3, variant 1, neat fit (ε = c = 0),
+    /// the paper's gap model, no friction, node-to-node pairs, elastic insert, no placed nodes.
+    /// Change fields with struct update syntax: `PlateInsert { friction: 0.3, ..PlateInsert::paper(m) }`.
+    pub fn paper(mesh: impl Into<String>) -> PlateInsert {
+        PlateInsert {
+            mesh: mesh.into(),
+            stiffness_ratio: 1.0,
+            rigid_insert: false,
+            poissons_ratio: 0.3,
+            variant: PairingVariant::HoleMaster,
+            eps: 0.0,
+            clearance: 0.0,
+            gap_model: GapModel::Paper,
+            friction: 0.0,
+            pairs: PairDiscretisation::NodeToNode,
+            placed_nodes: vec![],
+        }
+    }
+
     /// Builds the model, the pairs and the contact problem.
     ///
     /// # Errors

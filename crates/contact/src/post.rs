@@ -25,36 +25,51 @@ pub fn pair_tractions(problem: &ContactProblem, solution: &ContactSolution) -> (
     (p, q)
 }
 
+/// Pair indices sorted by η.
+fn sorted_by_eta(eta: &[f64]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..eta.len()).collect();
+    order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
+    order
+}
+
+/// The zone end from a quantity that opens like `(η − end)^{3/2}` beyond it: `v^{2/3}` is
+/// interpolated linearly over the first two pairs past the end (`after`, in η order) and
+/// clamped to the bracket; without a second pair, the bracket's lower end.
+fn three_halves_end(eta: &[f64], v: &[f64], after: &[usize], bracket: [f64; 2]) -> f64 {
+    let [f, f2] = match after {
+        [f, f2, ..] => [*f, *f2],
+        _ => return bracket[0],
+    };
+    let (d1, d2) = (v[f].abs().powf(2.0 / 3.0), v[f2].abs().powf(2.0 / 3.0));
+    let end = if d2 > d1 { eta[f] - d1 * (eta[f2] - eta[f]) / (d2 - d1) } else { eta[f] };
+    end.clamp(bracket[0], bracket[1])
+}
+
+/// The last contact and first free positions in η order, `None` if there is no such pair.
+fn free_transition(order: &[usize], state: &[PairState]) -> Option<usize> {
+    let first_free = order.iter().position(|&k| state[k] == PairState::Free)?;
+    (first_free > 0).then_some(first_free)
+}
+
 /// The contact end on a coordinate `eta` per pair (contact growing from small η), from the gaps
 /// of the first two free pairs (see the module docs).
 ///
 /// Returns `(l, bracket)` with `bracket = [last contact η, first free η]`; `None` when no pair
 /// or every pair is in contact, or nothing is in contact.
 pub fn contact_end(eta: &[f64], gap: &[f64], state: &[PairState]) -> Option<(f64, [f64; 2])> {
-    let mut order: Vec<usize> = (0..eta.len()).collect();
-    order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
-    let first_free = order.iter().position(|&k| state[k] == PairState::Free)?;
-    if first_free == 0 {
-        return None;
-    }
-    let (c, f) = (order[first_free - 1], order[first_free]);
-    let bracket = [eta[c], eta[f]];
-    let Some(&f2) = order.get(first_free + 1) else { return Some((eta[f], bracket)) };
-    let (g1, g2) = (gap[f].max(0.0).powf(2.0 / 3.0), gap[f2].max(0.0).powf(2.0 / 3.0));
-    let l = if g2 > g1 { eta[f] - g1 * (eta[f2] - eta[f]) / (g2 - g1) } else { eta[f] };
-    Some((l.clamp(bracket[0], bracket[1]), bracket))
+    let order = sorted_by_eta(eta);
+    let first_free = free_transition(&order, state)?;
+    let bracket = [eta[order[first_free - 1]], eta[order[first_free]]];
+    let gaps: Vec<f64> = gap.iter().map(|g| g.max(0.0)).collect();
+    Some((three_halves_end(eta, &gaps, &order[first_free..], bracket), bracket))
 }
 
 /// The contact end from the pressures of the last two contact pairs, `p ∝ √(l − η)`.
 ///
 /// Returns `(l, bracket)` as [`contact_end`].
 pub fn contact_end_from_pressure(eta: &[f64], pressure: &[f64], state: &[PairState]) -> Option<(f64, [f64; 2])> {
-    let mut order: Vec<usize> = (0..eta.len()).collect();
-    order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
-    let first_free = order.iter().position(|&k| state[k] == PairState::Free)?;
-    if first_free == 0 {
-        return None;
-    }
+    let order = sorted_by_eta(eta);
+    let first_free = free_transition(&order, state)?;
     let (c, f) = (order[first_free - 1], order[first_free]);
     let bracket = [eta[c], eta[f]];
     if first_free < 2 {
@@ -70,18 +85,14 @@ pub fn contact_end_from_pressure(eta: &[f64], pressure: &[f64], state: &[PairSta
 /// slip increments of the first two slipping pairs (see the module docs). `None` without a
 /// stick-to-slip transition; without slip, use the contact end instead.
 pub fn stick_end(eta: &[f64], slip_increment: &[f64], state: &[PairState]) -> Option<(f64, [f64; 2])> {
-    let mut order: Vec<usize> = (0..eta.len()).collect();
-    order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
+    let order = sorted_by_eta(eta);
     let slipping = |k: usize| matches!(state[k], PairState::SlipPositive | PairState::SlipNegative);
     let last_stick = order.iter().rposition(|&k| state[k] == PairState::Stick)?;
     let first_slip = last_stick + 1 + order[last_stick + 1..].iter().position(|&k| slipping(k))?;
-    let (c, f) = (order[last_stick], order[first_slip]);
-    let bracket = [eta[c], eta[f]];
-    let next = order.get(first_slip + 1).copied().filter(|&k| slipping(k));
-    let Some(f2) = next else { return Some((eta[c], bracket)) };
-    let (d1, d2) = (slip_increment[f].abs().powf(2.0 / 3.0), slip_increment[f2].abs().powf(2.0 / 3.0));
-    let b = if d2 > d1 { eta[f] - d1 * (eta[f2] - eta[f]) / (d2 - d1) } else { eta[f] };
-    Some((b.clamp(bracket[0], bracket[1]), bracket))
+    let bracket = [eta[order[last_stick]], eta[order[first_slip]]];
+    let run = order[first_slip..].iter().take_while(|&&k| slipping(k)).count();
+    let after = &order[first_slip..first_slip + run];
+    Some((three_halves_end(eta, slip_increment, after, bracket), bracket))
 }
 
 #[cfg(test)]

@@ -59,6 +59,8 @@ pub struct ContactProblem {
     pub pattern_rhs: Vec<f64>,
     /// Constrained values of the unit load pattern (the model's prescribed values).
     pub pattern_prescribed: Vec<f64>,
+    /// The largest diagonal entry of `K_ff`: a stiffness scale for judging round-off forces.
+    pub stiffness_scale: f64,
 }
 
 impl ContactProblem {
@@ -90,6 +92,10 @@ impl ContactProblem {
             normal_rows.push(pair_row(&system, p, p.normal, slave)?);
             tangent_rows.push(pair_row(&system, p, p.tangent, slave)?);
         }
+        let k = system.stiffness.as_ref();
+        let stiffness_scale = (0..k.ncols())
+            .flat_map(|j| k.row_idx_of_col(j).zip(k.val_of_col(j)).filter(move |(i, _)| *i == j).map(|(_, v)| v.abs()))
+            .fold(0.0f64, f64::max);
         let gap = pairs.iter().map(|p| p.gap).collect();
         let friction = vec![0.0; pairs.len()];
         // A tangential row whose free part is negligible (< 1e-3 of the whole row: the tangent
@@ -114,6 +120,7 @@ impl ContactProblem {
             tangential,
             pattern_rhs,
             pattern_prescribed,
+            stiffness_scale,
         })
     }
 

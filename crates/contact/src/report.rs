@@ -116,10 +116,7 @@ pub fn finish_from_displacement(
 /// force `k̄ U` that the largest stiffness entry exerts over the displacement scale (so that an
 /// unloaded state's round-off forces are not mistaken for contact).
 pub(crate) fn force_scale(problem: &ContactProblem, w: f64, lambda: &[f64], tau: &[f64], length_scale: f64) -> f64 {
-    let k = problem.system.stiffness.as_ref();
-    let k_max = (0..k.ncols())
-        .flat_map(|j| k.row_idx_of_col(j).zip(k.val_of_col(j)).filter(move |(i, _)| *i == j).map(|(_, v)| v.abs()))
-        .fold(0.0f64, f64::max);
+    let k_max = problem.stiffness_scale;
     let load_force = problem.pattern_rhs.iter().fold(0.0f64, |a, r| a.max((w * r).abs()));
     lambda.iter().chain(tau).fold(load_force.max(k_max * length_scale), |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE)
 }

@@ -19,7 +19,7 @@ use contact2d_mesh::{CellKind, NodeId};
 use faer::sparse::{SparseColMat, Triplet};
 use rayon::prelude::*;
 
-use crate::dof::{Dof, DofKind, DofMap};
+use crate::dof::{DofKind, DofMap};
 use crate::error::FemError;
 use crate::model::{EdgeLoad, Model};
 use crate::rigid::check_rigid_modes;
@@ -206,25 +206,5 @@ impl LinearSystem {
                 from_free + from_fixed - self.load[self.dofs.constrained_dofs()[j].0]
             })
             .collect()
-    }
-
-    /// `K_ff x` using the stored lower triangle.
-    pub fn apply_stiffness(&self, x: &[f64]) -> Vec<f64> {
-        let k = self.stiffness.as_ref();
-        let mut y = vec![0.0; x.len()];
-        for j in 0..k.ncols() {
-            for (i, v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
-                y[i] += v * x[j];
-                if i != j {
-                    y[j] += v * x[i];
-                }
-            }
-        }
-        y
-    }
-
-    /// Global DOF of free index `i`.
-    pub fn free_dof(&self, i: usize) -> Dof {
-        self.dofs.free_dofs()[i]
     }
 }

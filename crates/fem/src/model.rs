@@ -76,7 +76,8 @@ pub enum EdgeLoad {
         /// Traction vector.
         traction: [f64; 2],
     },
-    /// Normal pressure `p` (positive pushes against the body; needs counter-clockwise edges).
+    /// Normal pressure `p` (positive pushes against the body; the body's side of the edge is
+    /// found from the cell that owns it).
     Pressure {
         /// Physical group name (1D).
         group: String,

@@ -107,13 +107,6 @@ impl CurveSample {
         let [t1, t2] = self.tangent;
         s11 * t1 * t1 + 2.0 * s12 * t1 * t2 + s22 * t2 * t2
     }
-
-    /// Traction on the curve with unit normal `n = (t2, -t1)`: `σ n`.
-    pub fn traction(&self) -> [f64; 2] {
-        let [s11, s22, s12] = self.stress;
-        let n = [self.tangent[1], -self.tangent[0]];
-        [s11 * n[0] + s12 * n[1], s12 * n[0] + s22 * n[1]]
-    }
 }
 
 /// Stresses of `body` at the nodes of `contour`, as functions of arc length.
