@@ -1,6 +1,7 @@
 //! Running a scene: build the problem, solve with the chosen algorithm over the load history,
 //! report the paper's quantities.
 
+use std::sync::Arc;
 use std::time::Instant;
 
 use serde::Serialize;
@@ -10,7 +11,30 @@ use contact2d_contact::{
     solve_boussinesq_history, solve_history,
 };
 
+use crate::plate_insert::{PlateInsertProblem, PlateInsertResults};
 use crate::scene::{ContactAlgorithm, Scene};
+
+/// A solved scene: the JSON summary plus everything the outputs (figures, CSV, VTU) need.
+#[derive(Debug, Clone)]
+pub struct RunOutcome {
+    /// The summary (the `--json` object).
+    pub report: RunReport,
+    /// The solved steps in load order (one for a single or scaled solve).
+    pub steps: Vec<SolvedStep>,
+}
+
+/// One solved load step with the discrete problem it was solved on.
+#[derive(Debug, Clone)]
+pub struct SolvedStep {
+    /// The problem (mesh, model, pairs) of this step; steps on the same mesh share it.
+    pub case: Arc<PlateInsertProblem>,
+    /// The step's contact solution (displacements in the case's global DOF order).
+    pub solution: ContactSolution,
+    /// The paper's quantities of this step.
+    pub results: PlateInsertResults,
+    /// Φ_f accumulated up to and including this step.
+    pub dissipated: f64,
+}
 
 /// KKT residuals as reported in JSON.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -104,7 +128,15 @@ pub struct StepReport {
     pub W: f64,
 }
 
-/// Runs a scene.
+/// Runs a scene and returns its summary (see [`solve_scene`] for what it does).
+///
+/// # Errors
+/// Problem set-up failures.
+pub fn run_scene(scene: &Scene) -> Result<RunReport, ContactError> {
+    solve_scene(scene).map(|outcome| outcome.report)
+}
+
+/// Solves a scene: its summary plus the solved steps.
 ///
 /// Without gap the solution is linear in w, with or without friction (spec §5.2: the zones form
 /// at the first instant and never change): it is solved once at w = 1 and scaled. Otherwise the
@@ -112,7 +144,7 @@ pub struct StepReport {
 ///
 /// # Errors
 /// Problem set-up failures.
-pub fn run_scene(scene: &Scene) -> Result<RunReport, ContactError> {
+pub fn solve_scene(scene: &Scene) -> Result<RunOutcome, ContactError> {
     let start = Instant::now();
     let p = &scene.plate_insert;
     if !p.load.is_finite() || p.load < 0.0 {
@@ -124,7 +156,7 @@ pub fn run_scene(scene: &Scene) -> Result<RunReport, ContactError> {
     if p.steps == 0 {
         return Err(ContactError::InvalidInput("steps must be at least 1".into()));
     }
-    let case = scene.plate_insert().build()?;
+    let case = Arc::new(scene.plate_insert().build()?);
     let problem = &case.problem;
     let interface = Interface::new(problem);
     let scaled = problem.is_gapless() && p.l_steps.is_empty();
@@ -156,31 +188,45 @@ pub fn run_scene(scene: &Scene) -> Result<RunReport, ContactError> {
             step.dissipated *= p.load * p.load;
         }
     }
-    let mut steps = Vec::with_capacity(history.len());
+    let steps = history
+        .into_iter()
+        .map(|step| {
+            Ok(SolvedStep {
+                results: case.results(&step.solution)?,
+                case: Arc::clone(&case),
+                solution: step.solution,
+                dissipated: step.dissipated,
+            })
+        })
+        .collect::<Result<Vec<_>, ContactError>>()?;
+    let report = summarise(scene, &steps, start)?;
+    Ok(RunOutcome { report, steps })
+}
+
+/// The summary of solved steps: the last step's quantities at the top level, the work W = ∫ P dw
+/// by the trapezoid rule over the steps.
+fn summarise(scene: &Scene, solved: &[SolvedStep], start: Instant) -> Result<RunReport, ContactError> {
+    let p = &scene.plate_insert;
+    let mut steps = Vec::with_capacity(solved.len());
     let (mut work, mut last_w, mut last_p) = (0.0, 0.0, 0.0);
-    for step in &history {
-        let q = case.results(&step.solution)?;
+    for step in solved {
+        let q = &step.results;
         let w = step.solution.load_factor;
         work += 0.5 * (last_p + q.pull) * (w - last_w);
         (last_w, last_p) = (w, q.pull);
-        steps.push((
-            StepReport {
-                w,
-                l: q.contact_end,
-                b: q.stick_end,
-                P: q.pull,
-                Phi_E1: q.energy_plate,
-                Phi_E2: q.energy_insert,
-                Phi_f: step.dissipated,
-                W: work,
-            },
-            q,
-        ));
+        steps.push(StepReport {
+            w,
+            l: q.contact_end,
+            b: q.stick_end,
+            P: q.pull,
+            Phi_E1: q.energy_plate,
+            Phi_E2: q.energy_insert,
+            Phi_f: step.dissipated,
+            W: work,
+        });
     }
-    let last = history.last().ok_or_else(|| ContactError::InvalidInput("no load step".into()))?;
-    let w_final = last.solution.load_factor;
-    let solution = &last.solution;
-    let (final_step, q) = steps.last().cloned().ok_or_else(|| ContactError::InvalidInput("no load step".into()))?;
+    let last = solved.last().ok_or_else(|| ContactError::InvalidInput("no load step".into()))?;
+    let (solution, q, problem) = (&last.solution, &last.results, &last.case.problem);
     Ok(RunReport {
         scene: scene.name.clone(),
         l: q.contact_end,
@@ -191,27 +237,27 @@ pub fn run_scene(scene: &Scene) -> Result<RunReport, ContactError> {
         P: q.pull,
         Phi_E1: q.energy_plate,
         Phi_E2: q.energy_insert,
-        Phi_f: final_step.Phi_f,
-        W: final_step.W,
+        Phi_f: last.dissipated,
+        W: work,
         sigma_star: q.sigma_star,
         K: q.stress_concentration,
         insert_hoop_max: q.insert_hoop_max,
-        w: if p.l_steps.is_empty() { p.load } else { w_final },
+        w: if p.l_steps.is_empty() { p.load } else { solution.load_factor },
         mu: p.friction,
         dofs: problem.system.dofs.num_free(),
         pairs: problem.num_pairs(),
         algorithm: scene.solver.algorithm,
         status: status_name(solution.status).into(),
-        iterations: history.iter().map(|s| s.solution.iterations).sum(),
+        iterations: solved.iter().map(|s| s.solution.iterations).sum(),
         kkt: KktReport {
             max_penetration: solution.kkt.max_penetration,
             max_complementarity: solution.kkt.max_complementarity,
             max_cone_violation: solution.kkt.max_cone_violation,
-            min_dissipation: history.iter().map(|s| s.solution.kkt.min_dissipation).fold(f64::INFINITY, f64::min),
+            min_dissipation: solved.iter().map(|s| s.solution.kkt.min_dissipation).fold(f64::INFINITY, f64::min),
         },
-        steps: steps.into_iter().map(|(s, _)| s).collect(),
+        steps,
         time_s: start.elapsed().as_secs_f64(),
-        solve_time_s: history.iter().map(|s| s.solution.time.as_secs_f64()).sum(),
+        solve_time_s: solved.iter().map(|s| s.solution.time.as_secs_f64()).sum(),
     })
 }
 
