@@ -44,6 +44,13 @@ enum Command {
         /// Write `summary.json` into this directory.
         #[arg(long, value_name = "DIR")]
         out: Option<std::path::PathBuf>,
+        /// No progress bar (it is hidden anyway when stdout is not a terminal).
+        #[arg(long, short)]
+        quiet: bool,
+        /// Log the algorithm's iterations of every step: state changes, pairs in contact and
+        /// slipping, residuals.
+        #[arg(long, short)]
+        verbose: bool,
     },
 }
 
@@ -62,9 +69,15 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 println!("{}\n{summary}", file.display());
             }
         }
-        Command::Run { scene, set, json, out } => {
+        Command::Run { scene, set, json, out, quiet, verbose } => {
             let scene = contact2d::scene::Scene::load(&scene, &set)?;
-            let report = contact2d::run::run_scene(&scene)?;
+            let mut bar = StepBar::new(quiet || json);
+            let outcome = contact2d::run::solve_scene_with(&scene, &mut bar)?;
+            bar.finish();
+            if verbose {
+                print_iterations(&outcome);
+            }
+            let report = outcome.report;
             let text = serde_json::to_string_pretty(&report)?;
             if let Some(dir) = out {
                 std::fs::create_dir_all(&dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
@@ -105,6 +118,54 @@ fn print_report(r: &contact2d::run::RunReport) {
     );
     println!("  time {:.3} s (contact solve {:.4} s)", r.time_s, r.solve_time_s);
 }
+/// The iteration log of every step (`run -v`), on stderr so that `--json` stays parseable.
+fn print_iterations(outcome: &contact2d::run::RunOutcome) {
+    for (i, step) in outcome.steps.iter().enumerate() {
+        let s = &step.solution;
+        eprintln!("step {}: w = {:.6}, {:?} after {} iterations", i + 1, s.load_factor, s.status, s.iterations);
+        eprintln!("  iter  changed  contact  slipping  residual");
+        for r in &s.trace {
+            eprintln!(
+                "  {:>4}  {:>7}  {:>7}  {:>8}  {:>9.2e}",
+                r.iteration, r.changed, r.in_contact, r.slipping, r.residual
+            );
+        }
+    }
+}
+
+/// A progress bar over the load steps of a run, drawn only on a terminal.
+struct StepBar(Option<indicatif::ProgressBar>);
+
+impl StepBar {
+    fn new(quiet: bool) -> StepBar {
+        use std::io::IsTerminal;
+        if quiet || !std::io::stdout().is_terminal() {
+            return StepBar(None);
+        }
+        let bar = indicatif::ProgressBar::new(0);
+        let style = indicatif::ProgressStyle::with_template("{bar:30} step {pos}/{len}  {msg}  eta {eta}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar());
+        bar.set_style(style);
+        StepBar(Some(bar))
+    }
+
+    fn finish(&self) {
+        if let Some(bar) = &self.0 {
+            bar.finish_and_clear();
+        }
+    }
+}
+
+impl contact2d::run::Progress for StepBar {
+    fn step_done(&mut self, done: usize, total: usize, w: f64) {
+        if let Some(bar) = &self.0 {
+            bar.set_length(total as u64);
+            bar.set_position(done as u64);
+            bar.set_message(format!("w = {w:.4}"));
+        }
+    }
+}
+
 fn main() -> ExitCode {
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,

@@ -7,11 +7,13 @@ use std::time::Instant;
 use serde::Serialize;
 
 use contact2d_contact::{
-    BoussinesqLoading, ContactError, ContactSolution, ContactStatus, Interface, StepAlgorithm, equal_steps,
-    solve_boussinesq_history, solve_history,
+    BoussinesqLoading, ContactError, ContactSolution, ContactStatus, HistoryStep, Interface, StepAlgorithm,
+    equal_steps, solve_boussinesq_history, solve_history_with,
 };
 
-use crate::plate_insert::{PlateInsertProblem, PlateInsertResults};
+use crate::plate_insert::{
+    PlacedLoading, PlacedStep, PlateInsertProblem, PlateInsertResults, ZoneEndSearch, solve_placed_history,
+};
 use crate::scene::{ContactAlgorithm, Scene};
 
 /// A solved scene: the JSON summary plus everything the outputs (figures, CSV, VTU) need.
@@ -145,6 +147,29 @@ pub fn run_scene(scene: &Scene) -> Result<RunReport, ContactError> {
 /// # Errors
 /// Problem set-up failures.
 pub fn solve_scene(scene: &Scene) -> Result<RunOutcome, ContactError> {
+    solve_scene_with(scene, &mut Silent)
+}
+
+/// What a run tells while it goes: the CLI shows it as a progress bar (the library prints
+/// nothing).
+pub trait Progress {
+    /// Step `done` of `total` is solved, at load w.
+    fn step_done(&mut self, done: usize, total: usize, w: f64);
+}
+
+/// A [`Progress`] that ignores everything.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Silent;
+
+impl Progress for Silent {
+    fn step_done(&mut self, _done: usize, _total: usize, _w: f64) {}
+}
+
+/// [`solve_scene`] reporting each solved step to `progress`.
+///
+/// # Errors
+/// Problem set-up failures.
+pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<RunOutcome, ContactError> {
     let start = Instant::now();
     let p = &scene.plate_insert;
     if !p.load.is_finite() || p.load < 0.0 {
@@ -156,18 +181,40 @@ pub fn solve_scene(scene: &Scene) -> Result<RunOutcome, ContactError> {
     if p.steps == 0 {
         return Err(ContactError::InvalidInput("steps must be at least 1".into()));
     }
+    // Without clearance every gap is zero (both gap models scale with c), so the solution is
+    // linear in w (spec §5.2): solved once at w = 1 and scaled.
+    let scaled = p.clearance == 0.0 && p.l_steps.is_empty();
+    let loads = if scaled { vec![1.0] } else { equal_steps(p.load, p.steps) };
+    let total = if p.l_steps.is_empty() { loads.len() } else { p.l_steps.len() };
+    let mut done = 0;
+    let mut report_step = |w: f64| {
+        done += 1;
+        progress.step_done(done, total, if scaled { w * p.load } else { w });
+    };
+    if scene.solver.algorithm == ContactAlgorithm::Boussinesq && scene.solver.place_zone_ends {
+        let loadings: Vec<PlacedLoading> = if p.l_steps.is_empty() {
+            loads.iter().map(|w| PlacedLoading::Load(*w)).collect()
+        } else {
+            p.l_steps.iter().map(|l| PlacedLoading::ContactEnd(*l)).collect()
+        };
+        let placed = solve_placed_history(&scene.plate_insert(), &loadings, ZoneEndSearch::default(), &mut |s| {
+            report_step(s.load)
+        })?;
+        let steps = placed_steps(placed, if scaled { p.load } else { 1.0 })?;
+        let report = summarise(scene, &steps, start)?;
+        return Ok(RunOutcome { report, steps });
+    }
     let case = Arc::new(scene.plate_insert().build()?);
     let problem = &case.problem;
     let interface = Interface::new(problem);
-    let scaled = problem.is_gapless() && p.l_steps.is_empty();
-    let loads = if scaled { vec![1.0] } else { equal_steps(p.load, p.steps) };
     let max_iterations = scene.solver.max_iterations;
+    let mut on_step = |s: &HistoryStep| report_step(s.solution.load_factor);
     let mut history = match scene.solver.algorithm {
         ContactAlgorithm::ActiveSet => {
-            solve_history(problem, &interface, StepAlgorithm::ActiveSet, &loads, max_iterations)
+            solve_history_with(problem, &interface, StepAlgorithm::ActiveSet, &loads, max_iterations, &mut on_step)
         }
         ContactAlgorithm::Clarabel => {
-            solve_history(problem, &interface, StepAlgorithm::Clarabel, &loads, max_iterations)
+            solve_history_with(problem, &interface, StepAlgorithm::Clarabel, &loads, max_iterations, &mut on_step)
         }
         ContactAlgorithm::Boussinesq => {
             let eta = case.eta_master();
@@ -179,7 +226,10 @@ pub fn solve_scene(scene: &Scene) -> Result<RunOutcome, ContactError> {
                 p.l_steps.iter().map(|l| BoussinesqLoading::ContactEnd(nearest_position(&order, &eta, *l))).collect()
             };
             // The contact-end search of a given load moves one pair per iteration.
-            solve_boussinesq_history(problem, &interface, &order, &loadings, max_iterations.max(2 * order.len()))?
+            let history =
+                solve_boussinesq_history(problem, &interface, &order, &loadings, max_iterations.max(2 * order.len()))?;
+            history.iter().for_each(&mut on_step);
+            history
         }
     };
     if scaled {
@@ -201,6 +251,29 @@ pub fn solve_scene(scene: &Scene) -> Result<RunOutcome, ContactError> {
         .collect::<Result<Vec<_>, ContactError>>()?;
     let report = summarise(scene, &steps, start)?;
     Ok(RunOutcome { report, steps })
+}
+
+/// Solved steps from a history with placed zone ends; `scale` multiplies a solution that is
+/// linear in the load (no gap: solved at w = 1), 1 otherwise. l and b are the placed nodes'
+/// positions (exact, not interpolated).
+fn placed_steps(placed: Vec<(PlacedStep, f64)>, scale: f64) -> Result<Vec<SolvedStep>, ContactError> {
+    placed
+        .into_iter()
+        .map(|(step, dissipated)| {
+            let mut solution = step.step.solution;
+            if scale != 1.0 {
+                scale_solution(&mut solution, scale);
+            }
+            let case = Arc::new(step.case);
+            let mut results = case.results(&solution)?;
+            results.contact_end = Some(step.contact_end_hole);
+            results.contact_bracket = Some([step.contact_end_hole; 2]);
+            results.contact_end_master = Some(step.contact_end);
+            results.stick_end = Some(step.stick_end_hole.unwrap_or(step.contact_end_hole));
+            results.stick_bracket = results.stick_end.map(|b| [b; 2]);
+            Ok(SolvedStep { case, solution, results, dissipated: dissipated * scale * scale })
+        })
+        .collect()
 }
 
 /// The summary of solved steps: the last step's quantities at the top level, the work W = ∫ P dw

@@ -22,6 +22,7 @@
 //! [solver]
 //! algorithm = "active_set"      # or "clarabel", "boussinesq"
 //! max_iterations = 100
+//! place_zone_ends = true        # Boussinesq: nodes placed at l* and b* (the paper's way)
 //! ```
 //!
 //! Unknown keys are errors. `--set key.path=value` sets any value (also one the file leaves at its
@@ -85,6 +86,15 @@ pub struct SolverSection {
     /// Iteration limit of the active set.
     #[serde(default = "default_max_iterations")]
     pub max_iterations: usize,
+    /// Boussinesq only: place master nodes exactly at the zone ends l* and b* by root finding
+    /// (the paper's mesh adjustment, default); `false` keeps the generated mesh and resolves
+    /// the zone ends to its nodes.
+    #[serde(default = "yes")]
+    pub place_zone_ends: bool,
+}
+
+fn yes() -> bool {
+    true
 }
 
 fn default_max_iterations() -> usize {

@@ -16,10 +16,13 @@ use contact2d_fem::{Component, Model};
 use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, read_msh};
 
-mod placement;
+mod contour_history;
 mod results;
-pub use placement::{PlacedContactEnd, contact_end_by_placement};
+mod roots;
+mod zone_ends;
+pub use contour_history::ContourHistory;
 pub use results::{PLATE_HALF_HEIGHT, PlateInsertResults};
+pub use zone_ends::{PlacedLoading, PlacedStep, ZoneEndSearch, place_zone_ends, solve_placed_history};
 
 /// Which contour is the master of the pairs (the paper's two variants).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -65,9 +68,21 @@ pub struct PlateInsert {
     /// Node-to-segment pairs on the mesh as given, or node-to-node pairs after sliding the
     /// slave nodes to the paired points (the paper's discretisation, spec §6).
     pub pairs: PairDiscretisation,
-    /// Master-contour positions η (on the master's own coordinate) where a corner node is to be
-    /// placed exactly (the paper's nodes at l* and b*; empty: the mesh as generated).
-    pub placed_nodes: Vec<f64>,
+    /// Master corner nodes moved along the master circle to given η (the paper's nodes at l*
+    /// and b*; empty: the mesh as generated).
+    pub placed_nodes: Vec<NodePlacement>,
+}
+
+/// A master corner node moved along the master circle to η = `eta` on the master's own
+/// coordinate, its two edges' mid nodes re-centred and the interior relaxed (topology unchanged).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NodePlacement {
+    /// Target η on the master's own coordinate.
+    pub eta: f64,
+    /// The corner to move: its position in the master contour's node list (even, interior). It
+    /// may travel strictly between its neighbouring corners of the generated mesh
+    /// ([`PlateInsertProblem::corner_range`]).
+    pub corner: usize,
 }
 
 /// How pairs are discretised.
@@ -120,7 +135,15 @@ impl PlateInsert {
     /// # Errors
     /// Mesh, model or pairing errors.
     pub fn build(&self) -> Result<PlateInsertProblem, ContactError> {
-        let mut mesh = read_msh(&self.mesh)?;
+        self.build_on(read_msh(&self.mesh)?)
+    }
+
+    /// Like [`PlateInsert::build`] on a mesh already read (`self.mesh` is not read again): a
+    /// search that places nodes builds many problems from one generated mesh.
+    ///
+    /// # Errors
+    /// Model or pairing errors, or a placement outside its corner's range.
+    pub fn build_on(&self, mut mesh: contact2d_mesh::Mesh) -> Result<PlateInsertProblem, ContactError> {
         if !self.placed_nodes.is_empty() {
             let (_, hole, insert) = self.model(mesh.clone())?;
             let master = match self.variant {
@@ -149,51 +172,70 @@ impl PlateInsert {
         Ok(PlateInsertProblem { problem, hole, insert: insert_edge, variant: self.variant, eps: self.eps })
     }
 
-    /// New positions of the master corner nodes nearest to each η of `placed_nodes` (on the
-    /// master circle), with the mid nodes of their two edges re-centred between the corners.
+    /// New positions of the placed master corners (on the master circle) and of the mid nodes
+    /// of their edges, re-centred between the corners once every corner is placed.
     fn placement_targets(
         &self,
         mesh: &contact2d_mesh::Mesh,
         master: &Contour,
     ) -> Result<Vec<(contact2d_mesh::NodeId, [f64; 2])>, ContactError> {
-        // The master circle: the hole (centre 0, radius 1) or the insert (centre −ε, radius 1 − ε).
-        let (centre, radius) = match self.variant {
-            PairingVariant::HoleMaster => (-0.0, 1.0),
-            PairingVariant::InsertMaster => (-self.eps, 1.0 - self.eps),
-        };
-        let angle = |p: [f64; 2]| p[1].atan2(p[0] - centre);
+        let (centre, radius) = self.master_circle();
         let at = |a: f64| [centre + radius * a.cos(), radius * a.sin()];
         let n = master.nodes.len();
         if n < 5 || !master.edges.iter().all(|e| e.quadratic) {
             return Err(ContactError::InvalidInput("node placement needs a quadratic master contour".into()));
         }
-        let mut angles: Vec<f64> = master.nodes.iter().map(|v| angle(mesh.points[v.0])).collect();
-        let mut used = vec![];
-        for &eta in &self.placed_nodes {
-            if !(eta > 0.0 && eta < 1.0) {
-                return Err(ContactError::InvalidInput(format!("placed node at η = {eta} outside (0, 1)")));
+        let generated: Vec<f64> = master.nodes.iter().map(|v| polar_angle(mesh.points[v.0], centre)).collect();
+        let mut angles = generated.clone();
+        let mut corners: Vec<usize> = vec![];
+        for placement in &self.placed_nodes {
+            let (eta, c) = (placement.eta, placement.corner);
+            if c % 2 != 0 || c < 2 || c + 2 >= n {
+                return Err(ContactError::InvalidInput(format!(
+                    "placed node: {c} is not an interior corner of the {n}-node master contour"
+                )));
+            }
+            if corners.contains(&c) {
+                return Err(ContactError::InvalidInput(format!("placed node: corner {c} placed twice")));
             }
             let target = std::f64::consts::PI * (1.0 - eta);
-            // Interior corner nodes only (even positions; the ends stay on the symmetry line).
-            let corner = (1..n / 2)
-                .map(|c| 2 * c)
-                .filter(|i| !used.contains(i))
-                .min_by(|a, b| (angles[*a] - target).abs().total_cmp(&(angles[*b] - target).abs()))
-                .ok_or_else(|| ContactError::InvalidInput("no corner node left to place".into()))?;
-            if !(target < angles[corner - 2].max(angles[corner + 2])
-                && target > angles[corner - 2].min(angles[corner + 2]))
-            {
-                return Err(ContactError::InvalidInput(format!("η = {eta} cannot be reached by moving one node")));
+            let (lo, hi) = (generated[c - 2].min(generated[c + 2]), generated[c - 2].max(generated[c + 2]));
+            if !(target > lo && target < hi) {
+                return Err(ContactError::InvalidInput(format!(
+                    "placed node at η = {eta} is outside the range of corner {c} (η {:.5} to {:.5})",
+                    1.0 - hi / std::f64::consts::PI,
+                    1.0 - lo / std::f64::consts::PI
+                )));
             }
-            angles[corner] = target;
-            angles[corner - 1] = 0.5 * (angles[corner - 2] + target);
-            angles[corner + 1] = 0.5 * (target + angles[corner + 2]);
-            used.push(corner);
+            angles[c] = target;
+            corners.push(c);
         }
-        let mut moved: Vec<usize> = used.iter().flat_map(|&c| [c - 1, c, c + 1]).collect();
+        // Corners must keep their order along the contour (two placed corners may be neighbours).
+        let ascending = generated[n - 1] > generated[0];
+        if !(0..n / 2).all(|i| (angles[2 * i + 2] > angles[2 * i]) == ascending) {
+            return Err(ContactError::InvalidInput(format!(
+                "placed nodes would reorder the master contour's corners ({:?})",
+                self.placed_nodes
+            )));
+        }
+        let mut moved: Vec<usize> = corners.iter().flat_map(|&c| [c - 1, c, c + 1]).collect();
         moved.sort_unstable();
         moved.dedup();
+        for &i in &moved {
+            if i % 2 == 1 {
+                angles[i] = 0.5 * (angles[i - 1] + angles[i + 1]);
+            }
+        }
         Ok(moved.into_iter().map(|i| (master.nodes[i], at(angles[i]))).collect())
+    }
+
+    /// Centre (on the x1 axis) and radius of the master circle: the hole (0, 1) or the insert
+    /// edge (−ε, 1 − ε).
+    fn master_circle(&self) -> (f64, f64) {
+        match self.variant {
+            PairingVariant::HoleMaster => (0.0, 1.0),
+            PairingVariant::InsertMaster => (-self.eps, 1.0 - self.eps),
+        }
     }
 
     /// The model of the two bodies with the boundary conditions of spec §2, and both contours.
@@ -272,7 +314,51 @@ fn angle(x: [f64; 2]) -> f64 {
     x[1].atan2(x[0])
 }
 
+/// Polar angle about the point (`centre`, 0).
+fn polar_angle(x: [f64; 2], centre: f64) -> f64 {
+    x[1].atan2(x[0] - centre)
+}
+
 impl PlateInsertProblem {
+    /// The master contour (the hole edge in variant 1, the insert edge in variant 2).
+    pub fn master(&self) -> &Contour {
+        match self.variant {
+            PairingVariant::HoleMaster => &self.hole,
+            PairingVariant::InsertMaster => &self.insert,
+        }
+    }
+
+    /// η of each master contour node on the master's own coordinate, in contour order.
+    pub fn master_node_eta(&self) -> Vec<f64> {
+        let points = &self.problem.model.mesh.points;
+        self.master().nodes.iter().map(|v| self.eta_of_master_point(points[v.0])).collect()
+    }
+
+    /// The interior corner of the master contour nearest to `eta` (master coordinate), other
+    /// than those in `exclude`: the node a search for a zone end at about `eta` moves.
+    pub fn nearest_corner(&self, eta: f64, exclude: &[usize]) -> Option<usize> {
+        let node_eta = self.master_node_eta();
+        (1..node_eta.len().saturating_sub(1) / 2)
+            .map(|c| 2 * c)
+            .filter(|c| !exclude.contains(c))
+            .min_by(|a, b| (node_eta[*a] - eta).abs().total_cmp(&(node_eta[*b] - eta).abs()))
+    }
+
+    /// The η interval (master coordinate, ascending) a corner may be placed in: strictly between
+    /// its neighbouring corners of this problem's mesh.
+    pub fn corner_range(&self, corner: usize) -> Option<[f64; 2]> {
+        let node_eta = self.master_node_eta();
+        let (a, b) = (*node_eta.get(corner.checked_sub(2)?)?, *node_eta.get(corner + 2)?);
+        Some([a.min(b), a.max(b)])
+    }
+
+    fn eta_of_master_point(&self, x: [f64; 2]) -> f64 {
+        match self.variant {
+            PairingVariant::HoleMaster => eta_on_hole(x),
+            PairingVariant::InsertMaster => eta_on_hole([x[0] + self.eps, x[1]]),
+        }
+    }
+
     /// η = 1 − φ/π on the hole edge of each pair: the master node's in variant 1, the paired
     /// hole point's in variant 2 (the paper reports l and b on this coordinate).
     pub fn eta_hole(&self) -> Vec<f64> {
@@ -290,16 +376,7 @@ impl PlateInsertProblem {
     /// polar angle about the insert centre (−ε, 0) (variant 2).
     pub fn eta_master(&self) -> Vec<f64> {
         let p = &self.problem;
-        p.pairs
-            .iter()
-            .map(|pair| {
-                let x = p.model.mesh.points[pair.master.0];
-                match self.variant {
-                    PairingVariant::HoleMaster => eta_on_hole(x),
-                    PairingVariant::InsertMaster => eta_on_hole([x[0] + self.eps, x[1]]),
-                }
-            })
-            .collect()
+        p.pairs.iter().map(|pair| self.eta_of_master_point(p.model.mesh.points[pair.master.0])).collect()
     }
 }
 

@@ -19,7 +19,7 @@ use nalgebra::{DMatrix, DVector};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
-use crate::solution::{ContactSolution, ContactStatus, StepStart};
+use crate::solution::{ContactSolution, ContactStatus, IterationRecord, StepStart};
 
 /// Solves the frictionless problem at load factor `w` with at most `max_iterations` active-set
 /// updates.
@@ -38,6 +38,7 @@ pub fn solve_frictionless_active_set(
     let mut lambda = vec![0.0; m];
     let mut status = ContactStatus::MaxIterations;
     let mut iterations = 0;
+    let mut trace = Vec::new();
     for it in 1..=max_iterations {
         iterations = it;
         let idx: Vec<usize> = (0..m).filter(|&k| active[k]).collect();
@@ -57,6 +58,13 @@ pub fn solve_frictionless_active_set(
         let gap: Vec<f64> =
             (0..m).map(|k| g_free[k] + (0..m).map(|j| interface.c_nn[(k, j)] * lambda[j]).sum::<f64>()).collect();
         let next: Vec<bool> = (0..m).map(|k| lambda[k] - c * gap[k] > 0.0).collect();
+        trace.push(IterationRecord {
+            iteration: it,
+            changed: next.iter().zip(&active).filter(|(a, b)| a != b).count(),
+            in_contact: active.iter().filter(|a| **a).count(),
+            slipping: 0,
+            residual: 0.0,
+        });
         if next == active {
             status = ContactStatus::Converged;
             break;
@@ -71,5 +79,7 @@ pub fn solve_frictionless_active_set(
         iterations,
         time: start.elapsed(),
     };
-    finish_from_forces(problem, interface, raw, &StepStart::initial(m))
+    let mut solution = finish_from_forces(problem, interface, raw, &StepStart::initial(m));
+    solution.trace = trace;
+    solution
 }

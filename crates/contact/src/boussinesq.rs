@@ -31,7 +31,7 @@ use crate::error::ContactError;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
-use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
+use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
 use crate::state_equations::{combine, state_system};
 
 /// How a Boussinesq step is loaded.
@@ -104,6 +104,7 @@ pub fn solve_boussinesq_step(
     };
     let mut iterations = 0;
     let mut answer = None;
+    let mut trace = Vec::new();
     for it in 1..=max_iterations.max(1) {
         iterations = it;
         let Some((w, lambda, tau)) = solve_zones(problem, interface, order, zones, loading, start, frictional) else {
@@ -113,53 +114,133 @@ pub fn solve_boussinesq_step(
         if let BoussinesqLoading::Load(_) = loading {
             let last = order[zones.contact_end];
             if lambda[last] < 0.0 && zones.contact_end > 0 {
+                trace.push(IterationRecord {
+                    iteration: it,
+                    changed: 1,
+                    in_contact: zones.contact_end + 1,
+                    slipping: (zones.contact_end + 1).saturating_sub(zones.stick),
+                    residual: 0.0,
+                });
                 zones.contact_end -= 1;
                 zones.stick = zones.stick.min(zones.contact_end + 1);
                 continue;
             }
         }
         let next = next_stick_end(problem, order, zones, &lambda, &tau, frictional);
+        trace.push(IterationRecord {
+            iteration: it,
+            changed: next.map_or(0, |z| z.stick.abs_diff(zones.stick)),
+            in_contact: zones.contact_end + 1,
+            slipping: (zones.contact_end + 1).saturating_sub(zones.stick),
+            residual: 0.0,
+        });
         answer = Some((w, lambda, tau));
         match next {
             Some(z) if z != zones => zones = z,
             _ => break,
         }
     }
+    let elapsed = clock.elapsed();
     let Some((w, lambda, tau)) = answer else {
-        let raw = RawSolution {
-            load_factor: 0.0,
-            normal_force: vec![0.0; m],
-            tangential_force: vec![0.0; m],
-            status: ContactStatus::Numerical,
-            iterations,
-            time: clock.elapsed(),
-        };
+        let forces = ZoneForces { load: 0.0, normal_force: vec![0.0; m], tangential_force: vec![0.0; m] };
+        let raw = raw_solution(forces, ContactStatus::Numerical, iterations, elapsed);
         return BoussinesqStep {
             solution: finish_from_forces(problem, interface, raw, start),
             zones,
             violations: vec![],
         };
     };
-    let (mut lambda, mut tau) = (lambda, tau);
-    if let BoussinesqLoading::ContactEnd(_) = loading {
-        // The Boussinesq condition: the last contact pair carries exactly no force.
-        let last = order[zones.contact_end];
-        (lambda[last], tau[last]) = (0.0, 0.0);
-    }
-    let raw = RawSolution {
-        load_factor: w,
-        normal_force: lambda,
-        tangential_force: tau,
-        status: ContactStatus::Converged,
-        iterations,
-        time: clock.elapsed(),
+    let forces = ZoneForces { load: w, normal_force: lambda, tangential_force: tau };
+    let by_condition = matches!(loading, BoussinesqLoading::ContactEnd(_));
+    let mut step =
+        finish_zones(problem, interface, order, zones, forces, by_condition, start, (iterations, elapsed), 0.0);
+    step.solution.trace = trace;
+    step
+}
+
+/// Load and pair forces of problem A for given zones.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ZoneForces {
+    /// The load w (given, or from the Boussinesq condition).
+    pub load: f64,
+    /// λ per pair.
+    pub normal_force: Vec<f64>,
+    /// τ per pair.
+    pub tangential_force: Vec<f64>,
+}
+
+/// Problem A (6.1) for zones given in full — stick `order[..zones.stick]`, slip with
+/// `zones.slip` up to `order[zones.contact_end]`, free beyond — without the b iteration: the
+/// building block of zone ends placed by root finding (the paper's nodes at b* and l*).
+///
+/// `load`: `Some(w)` solves at that load (the force left at l* then measures the Boussinesq
+/// condition); `None` takes w from the Boussinesq condition λ(l*) = 0 (needs a gap or a history).
+/// Returns `None` when the zone equations are singular or give no finite answer.
+pub fn solve_given_zones(
+    problem: &ContactProblem,
+    interface: &Interface,
+    order: &[usize],
+    zones: Zones,
+    load: Option<f64>,
+    start: &StepStart,
+) -> Option<ZoneForces> {
+    let frictional = interface.c_tt.nrows() == problem.num_pairs() && problem.is_frictional();
+    let loading = match load {
+        Some(w) => BoussinesqLoading::Fixed { contact_end: zones.contact_end, load: w },
+        None => BoussinesqLoading::ContactEnd(zones.contact_end),
     };
+    let (w, lambda, tau) = solve_zones(problem, interface, order, zones, loading, start, frictional)?;
+    Some(ZoneForces { load: w, normal_force: lambda, tangential_force: tau })
+}
+
+/// Evaluates zone forces into a [`BoussinesqStep`]: the displacement field is recovered once,
+/// and every inequality of (5.1) is checked.
+///
+/// `by_condition`: the load came from the Boussinesq condition, so the force at l* is exactly
+/// zero (set so, removing round-off). `(iterations, time)` are reported with the solution.
+/// `end_slack`: the cone condition at the last stick pair and the sign condition at the last
+/// contact pair are allowed this much (relative to the largest λ): the residual of a root
+/// finder that placed a node at b* or l*, where these conditions hold with equality.
+#[allow(clippy::too_many_arguments)]
+pub fn finish_zones(
+    problem: &ContactProblem,
+    interface: &Interface,
+    order: &[usize],
+    zones: Zones,
+    forces: ZoneForces,
+    by_condition: bool,
+    start: &StepStart,
+    (iterations, time): (usize, std::time::Duration),
+    end_slack: f64,
+) -> BoussinesqStep {
+    let mut forces = forces;
+    if by_condition && let Some(&last) = order.get(zones.contact_end) {
+        // The Boussinesq condition: the last contact pair carries exactly no force.
+        (forces.normal_force[last], forces.tangential_force[last]) = (0.0, 0.0);
+    }
+    let raw = raw_solution(forces, ContactStatus::Converged, iterations, time);
     let mut solution = finish_from_forces(problem, interface, raw, start);
-    let violations = check_inequalities(problem, order, zones, &solution);
+    let violations = check_inequalities(problem, order, zones, &solution, end_slack);
     if !violations.is_empty() {
         solution.status = ContactStatus::Inadmissible;
     }
     BoussinesqStep { solution, zones, violations }
+}
+
+fn raw_solution(
+    forces: ZoneForces,
+    status: ContactStatus,
+    iterations: usize,
+    time: std::time::Duration,
+) -> RawSolution {
+    RawSolution {
+        load_factor: forces.load,
+        normal_force: forces.normal_force,
+        tangential_force: forces.tangential_force,
+        status,
+        iterations,
+        time,
+    }
 }
 
 /// Solves problem A for given zones: `(w, λ, τ)`.
@@ -217,18 +298,29 @@ fn next_stick_end(
 }
 
 /// The inequalities of (5.1) on the zones found.
-fn check_inequalities(problem: &ContactProblem, order: &[usize], zones: Zones, s: &ContactSolution) -> Vec<Violation> {
+fn check_inequalities(
+    problem: &ContactProblem,
+    order: &[usize],
+    zones: Zones,
+    s: &ContactSolution,
+    end_slack: f64,
+) -> Vec<Violation> {
     let lambda_scale = s.normal_force.iter().fold(0.0f64, |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE);
     let gap_scale = s.displacement.iter().fold(0.0f64, |a, u| a.max(u.abs())).max(f64::MIN_POSITIVE);
     let tol = 1e-9;
     let mut v = vec![];
     for (pos, &k) in order.iter().enumerate() {
         let (l, t) = (s.normal_force[k], s.tangential_force[k]);
+        let cone_tol = if pos + 1 == zones.stick { tol + end_slack } else { tol };
+        if pos == zones.contact_end && l < -(tol + end_slack) * lambda_scale {
+            v.push(Violation { pair: k, condition: "p <= 0 at the contact end" });
+        }
         if pos < zones.contact_end {
             if l <= -tol * lambda_scale {
                 v.push(Violation { pair: k, condition: "p < 0 in the contact zone" });
             }
-            if pos < zones.stick && t.abs() > problem.friction[k] * l + tol * lambda_scale && problem.tangential[k] {
+            if pos < zones.stick && t.abs() > problem.friction[k] * l + cone_tol * lambda_scale && problem.tangential[k]
+            {
                 v.push(Violation { pair: k, condition: "|q| <= mu|p| on the stick zone" });
             }
             if pos >= zones.stick && -t * s.slip_increment[k] < -tol * lambda_scale * gap_scale {

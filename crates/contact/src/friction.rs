@@ -28,7 +28,7 @@ use nalgebra::{DMatrix, DVector};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
-use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
+use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
 use crate::state_equations::{combine, state_system};
 
 /// Solves one frictional step to load factor `w` from the history `start`, starting from the
@@ -54,6 +54,7 @@ pub fn solve_frictional_active_set(
     let (mut lambda, mut tau) = (vec![0.0; m], vec![0.0; m]);
     let mut status = ContactStatus::MaxIterations;
     let mut iterations = 0;
+    let mut trace = Vec::new();
     for it in 1..=max_iterations {
         iterations = it;
         let Some((l, t)) = solve_state(problem, interface, w, start, &state, frictional) else {
@@ -62,6 +63,13 @@ pub fn solve_frictional_active_set(
         };
         (lambda, tau) = (l, t);
         let next = update_state(problem, interface, w, start, &lambda, &tau, c_n, c_t, frictional);
+        trace.push(IterationRecord {
+            iteration: it,
+            changed: next.iter().zip(&state).filter(|(a, b)| a != b).count(),
+            in_contact: state.iter().filter(|s| **s != PairState::Free).count(),
+            slipping: state.iter().filter(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative)).count(),
+            residual: 0.0,
+        });
         // Converged when the state repeats, or when the iterate already satisfies every
         // condition to round-off (a degenerate pair — λ = gap = 0 or |τ| = μλ with Δs = 0 —
         // may otherwise flip forever on round-off).
@@ -79,7 +87,9 @@ pub fn solve_frictional_active_set(
         iterations,
         time: clock.elapsed(),
     };
-    finish_from_forces(problem, interface, raw, start)
+    let mut solution = finish_from_forces(problem, interface, raw, start);
+    solution.trace = trace;
+    solution
 }
 
 /// gap_k and s_k for given forces.

@@ -41,6 +41,18 @@ pub fn solve_history(
     loads: &[f64],
     max_iterations: usize,
 ) -> Vec<HistoryStep> {
+    solve_history_with(problem, interface, algorithm, loads, max_iterations, &mut |_| {})
+}
+
+/// [`solve_history`], calling `on_step` after each solved step (progress reporting).
+pub fn solve_history_with(
+    problem: &ContactProblem,
+    interface: &Interface,
+    algorithm: StepAlgorithm,
+    loads: &[f64],
+    max_iterations: usize,
+    on_step: &mut dyn FnMut(&HistoryStep),
+) -> Vec<HistoryStep> {
     let mut start = StepStart::initial(problem.num_pairs());
     let mut guess: Option<Vec<PairState>> = None;
     let mut dissipated = 0.0;
@@ -56,7 +68,9 @@ pub fn solve_history(
         start = StepStart::after(&solution);
         guess = Some(solution.state.clone());
         let converged = solution.status == ContactStatus::Converged;
-        steps.push(HistoryStep { solution, dissipated });
+        let step = HistoryStep { solution, dissipated };
+        on_step(&step);
+        steps.push(step);
         if !converged {
             break;
         }

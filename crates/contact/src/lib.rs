@@ -26,16 +26,17 @@ pub mod tresca_qp;
 
 pub use active_set::solve_frictionless_active_set;
 pub use boussinesq::{
-    BoussinesqLoading, BoussinesqStep, Violation, Zones, solve_boussinesq_history, solve_boussinesq_step,
+    BoussinesqLoading, BoussinesqStep, Violation, ZoneForces, Zones, finish_zones, solve_boussinesq_history,
+    solve_boussinesq_step, solve_given_zones,
 };
 pub use error::ContactError;
 pub use friction::solve_frictional_active_set;
-pub use history::{HistoryStep, StepAlgorithm, equal_steps, solve_history};
+pub use history::{HistoryStep, StepAlgorithm, equal_steps, solve_history, solve_history_with};
 pub use interface::Interface;
 pub use pairing::{ContactPair, node_to_node_targets, pair_contours, tributary_weights};
 pub use post::{contact_end, contact_end_from_pressure, pair_tractions, stick_end};
 pub use problem::{ContactProblem, PairRow};
 pub use qp::solve_frictionless_qp;
 pub use report::{RawSolution, fem_solution, finish_from_displacement, finish_from_forces};
-pub use solution::{ContactSolution, ContactStatus, KktResiduals, PairState, StepStart};
+pub use solution::{ContactSolution, ContactStatus, IterationRecord, KktResiduals, PairState, StepStart};
 pub use tresca_qp::solve_frictional_qp;

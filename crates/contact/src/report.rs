@@ -109,6 +109,7 @@ pub fn finish_from_displacement(
         kkt,
         iterations: raw.iterations,
         time: raw.time,
+        trace: vec![],
     }
 }
 

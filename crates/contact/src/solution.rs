@@ -98,4 +98,23 @@ pub struct ContactSolution {
     pub iterations: usize,
     /// Wall time of the algorithm (setup of the shared problem excluded).
     pub time: Duration,
+    /// One record per iteration (what changed and the residual), for logs.
+    pub trace: Vec<IterationRecord>,
+}
+
+/// One iteration of an algorithm, as logged by `contact2d run -v`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct IterationRecord {
+    /// Iteration number (from 1).
+    pub iteration: usize,
+    /// Pairs whose state the iteration changes (active sets), or whose zone moved (Boussinesq).
+    pub changed: usize,
+    /// Pairs in contact in the iterate.
+    pub in_contact: usize,
+    /// Pairs slipping in the iterate.
+    pub slipping: usize,
+    /// The algorithm's own residual: for the Tresca fixed point the largest change of λ
+    /// relative to the largest λ; for the active sets and the Boussinesq iteration 0 (they stop
+    /// when the state repeats).
+    pub residual: f64,
 }

@@ -27,7 +27,7 @@ use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, Nonnegat
 use crate::problem::ContactProblem;
 use crate::qp::{map_status, solve_frictionless_qp};
 use crate::report::{RawSolution, finish_from_displacement, force_scale};
-use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
+use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
 
 /// One Tresca solve: `(status, u_free, λ, τ, iterations)`.
 type TrescaAnswer = (ContactStatus, Vec<f64>, Vec<f64>, Vec<f64>, usize);
@@ -47,6 +47,7 @@ pub fn solve_frictional_qp(
     let mut answer: TrescaAnswer = (ContactStatus::MaxIterations, vec![], vec![0.0; m], vec![0.0; m], 0);
     let mut status = ContactStatus::MaxIterations;
     let mut iterations = 0;
+    let mut trace = Vec::new();
     let (mut best_change, mut stalled) = (f64::INFINITY, 0);
     for it in 1..=max_fixed_point {
         iterations = it;
@@ -60,7 +61,17 @@ pub fn solve_frictional_qp(
         let scale = answer.2.iter().fold(0.0f64, |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE);
         let change = answer.2.iter().zip(&lambda).fold(0.0f64, |a, (x, y)| a.max((x - y).abs()));
         lambda.clone_from(&answer.2);
-        in_contact = contact_set(problem, w, &answer.1, &lambda);
+        let next = contact_set(problem, w, &answer.1, &lambda);
+        trace.push(IterationRecord {
+            iteration: it,
+            changed: next.iter().zip(&in_contact).filter(|(a, b)| a != b).count(),
+            in_contact: next.iter().filter(|c| **c).count(),
+            slipping: (0..m)
+                .filter(|&k| next[k] && answer.3[k].abs() >= bound[k] * (1.0 - 1e-6) && bound[k] > 0.0)
+                .count(),
+            residual: change / scale,
+        });
+        in_contact = next;
         // Converged at 1e-7; or at the solves' noise floor: below 1e-5 with no improvement over
         // five iterations (a degenerate pair flipping at round-off level).
         if change < best_change {
@@ -76,7 +87,9 @@ pub fn solve_frictional_qp(
     let (_, u_free, normal_force, tangential_force, _) = answer;
     let u_free = if u_free.is_empty() { vec![0.0; problem.system.dofs.num_free()] } else { u_free };
     let raw = RawSolution { load_factor: w, normal_force, tangential_force, status, iterations, time: clock.elapsed() };
-    finish_from_displacement(problem, &u_free, raw, start)
+    let mut solution = finish_from_displacement(problem, &u_free, raw, start);
+    solution.trace = trace;
+    solution
 }
 
 /// Pairs in contact: the normalised force exceeds the normalised gap (an interior-point λ of a

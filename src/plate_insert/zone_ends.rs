@@ -1,0 +1,589 @@
+//! Zone ends finer than the mesh: the paper's nodes at η = l* and η = b* (spec §6: "the contour
+//! nodes at η = b* and η = l* are placed there (the mesh is adjusted)").
+//!
+//! ```text
+//! estimate   l₀, b₀ and the slip direction from a solve on the generated mesh (active set for a
+//!            given load; the Boussinesq b iteration for a given contact end)
+//! place      the master corner nearest to l₀ (and another nearest to b₀) slides along the master
+//!            circle; mid nodes re-centred, interior relaxed, pairs node-to-node again
+//! residuals  r_l(l, b) = p at the node at l*, from problem A at the given load   (Load)
+//!            r_b(l, b) = σ q − μ|p| at the node at b* (last stick node; σ the slip direction)
+//! roots      Load(w):        r_l = 0 in l and r_b = 0 in b, alternately, each by the Illinois
+//!                            method (secant until the root is bracketed), until both settle
+//!            ContactEnd(l):  l is placed as given, w from the Boussinesq condition λ(l*) = 0,
+//!                            and r_b = 0 in b
+//! history    the slips v_s and tangential tractions at the start of a step are functions of η
+//!            on the master contour, interpolated linearly onto the pairs of the adjusted mesh
+//! ```
+//!
+//! Each evaluation builds the adjusted mesh's problem (same topology) and solves problem A with
+//! the zones given, so both conditions of the paper hold at their nodes: at b*, v − vh = v_s_τ
+//! and f = 0; at l*, f = 0 (or stick) and p = 0.
+
+use contact2d_contact::{BoussinesqLoading, ContactProblem};
+use contact2d_contact::{
+    BoussinesqStep, ContactError, ContactStatus, Interface, IterationRecord, PairState, StepStart, Zones, contact_end,
+    finish_zones, solve_boussinesq_step, solve_frictional_active_set, solve_given_zones, stick_end,
+};
+use contact2d_mesh::Mesh;
+
+use super::contour_history::ContourHistory;
+use super::roots::find_root;
+use super::{NodePlacement, PlateInsert, PlateInsertProblem};
+
+/// How a step with placed zone ends is loaded.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PlacedLoading {
+    /// The load w is given; l* follows from the Boussinesq condition p(l*) = 0 at the placed node.
+    Load(f64),
+    /// The contact end l* is given (η on the master's own coordinate, the paper's steps in l);
+    /// w follows from the Boussinesq condition.
+    ContactEnd(f64),
+}
+
+/// Tolerances of the zone-end search.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ZoneEndSearch {
+    /// Tolerance on l* and b* in η (default 1e-9: the root finders converge superlinearly, so
+    /// a tight tolerance costs a mesh or two and leaves residuals near round-off).
+    pub tolerance: f64,
+    /// Largest number of meshes solved for one step.
+    pub max_evaluations: usize,
+}
+
+impl Default for ZoneEndSearch {
+    fn default() -> Self {
+        ZoneEndSearch { tolerance: 1e-9, max_evaluations: 80 }
+    }
+}
+
+/// One step solved with nodes placed at its zone ends.
+#[derive(Debug, Clone)]
+pub struct PlacedStep {
+    /// l* on the master's own coordinate.
+    pub contact_end: f64,
+    /// b* on the master's own coordinate (`None` when nothing slips: the stick zone is the
+    /// whole contact zone).
+    pub stick_end: Option<f64>,
+    /// l* on the hole-edge angle η = 1 − φ/π (the paired hole point's in variant 2).
+    pub contact_end_hole: f64,
+    /// b* likewise.
+    pub stick_end_hole: Option<f64>,
+    /// The load w (given, or from the Boussinesq condition).
+    pub load: f64,
+    /// |p(l*)| left by the search, relative to the largest contact pressure.
+    pub residual_pressure: f64,
+    /// |σ q − μ|p|| at b* left by the search, relative to the largest contact pressure.
+    pub residual_cone: f64,
+    /// Meshes solved.
+    pub evaluations: usize,
+    /// The step's start on the adjusted mesh's pairs (the history carried over), for checks
+    /// by other algorithms on the same discrete problem.
+    pub start: StepStart,
+    /// The problem on the adjusted mesh.
+    pub case: PlateInsertProblem,
+    /// Its Boussinesq step (solution, zones, violated inequalities).
+    pub step: BoussinesqStep,
+}
+
+/// A mesh evaluation during the search.
+struct Evaluation {
+    case: PlateInsertProblem,
+    interface: Interface,
+    order: Vec<usize>,
+    start: StepStart,
+    zones: Zones,
+    load: f64,
+    normal_force: Vec<f64>,
+    tangential_force: Vec<f64>,
+    /// Pairs of the placed l and b nodes.
+    l_pair: usize,
+    b_pair: Option<usize>,
+}
+
+impl Evaluation {
+    fn pressure(&self, k: usize) -> f64 {
+        self.normal_force[k] / self.case.problem.pairs[k].weight
+    }
+
+    fn pressure_scale(&self) -> f64 {
+        (0..self.normal_force.len()).map(|k| self.pressure(k).abs()).fold(f64::MIN_POSITIVE, f64::max)
+    }
+
+    /// σ q − μ|p| at pair k for the slip direction σ of the zones (negative inside the cone).
+    fn cone(&self, k: usize) -> f64 {
+        let sigma = if self.zones.slip == Some(PairState::SlipPositive) { -1.0 } else { 1.0 };
+        let (lambda, tau) = (self.normal_force[k], self.tangential_force[k]);
+        (sigma * tau - self.case.problem.friction[k] * lambda) / self.case.problem.pairs[k].weight
+    }
+}
+
+/// The search's fixed data: the generated mesh, the corners moved, the loading.
+struct Search<'a> {
+    template: &'a PlateInsert,
+    mesh: &'a Mesh,
+    loading: PlacedLoading,
+    history: &'a ContourHistory,
+    l_corner: usize,
+    evaluations: usize,
+    limit: usize,
+    /// One record per residual evaluated by the root finders.
+    trace: Vec<IterationRecord>,
+}
+
+impl Search<'_> {
+    /// Logs an evaluation: its zones and the residual the root finder sees.
+    fn record(&mut self, e: &Evaluation, residual: f64) {
+        self.trace.push(IterationRecord {
+            iteration: self.evaluations,
+            changed: 0,
+            in_contact: e.zones.contact_end + 1,
+            slipping: (e.zones.contact_end + 1).saturating_sub(e.zones.stick),
+            residual,
+        });
+    }
+
+    /// Solves the adjusted mesh with l (and b, if given) placed; without b, the stick zone comes
+    /// from the Boussinesq b iteration on the nodes.
+    fn evaluate(&mut self, l: f64, b: Option<(f64, usize, PairState)>) -> Result<Evaluation, ContactError> {
+        self.evaluations += 1;
+        if self.evaluations > self.limit {
+            return Err(ContactError::InvalidInput(format!(
+                "zone-end search: no convergence within {} meshes",
+                self.limit
+            )));
+        }
+        let mut placed_nodes = vec![NodePlacement { eta: l, corner: self.l_corner }];
+        placed_nodes.extend(b.map(|(eta, corner, _)| NodePlacement { eta, corner }));
+        let case = PlateInsert { placed_nodes, ..self.template.clone() }.build_on(self.mesh.clone())?;
+        let interface = Interface::new(&case.problem);
+        let start = self.history.start_for(&case);
+        let order = eta_order(&case);
+        let pair_of = |corner: usize| -> Result<usize, ContactError> {
+            let node = case.master().nodes[corner];
+            let k = case.problem.pairs.iter().position(|p| p.master == node);
+            k.ok_or_else(|| ContactError::InvalidInput(format!("no pair at master corner {corner}")))
+        };
+        let l_pair = pair_of(self.l_corner)?;
+        let position = |k: usize| order.iter().position(|&j| j == k).unwrap_or(0);
+        let given = match self.loading {
+            PlacedLoading::Load(w) => Some(w),
+            PlacedLoading::ContactEnd(_) => None,
+        };
+        let (zones, forces, b_pair) = match b {
+            Some((_, corner, slip)) => {
+                let b_pair = pair_of(corner)?;
+                let zones = Zones { stick: position(b_pair) + 1, contact_end: position(l_pair), slip: Some(slip) };
+                let forces = solve_given_zones(&case.problem, &interface, &order, zones, given, &start)
+                    .ok_or_else(|| singular(l))?;
+                (zones, forces, Some(b_pair))
+            }
+            None => {
+                let loading = match given {
+                    Some(w) => BoussinesqLoading::Fixed { contact_end: position(l_pair), load: w },
+                    None => BoussinesqLoading::ContactEnd(position(l_pair)),
+                };
+                let step = solve_boussinesq_step(&case.problem, &interface, &order, loading, &start, 4 * order.len());
+                if step.solution.status == ContactStatus::Numerical {
+                    return Err(singular(l));
+                }
+                let s = step.solution;
+                let forces = contact2d_contact::ZoneForces {
+                    load: s.load_factor,
+                    normal_force: s.normal_force,
+                    tangential_force: s.tangential_force,
+                };
+                (step.zones, forces, None)
+            }
+        };
+        Ok(Evaluation {
+            case,
+            interface,
+            order,
+            start,
+            zones,
+            load: forces.load,
+            normal_force: forces.normal_force,
+            tangential_force: forces.tangential_force,
+            l_pair,
+            b_pair,
+        })
+    }
+}
+
+fn singular(l: f64) -> ContactError {
+    ContactError::InvalidInput(format!("problem A is singular with the contact zone ending at η = {l}"))
+}
+
+/// Pair indices sorted by η on the master coordinate.
+fn eta_order(case: &PlateInsertProblem) -> Vec<usize> {
+    let eta = case.eta_master();
+    let mut order: Vec<usize> = (0..eta.len()).collect();
+    order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
+    order
+}
+
+/// Solves one step with nodes placed at l* and b* from `history` (see the module docs).
+///
+/// `mesh` is the generated mesh of `template` (read once by the caller); `template`'s own
+/// `placed_nodes` are ignored.
+///
+/// # Errors
+/// Set-up failures; an estimate without a contact end (nothing, or everything, in contact); a
+/// zone end outside the range its corner can move in; no convergence within the evaluation
+/// limit.
+pub fn place_zone_ends(
+    template: &PlateInsert,
+    mesh: &Mesh,
+    loading: PlacedLoading,
+    history: &ContourHistory,
+    search: ZoneEndSearch,
+) -> Result<PlacedStep, ContactError> {
+    let clock = std::time::Instant::now();
+    let template = PlateInsert { placed_nodes: vec![], ..template.clone() };
+    let base = template.build_on(mesh.clone())?;
+    let mut l_estimate = match loading {
+        PlacedLoading::ContactEnd(l) => l,
+        PlacedLoading::Load(w) => estimate_contact_end(&base, w, history)?,
+    };
+    let mut b_estimate = None;
+    let mut run = Search {
+        template: &template,
+        mesh,
+        loading,
+        history,
+        l_corner: 0,
+        evaluations: 0,
+        limit: search.max_evaluations,
+        trace: vec![],
+    };
+    // A zone end beyond the range of the corner chosen for it moves the search to the corner
+    // the root finder points at.
+    for _attempt in 0..8 {
+        match search_zone_ends(&mut run, &base, l_estimate, b_estimate, search.tolerance) {
+            Ok((last, None)) => return finish((run.evaluations, clock.elapsed()), last, None, 0.0, run.trace),
+            Ok((last, Some(b))) => {
+                let residual_cone = last.b_pair.map_or(0.0, |k| last.cone(k).abs() / last.pressure_scale());
+                return finish((run.evaluations, clock.elapsed()), last, Some(b), residual_cone, run.trace);
+            }
+            Err(Miss::Contact(e)) => return Err(e),
+            Err(Miss::ContactEnd(towards)) => (l_estimate, b_estimate) = (towards, None),
+            Err(Miss::StickEnd { towards, slip, contact_end }) => {
+                (l_estimate, b_estimate) = (contact_end, Some((towards, slip)));
+            }
+        }
+    }
+    Err(ContactError::InvalidInput(format!(
+        "zone-end search: no corner holds the zone ends (last l ≈ {l_estimate:.5})"
+    )))
+}
+
+/// Why one pass of the zone-end search stopped.
+pub(super) enum Miss {
+    /// A failure to report.
+    Contact(ContactError),
+    /// l* lies beyond its corner's range, about at this η.
+    ContactEnd(f64),
+    /// b* lies beyond its corner's range, about at `towards`, with l at `contact_end`.
+    StickEnd { towards: f64, slip: PairState, contact_end: f64 },
+}
+
+impl From<ContactError> for Miss {
+    fn from(e: ContactError) -> Self {
+        Miss::Contact(e)
+    }
+}
+
+/// One pass of the search with corners chosen for the estimates: the final evaluation and b*
+/// (`None` when nothing slips).
+fn search_zone_ends(
+    run: &mut Search<'_>,
+    base: &PlateInsertProblem,
+    l_estimate: f64,
+    b_estimate: Option<(f64, PairState)>,
+    tol: f64,
+) -> Result<(Evaluation, Option<f64>), Miss> {
+    let loading = run.loading;
+    let (mut l, mut b, slip) = match b_estimate {
+        Some((b, slip)) => (l_estimate, b, slip),
+        None => {
+            run.l_corner = base
+                .nearest_corner(l_estimate, &[])
+                .ok_or_else(|| ContactError::InvalidInput("the master contour has no interior corner".into()))?;
+            let l_range = placement_limits(base.corner_range(run.l_corner).unwrap_or([l_estimate; 2]));
+            // l with the stick zone from the b iteration on the nodes.
+            let l = match loading {
+                PlacedLoading::ContactEnd(l) => l,
+                PlacedLoading::Load(_) => find_root(|x| run_pressure(run, x, None), l_estimate, l_range, tol)
+                    .map_err(|m| m.into_miss(Miss::ContactEnd))?,
+            };
+            let first = run.evaluate(l, None)?;
+            let Some((b, slip)) = stick_estimate(&first) else {
+                return Ok((first, None));
+            };
+            (l, b, slip)
+        }
+    };
+    let (l_corner, b_corner) = assign_corners(base, l, b).ok_or_else(|| {
+        ContactError::InvalidInput(format!("no two master corners can be placed at b = {b:.5} and l = {l:.5}"))
+    })?;
+    run.l_corner = l_corner;
+    let l_range = placement_limits(base.corner_range(l_corner).unwrap_or([l, l]));
+    let b_range = placement_limits(base.corner_range(b_corner).unwrap_or([b, b]));
+    // Alternate 1D roots to a coarse tolerance, then polish (l, b) together by Newton's method.
+    let coarse = tol.max(1e-6);
+    for _round in 0..8 {
+        let b_limits = below(b_range, l);
+        let b_new =
+            find_root(|x| run_cone(run, l, (x, b_corner, slip)), b.clamp(b_limits[0], b_limits[1]), b_limits, coarse)
+                .map_err(|m| m.into_miss(|towards| Miss::StickEnd { towards, slip, contact_end: l }))?;
+        let l_new = match loading {
+            PlacedLoading::ContactEnd(_) => l,
+            PlacedLoading::Load(_) => {
+                let l_limits = above(l_range, b_new);
+                find_root(|x| run_pressure(run, x, Some((b_new, b_corner, slip))), l, l_limits, coarse)
+                    .map_err(|m| m.into_miss(Miss::ContactEnd))?
+            }
+        };
+        let settled = (b_new - b).abs() <= coarse && (l_new - l).abs() <= coarse;
+        (b, l) = (b_new, l_new);
+        if settled || matches!(loading, PlacedLoading::ContactEnd(_)) {
+            break;
+        }
+    }
+    let b_node = (b_corner, slip);
+    (l, b) = polish(run, (l, b), b_node, [l_range, b_range], tol)?;
+    let last = run.evaluate(l, Some((b, b_corner, slip)))?;
+    Ok((last, Some(b)))
+}
+
+/// Newton's method on both residuals from one evaluation, `F(l, b) = (r_l, r_b)` (only r_b,
+/// in b, when l is given), with a forward-difference Jacobian: from the alternating roots'
+/// coarse answer to `tol`. A step that would leave the corners' ranges, or grow, stops the
+/// polish at the last iterate.
+fn polish(
+    run: &mut Search<'_>,
+    (mut l, mut b): (f64, f64),
+    (b_corner, slip): (usize, PairState),
+    [l_range, b_range]: [[f64; 2]; 2],
+    tol: f64,
+) -> Result<(f64, f64), ContactError> {
+    let load_given = matches!(run.loading, PlacedLoading::Load(_));
+    let both = |run: &mut Search<'_>, l: f64, b: f64| -> Result<[f64; 2], ContactError> {
+        let e = run.evaluate(l, Some((b, b_corner, slip)))?;
+        let scale = e.pressure_scale();
+        let k = e.b_pair.ok_or_else(|| singular(l))?;
+        let r = [if load_given { e.pressure(e.l_pair) / scale } else { 0.0 }, e.cone(k) / scale];
+        run.record(&e, r[0].abs().max(r[1].abs()));
+        Ok(r)
+    };
+    let h = 1e-7;
+    let mut last_step = f64::INFINITY;
+    for _ in 0..4 {
+        let f = both(run, l, b)?;
+        let fb = both(run, l, b + h)?;
+        let (dl, db) = if load_given {
+            let fl = both(run, l + h, b)?;
+            let j = [[(fl[0] - f[0]) / h, (fb[0] - f[0]) / h], [(fl[1] - f[1]) / h, (fb[1] - f[1]) / h]];
+            let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+            if det == 0.0 || !det.is_finite() {
+                break;
+            }
+            ((-f[0] * j[1][1] + f[1] * j[0][1]) / det, (-f[1] * j[0][0] + f[0] * j[1][0]) / det)
+        } else {
+            let slope = (fb[1] - f[1]) / h;
+            (0.0, if slope != 0.0 { -f[1] / slope } else { 0.0 })
+        };
+        let step = dl.abs().max(db.abs());
+        let inside = |x: f64, [lo, hi]: [f64; 2]| x > lo && x < hi;
+        if !step.is_finite() || step > 2.0 * last_step.min(1e-3) || !inside(l + dl, l_range) || !inside(b + db, b_range)
+        {
+            break;
+        }
+        (l, b, last_step) = (l + dl, b + db, step);
+        if step <= tol {
+            break;
+        }
+    }
+    Ok((l, b))
+}
+
+/// p at the l node (compression positive), relative to the largest pressure.
+fn run_pressure(run: &mut Search<'_>, l: f64, b: Option<(f64, usize, PairState)>) -> Result<f64, ContactError> {
+    let e = run.evaluate(l, b)?;
+    let r = e.pressure(e.l_pair) / e.pressure_scale();
+    run.record(&e, r);
+    Ok(r)
+}
+
+/// The cone function at the b node, relative to the largest pressure.
+fn run_cone(run: &mut Search<'_>, l: f64, b: (f64, usize, PairState)) -> Result<f64, ContactError> {
+    let e = run.evaluate(l, Some(b))?;
+    let k = e.b_pair.ok_or_else(|| singular(l))?;
+    let r = e.cone(k) / e.pressure_scale();
+    run.record(&e, r);
+    Ok(r)
+}
+
+/// The contact end of the active-set solution at load `w` on the generated mesh.
+fn estimate_contact_end(base: &PlateInsertProblem, w: f64, history: &ContourHistory) -> Result<f64, ContactError> {
+    let interface = Interface::new(&base.problem);
+    let start = history.start_for(base);
+    let s = solve_frictional_active_set(&base.problem, &interface, w, &start, None, 500);
+    if s.status != ContactStatus::Converged {
+        return Err(ContactError::InvalidInput(format!("estimate of the zones at w = {w}: {:?}", s.status)));
+    }
+    contact_end(&base.eta_master(), &s.gap, &s.state).map(|(l, _)| l).ok_or_else(|| {
+        ContactError::InvalidInput(format!("at w = {w} nothing or everything is in contact: no contact end to place"))
+    })
+}
+
+/// b₀ and the slip direction from an evaluation with the node-based b iteration; `None` when
+/// nothing slips.
+fn stick_estimate(e: &Evaluation) -> Option<(f64, PairState)> {
+    let slip = e.zones.slip?;
+    if e.zones.stick > e.zones.contact_end {
+        return None;
+    }
+    let eta = e.case.eta_master();
+    let problem: &ContactProblem = &e.case.problem;
+    // The slips of the step from the forces, as the final solution would give them.
+    let raw = contact2d_contact::RawSolution {
+        load_factor: e.load,
+        normal_force: e.normal_force.clone(),
+        tangential_force: e.tangential_force.clone(),
+        status: ContactStatus::Converged,
+        iterations: 0,
+        time: std::time::Duration::ZERO,
+    };
+    let s = contact2d_contact::finish_from_forces(problem, &e.interface, raw, &e.start);
+    let b = stick_end(&eta, &s.slip_increment, &s.state).map(|(b, _)| b);
+    let bracket = [eta[e.order[e.zones.stick.saturating_sub(1)]], eta[e.order[e.zones.stick]]];
+    Some((b.unwrap_or(0.5 * (bracket[0] + bracket[1])), slip))
+}
+
+/// The final step: the displacement field, the (5.1) checks with the search's residuals as
+/// slack at the two placed nodes.
+fn finish(
+    (evaluations, elapsed): (usize, std::time::Duration),
+    e: Evaluation,
+    stick_end: Option<f64>,
+    residual_cone: f64,
+    trace: Vec<IterationRecord>,
+) -> Result<PlacedStep, ContactError> {
+    let residual_pressure = e.pressure(e.l_pair).abs() / e.pressure_scale();
+    let by_condition = residual_pressure == 0.0;
+    let (eta, eta_hole) = (e.case.eta_master(), e.case.eta_hole());
+    let contact_end = eta[e.l_pair];
+    let stick_pair = stick_end.map(|_| e.b_pair.unwrap_or(e.l_pair));
+    let forces = contact2d_contact::ZoneForces {
+        load: e.load,
+        normal_force: e.normal_force,
+        tangential_force: e.tangential_force,
+    };
+    let slack = 10.0 * residual_pressure.max(residual_cone);
+    let mut step = finish_zones(
+        &e.case.problem,
+        &e.interface,
+        &e.order,
+        e.zones,
+        forces,
+        by_condition,
+        &e.start,
+        (evaluations, elapsed),
+        slack,
+    );
+    step.solution.trace = trace;
+    Ok(PlacedStep {
+        contact_end,
+        stick_end: stick_pair.map(|k| eta[k]),
+        contact_end_hole: eta_hole[e.l_pair],
+        stick_end_hole: stick_pair.map(|k| eta_hole[k]),
+        load: e.load,
+        residual_pressure,
+        residual_cone,
+        evaluations,
+        start: e.start,
+        case: e.case,
+        step,
+    })
+}
+
+/// The corners to place at l and b: each within its range and keeping a tenth of the corner
+/// spacing from its neighbours (placed or not), the b corner before the l corner along η; of the
+/// candidates, the pair that moves the corners least.
+fn assign_corners(base: &PlateInsertProblem, l: f64, b: f64) -> Option<(usize, usize)> {
+    let eta = base.master_node_eta();
+    let corners: Vec<usize> = (1..eta.len().saturating_sub(1) / 2).map(|c| 2 * c).collect();
+    let mut best: Option<(f64, usize, usize)> = None;
+    for &cl in &corners {
+        for &cb in corners.iter().filter(|c| eta[**c] < eta[cl]) {
+            let fits = |c: usize, x: f64, limits: fn([f64; 2], f64) -> [f64; 2], other: f64| {
+                base.corner_range(c)
+                    .map(|r| limits(placement_limits(r), other))
+                    .is_some_and(|[lo, hi]| x > lo && x < hi)
+            };
+            if fits(cl, l, above, b) && fits(cb, b, below, l) {
+                let cost = (eta[cl] - l).abs() + (eta[cb] - b).abs();
+                if best.is_none_or(|(c, _, _)| cost < c) {
+                    best = Some((cost, cl, cb));
+                }
+            }
+        }
+    }
+    best.map(|(_, cl, cb)| (cl, cb))
+}
+
+/// Where a corner with neighbour range `[lo, hi]` may go: a tenth of the corner spacing from
+/// each neighbour.
+fn placement_limits([lo, hi]: [f64; 2]) -> [f64; 2] {
+    let d = 0.05 * (hi - lo);
+    [lo + d, hi - d]
+}
+
+/// Limits of the l node above a b node at `b` (about a tenth of the corner spacing clear).
+fn above([lo, hi]: [f64; 2], b: f64) -> [f64; 2] {
+    [lo.max(b + 0.055 * (hi - lo)), hi]
+}
+
+/// Limits of the b node below an l node at `l`.
+fn below([lo, hi]: [f64; 2], l: f64) -> [f64; 2] {
+    [lo, hi.min(l - 0.055 * (hi - lo))]
+}
+
+/// A loading history with zone ends placed at every step, the slips carried over on the
+/// contour (the first step from the virgin state).
+///
+/// # Errors
+/// As [`place_zone_ends`]; a decreasing load or contact end (the algorithm assumes a growing
+/// contact zone).
+pub fn solve_placed_history(
+    template: &PlateInsert,
+    loadings: &[PlacedLoading],
+    search: ZoneEndSearch,
+    on_step: &mut dyn FnMut(&PlacedStep),
+) -> Result<Vec<(PlacedStep, f64)>, ContactError> {
+    let mesh = contact2d_mesh::read_msh(&template.mesh)?;
+    let mut history = ContourHistory::virgin();
+    let mut dissipated = 0.0;
+    let mut steps = Vec::with_capacity(loadings.len());
+    let mut last = f64::NEG_INFINITY;
+    for &loading in loadings {
+        let value = match loading {
+            PlacedLoading::Load(w) | PlacedLoading::ContactEnd(w) => w,
+        };
+        if value < last {
+            return Err(ContactError::InvalidInput(format!(
+                "the Boussinesq algorithm assumes a growing contact zone and cannot unload ({value} after {last}); \
+                 use the active set or Clarabel"
+            )));
+        }
+        last = value;
+        let step = place_zone_ends(template, &mesh, loading, &history, search)?;
+        dissipated += step.step.solution.dissipation;
+        history = ContourHistory::after(&step.case, &step.step.solution);
+        on_step(&step);
+        steps.push((step, dissipated));
+    }
+    Ok(steps)
+}
