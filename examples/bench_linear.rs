@@ -39,7 +39,9 @@ use std::time::Instant;
 use anyhow::{Result, anyhow, bail};
 use clap::{Parser, ValueEnum};
 use contact2d_element::{Material, PlaneCondition};
-use contact2d_fem::{Component, Csc, Dof, DofKind, DofMap, EdgeLoad, Model, assemble};
+use contact2d_fem::{
+    Component, Csc, Dof, DofKind, DofMap, EdgeLoad, Model, Ordering as FemOrdering, assemble, fill_reducing_permutation,
+};
 use contact2d_mesh::{CellKind, Mesh, generate};
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::perm::PermRef;
@@ -79,8 +81,19 @@ enum Ordering {
     Amd,
     /// The prototype [`node_amd`]: AMD on the node graph.
     AmdNodes,
-    /// The prototype [`nested_dissection`].
+    /// The library's nested dissection (`contact2d_fem::fill_reducing_permutation`).
     Nd,
+    /// The first prototype of the nested dissection (leaves of 8 nodes, one axis per split).
+    NdProto,
+}
+
+/// The cell type of the structured mesh.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+enum Cell {
+    /// Bilinear quadrilaterals (DOFs ≈ 8 ny²).
+    Q4,
+    /// Biquadratic quadrilaterals (DOFs ≈ 32 ny²).
+    Q9,
 }
 
 #[derive(Debug, Parser)]
@@ -89,6 +102,12 @@ struct Args {
     /// Requested number of DOFs (the mesh is chosen to be the closest).
     #[arg(default_value_t = 100_000)]
     dofs: usize,
+    /// Length-to-height ratio of the rectangle (cells along x = aspect × cells along y).
+    #[arg(long, default_value_t = 4)]
+    aspect: usize,
+    /// Cell type.
+    #[arg(long, value_enum, default_value_t = Cell::Q9)]
+    cell: Cell,
     /// Assembly of `K_ff`.
     #[arg(long, value_enum, default_value_t = Assembly::Crate)]
     assembly: Assembly,
@@ -135,10 +154,15 @@ fn peak_rss_mib() -> Option<f64> {
 
 fn main() -> Result<()> {
     let args = Args::parse();
-    let ny = ((args.dofs as f64 / 32.0).sqrt().round() as usize).max(1);
+    let (kind, per_cell) = match args.cell {
+        Cell::Q4 => (CellKind::Quad4, 8.0),
+        Cell::Q9 => (CellKind::Quad9, 32.0),
+    };
+    let aspect = args.aspect.max(1);
+    let ny = ((args.dofs as f64 / (per_cell / 4.0 * aspect as f64)).sqrt().round() as usize).max(1);
     let mut phases = Phases::new();
 
-    let mesh = generate::rectangle(CellKind::Quad9, [0.0, 4.0], [0.0, 1.0], 4 * ny, ny);
+    let mesh = generate::rectangle(kind, [0.0, aspect as f64], [0.0, 1.0], aspect * ny, ny);
     phases.lap("mesh generation");
 
     let model = setup_model(mesh)?;
@@ -164,7 +188,15 @@ fn main() -> Result<()> {
     let perm = match args.ordering {
         Ordering::Amd => None,
         Ordering::AmdNodes => Some(node_amd(&model, &dofs)?),
-        Ordering::Nd => Some(nested_dissection(&model, &dofs)),
+        Ordering::Nd => {
+            let forward = fill_reducing_permutation(&model, &dofs, &k, FemOrdering::NestedDissection, &[])?;
+            let mut inverse = vec![0; forward.len()];
+            for (new, &old) in forward.iter().enumerate() {
+                inverse[old] = new;
+            }
+            Some((forward, inverse))
+        }
+        Ordering::NdProto => Some(nested_dissection(&model, &dofs)),
     };
     let (u, stats) = match args.index {
         IndexWidth::U64 => factor_and_solve(k.as_ref(), perm, &rhs, &mut phases)?,
@@ -301,7 +333,7 @@ fn report(
     println!("assembly/order/index {:?}, {:?}, {:?}", args.assembly, args.ordering, args.index);
     println!("rayon threads        {}", rayon::current_num_threads());
     println!("nodes                {}", model.mesh.num_nodes());
-    println!("Quad9 elements       {}", model.bodies.iter().map(|b| b.num_cells()).sum::<usize>());
+    println!("elements ({:?})       {}", args.cell, model.bodies.iter().map(|b| b.num_cells()).sum::<usize>());
     println!("DOFs (all / free)    {} / {}", dofs.num_global(), dofs.num_free());
     println!("nnz(K_ff) lower/full {nnz_lower} / {}", 2 * nnz_lower - k.ncols());
     println!("factor               {}", stats.kind);

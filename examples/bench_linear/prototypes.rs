@@ -22,9 +22,10 @@ pub(crate) fn tip_load(model: &Model, dofs: &DofMap) -> Result<Vec<f64>> {
     }
     let mut f = vec![0.0; dofs.num_global()];
     for block in model.mesh.blocks_in_group("right")? {
+        let edge = if block.kind == contact2d_mesh::CellKind::Line2 { EdgeType::Line2 } else { EdgeType::Line3 };
         for cell in block.cells() {
             let coords: Vec<[f64; 2]> = cell.iter().map(|n| model.mesh.points[n.0]).collect();
-            let fe = edge_traction_load(EdgeType::Line3, &coords, 1.0, 3, |_, _| [0.0, -1.0])?;
+            let fe = edge_traction_load(edge, &coords, 1.0, 3, |_, _| [0.0, -1.0])?;
             for (a, node) in cell.iter().enumerate() {
                 f[2 * node.0] += fe[2 * a];
                 f[2 * node.0 + 1] += fe[2 * a + 1];

@@ -1,17 +1,30 @@
 //! The bodies condensed onto the contact pairs.
 //!
 //! ```text
-//! u_f = w u0 + Z λ + Zt τ,    u0 = K⁻¹ r,   Z = K⁻¹ B_N,fᵀ,   Zt = K⁻¹ B_T,fᵀ   (one multi-RHS solve)
-//! gap = g0 + w h + C λ + Cnt τ,   h = B_N,f u0 + B_N,c u_c,   C = B_N,f Z (symmetric positive definite)
+//! u_f = w u0 + K⁻¹ (B_N,fᵀ λ + B_T,fᵀ τ),   u0 = K⁻¹ r
+//! gap = g0 + w h + C_NN λ + C_NT τ,   h = B_N,f u0 + B_N,c u_c,   C = B K⁻¹ Bᵀ
 //! ```
 //!
-//! Each body's stiffness is factored once (in [`crate::ContactProblem`]); the interface work is
-//! dense and of the size of the number of pairs, and the full displacement field is recovered
-//! once at the end. Without friction (every μ = 0) the tangential rows play no part, so their
-//! columns are not solved for: `Zt` and the `C_·T`, `C_T·` blocks are then empty (0 columns).
+//! The contact DOFs are ordered last in the Cholesky factorisation of `K_ff`
+//! ([`crate::ContactProblem`]), so with `P K Pᵀ = L Lᵀ`, `L = [L_aa 0; L_ba L_bb]` and `B`
+//! non-zero only on those DOFs (`B P ᵀ = [0 B_b]`):
+//!
+//! ```text
+//! L⁻¹ P Bᵀ = [0; Y],   Y = L_bb⁻¹ B_bᵀ   (dense triangular solve of the size of the contact DOFs)
+//! C = B K⁻¹ Bᵀ = Yᵀ Y                    (symmetric by construction)
+//! ```
+//!
+//! The condensation costs the factorisation (done once, in the problem) plus dense work of the
+//! size of the interface; the full displacement field is recovered once at the end by one solve.
+//! Without friction (every μ = 0) the tangential rows play no part: the `C_·T`, `C_T·` blocks
+//! are then empty (0 columns). If a pair touches a DOF outside the trailing block (a problem
+//! rebuilt with different contact nodes), the compliances are computed by multi-RHS solves.
 
-use faer::Mat;
+use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
+use faer::{Mat, get_global_parallelism};
 use nalgebra::DMatrix;
+
+use contact2d_fem::CholeskySolver;
 
 use crate::problem::{ContactProblem, PairRow};
 
@@ -20,15 +33,11 @@ use crate::problem::{ContactProblem, PairRow};
 pub struct Interface {
     /// `u0 = K⁻¹ r`: free displacements of the unit load without contact.
     pub u0: Vec<f64>,
-    /// `Z = K⁻¹ B_N,fᵀ` (free DOFs × pairs).
-    pub z_normal: Mat<f64>,
-    /// `Zt = K⁻¹ B_T,fᵀ` (free DOFs × pairs).
-    pub z_tangent: Mat<f64>,
     /// `h = B_N u0` (with the constrained part of the load pattern).
     pub h_normal: Vec<f64>,
     /// `B_T u0` likewise.
     pub h_tangent: Vec<f64>,
-    /// `C_NN = B_N Z`, `C_NT = B_N Zt`, `C_TN`, `C_TT`.
+    /// `C_NN = B_N K⁻¹ B_Nᵀ`; `C_NT`, `C_TN`, `C_TT` likewise.
     pub c_nn: DMatrix<f64>,
     /// Normal rows against tangential forces.
     pub c_nt: DMatrix<f64>,
@@ -36,8 +45,14 @@ pub struct Interface {
     pub c_tn: DMatrix<f64>,
     /// Tangential rows against tangential forces.
     pub c_tt: DMatrix<f64>,
+    /// The factorisation of `K_ff` (shared with the problem), for the final recovery.
+    solver: CholeskySolver,
+    /// `B_N` and, with friction, `B_T` (free parts), for the final recovery.
+    normal_rows: Vec<PairRow>,
+    tangent_rows: Vec<PairRow>,
 }
 
+/// `Bᵀ` restricted to free DOFs, as dense columns of length `n`.
 fn rows_to_columns(n: usize, rows: &[PairRow]) -> Mat<f64> {
     let mut b = Mat::zeros(n, rows.len());
     for (k, row) in rows.iter().enumerate() {
@@ -48,49 +63,92 @@ fn rows_to_columns(n: usize, rows: &[PairRow]) -> Mat<f64> {
     b
 }
 
-fn apply_rows(rows: &[PairRow], z: &Mat<f64>) -> DMatrix<f64> {
-    DMatrix::from_fn(rows.len(), z.ncols(), |k, j| rows[k].free.iter().map(|(i, v)| v * z[(*i, j)]).sum())
+fn to_dmatrix(m: &Mat<f64>) -> DMatrix<f64> {
+    DMatrix::from_fn(m.nrows(), m.ncols(), |i, j| m[(i, j)])
+}
+
+/// `Y = L_bb⁻¹ B_bᵀ` for the normal and tangential rows, or `None` if some row touches a DOF
+/// outside the trailing block.
+fn trailing_solve(problem: &ContactProblem, normal: &[PairRow], tangent: &[PairRow]) -> Option<(Mat<f64>, Mat<f64>)> {
+    let last = problem.interface_dofs();
+    let t = last.len();
+    let mut position = vec![usize::MAX; problem.system.dofs.num_free()];
+    for (k, &i) in last.iter().enumerate() {
+        position[i] = k;
+    }
+    let columns = |rows: &[PairRow]| -> Option<Mat<f64>> {
+        let mut b = Mat::zeros(t, rows.len());
+        for (k, row) in rows.iter().enumerate() {
+            for &(i, v) in &row.free {
+                let p = *position.get(i)?;
+                if p == usize::MAX {
+                    return None;
+                }
+                b[(p, k)] += v;
+            }
+        }
+        Some(b)
+    };
+    let (mut yn, mut yt) = (columns(normal)?, columns(tangent)?);
+    let l = problem.solver.trailing_block(t)?;
+    let par = get_global_parallelism();
+    solve_lower_triangular_in_place(l.as_ref(), yn.as_mut(), par);
+    solve_lower_triangular_in_place(l.as_ref(), yt.as_mut(), par);
+    Some((yn, yt))
 }
 
 impl Interface {
-    /// Condenses `problem` onto its pairs (one multi-RHS solve with the existing factorisation).
+    /// Condenses `problem` onto its pairs with the existing factorisation: one solve for `u0`
+    /// and a dense triangular solve on the factor's trailing block.
     pub fn new(problem: &ContactProblem) -> Interface {
         let n = problem.system.dofs.num_free();
         let u0 = problem.solver.solve(&problem.pattern_rhs);
-        let z_normal = problem.solver.solve_many(&rows_to_columns(n, &problem.normal_rows));
-        let frictional = problem.friction.iter().any(|mu| *mu > 0.0);
-        let z_tangent = if frictional {
-            problem.solver.solve_many(&rows_to_columns(n, &problem.tangent_rows))
-        } else {
-            Mat::zeros(n, 0)
+        let frictional = problem.is_frictional();
+        let normal = &problem.normal_rows[..];
+        let tangent: &[PairRow] = if frictional { &problem.tangent_rows } else { &[] };
+        let (c_nn, c_nt, c_tn, c_tt) = match trailing_solve(problem, normal, tangent) {
+            Some((yn, yt)) => {
+                let (ynt, ytt) = (yn.transpose(), yt.transpose());
+                (ynt * &yn, ynt * &yt, ytt * &yn, ytt * &yt)
+            }
+            None => {
+                let b_n = rows_to_columns(n, normal);
+                let b_t = rows_to_columns(n, tangent);
+                let (z_n, z_t) = (problem.solver.solve_many(&b_n), problem.solver.solve_many(&b_t));
+                let (bnt, btt) = (b_n.transpose(), b_t.transpose());
+                (bnt * &z_n, bnt * &z_t, btt * &z_n, btt * &z_t)
+            }
         };
         let h = |rows: &[PairRow]| rows.iter().map(|r| r.dot(&u0, &problem.pattern_prescribed)).collect::<Vec<_>>();
         Interface {
             h_normal: h(&problem.normal_rows),
             h_tangent: h(&problem.tangent_rows),
-            c_nn: apply_rows(&problem.normal_rows, &z_normal),
-            c_nt: apply_rows(&problem.normal_rows, &z_tangent),
-            c_tn: if frictional { apply_rows(&problem.tangent_rows, &z_normal) } else { DMatrix::zeros(0, 0) },
-            c_tt: apply_rows(if frictional { &problem.tangent_rows } else { &[] }, &z_tangent),
+            c_nn: to_dmatrix(&c_nn),
+            c_nt: to_dmatrix(&c_nt),
+            c_tn: if frictional { to_dmatrix(&c_tn) } else { DMatrix::zeros(0, 0) },
+            c_tt: to_dmatrix(&c_tt),
             u0,
-            z_normal,
-            z_tangent,
+            solver: problem.solver.clone(),
+            normal_rows: normal.to_vec(),
+            tangent_rows: tangent.to_vec(),
         }
     }
 
-    /// Free displacements `w u0 + Z λ + Zt τ`.
+    /// Free displacements `w u0 + K⁻¹ (B_Nᵀ λ + B_Tᵀ τ)` (one solve; `τ` is ignored without
+    /// friction).
     pub fn free_displacement(&self, w: f64, lambda: &[f64], tau: &[f64]) -> Vec<f64> {
-        (0..self.u0.len())
-            .map(|i| {
-                w * self.u0[i]
-                    + lambda.iter().enumerate().map(|(k, l)| self.z_normal[(i, k)] * l).sum::<f64>()
-                    + tau
-                        .iter()
-                        .take(self.z_tangent.ncols())
-                        .enumerate()
-                        .map(|(k, t)| self.z_tangent[(i, k)] * t)
-                        .sum::<f64>()
-            })
-            .collect()
+        let mut f = vec![0.0; self.u0.len()];
+        for (row, l) in self.normal_rows.iter().zip(lambda) {
+            for &(i, v) in &row.free {
+                f[i] += v * l;
+            }
+        }
+        for (row, t) in self.tangent_rows.iter().zip(tau) {
+            for &(i, v) in &row.free {
+                f[i] += v * t;
+            }
+        }
+        let x = self.solver.solve(&f);
+        x.iter().zip(&self.u0).map(|(x, u)| w * u + x).collect()
     }
 }

@@ -10,7 +10,9 @@
 //! slave nodes carry `−N_j λ_k n_k`. Rows are split into their free and constrained parts, so a
 //! prescribed displacement (the pulled edge) enters the gap as `w (B_N,c u_c)`.
 
-use contact2d_fem::{CholeskySolver, Component, Dof, DofKind, LinearSystem, Model, assemble};
+use contact2d_fem::{
+    CholeskySolver, Component, Dof, DofKind, LinearSystem, Model, Ordering, assemble, fill_reducing_permutation,
+};
 
 use crate::error::ContactError;
 use crate::pairing::ContactPair;
@@ -61,6 +63,10 @@ pub struct ContactProblem {
     pub pattern_prescribed: Vec<f64>,
     /// The largest diagonal entry of `K_ff`: a stiffness scale for judging round-off forces.
     pub stiffness_scale: f64,
+    /// Whether the slave contour deforms or is a rigid obstacle.
+    slave: SlaveKind,
+    /// Number of free DOFs ordered last in the factorisation (the contact DOFs).
+    interface_dofs: usize,
 }
 
 impl ContactProblem {
@@ -83,21 +89,73 @@ impl ContactProblem {
 
     fn build(model: Model, pairs: Vec<ContactPair>, slave: SlaveKind) -> Result<ContactProblem, ContactError> {
         let system = assemble(&model)?;
-        let solver = CholeskySolver::factor(&system.stiffness)?;
+        let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, slave)?;
+        // The contact DOFs are ordered last: the trailing block of the factor is then the Schur
+        // complement on them, which condenses the bodies onto the contact (crate::interface).
+        let last = interface_dofs(&system, &normal_rows, &tangent_rows);
+        let ordering = if system.dofs.num_free() >= ND_THRESHOLD { Ordering::NestedDissection } else { Ordering::Amd };
+        let forward = fill_reducing_permutation(&model, &system.dofs, &system.stiffness, ordering, &last)?;
+        let solver = CholeskySolver::factor_with_permutation(&system.stiffness, &forward)?;
+        let friction = vec![0.0; pairs.len()];
+        Ok(ContactProblem::assemble_parts(model, system, solver, pairs, normal_rows, tangent_rows, friction, slave, last.len()))
+    }
+
+    /// The same problem on a moved mesh with the same topology: `model` must have the same DOF
+    /// numbering and stiffness sparsity pattern as `self.model` (e.g. the nodes moved by mesh
+    /// morphing); the symbolic factorisation (ordering, elimination tree, supernodes) is reused
+    /// and only the numeric factorisation is redone. Gaps are the new pairs' geometric gaps; the
+    /// friction coefficients are kept (when the number of pairs is unchanged; else μ = 0); the
+    /// slave side stays deformable or rigid as in `self`. Pairs that touch DOFs outside the
+    /// original contact DOFs are still solved exactly, but [`crate::Interface::new`] then
+    /// condenses them by multi-RHS solves instead of the trailing block of the factor.
+    ///
+    /// # Errors
+    /// From assembly or factorisation; [`ContactError::InvalidInput`] if the DOF numbering or
+    /// the sparsity pattern differs.
+    pub fn rebuild_moved(&self, model: Model, pairs: Vec<ContactPair>) -> Result<ContactProblem, ContactError> {
+        let system = assemble(&model)?;
+        if system.dofs != self.system.dofs {
+            return Err(ContactError::InvalidInput("rebuild_moved: the DOF numbering differs".into()));
+        }
+        if !self.solver.same_pattern(&system.stiffness) {
+            return Err(ContactError::InvalidInput("rebuild_moved: the stiffness sparsity pattern differs".into()));
+        }
+        let mut solver = self.solver.clone();
+        solver.refactor(&system.stiffness)?;
+        let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, self.slave)?;
+        let friction = if pairs.len() == self.friction.len() { self.friction.clone() } else { vec![0.0; pairs.len()] };
+        Ok(ContactProblem::assemble_parts(
+            model,
+            system,
+            solver,
+            pairs,
+            normal_rows,
+            tangent_rows,
+            friction,
+            self.slave,
+            self.interface_dofs,
+        ))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn assemble_parts(
+        model: Model,
+        system: LinearSystem,
+        solver: CholeskySolver,
+        pairs: Vec<ContactPair>,
+        normal_rows: Vec<PairRow>,
+        tangent_rows: Vec<PairRow>,
+        friction: Vec<f64>,
+        slave: SlaveKind,
+        interface_dofs: usize,
+    ) -> ContactProblem {
         let pattern_prescribed = system.dofs.prescribed_values().to_vec();
         let pattern_rhs = system.rhs(&pattern_prescribed);
-        let mut normal_rows = Vec::with_capacity(pairs.len());
-        let mut tangent_rows = Vec::with_capacity(pairs.len());
-        for p in &pairs {
-            normal_rows.push(pair_row(&system, p, p.normal, slave)?);
-            tangent_rows.push(pair_row(&system, p, p.tangent, slave)?);
-        }
         let k = system.stiffness.as_ref();
         let stiffness_scale = (0..k.ncols())
             .flat_map(|j| k.row_idx_of_col(j).zip(k.val_of_col(j)).filter(move |(i, _)| *i == j).map(|(_, v)| v.abs()))
             .fold(0.0f64, f64::max);
         let gap = pairs.iter().map(|p| p.gap).collect();
-        let friction = vec![0.0; pairs.len()];
         // A tangential row whose free part is negligible (< 1e-3 of the whole row: the tangent
         // lies along constrained directions up to the edge geometry's error) has no unknown.
         let tangential = tangent_rows
@@ -108,7 +166,7 @@ impl ContactProblem {
                 free > 1e-6 * all
             })
             .collect();
-        Ok(ContactProblem {
+        ContactProblem {
             model,
             system,
             solver,
@@ -121,7 +179,9 @@ impl ContactProblem {
             pattern_rhs,
             pattern_prescribed,
             stiffness_scale,
-        })
+            slave,
+            interface_dofs,
+        }
     }
 
     /// Replaces the initial gaps (e.g. by the paper's u_ρc, in displacement units).
@@ -166,6 +226,54 @@ impl ContactProblem {
     pub fn is_gapless(&self) -> bool {
         self.gap.iter().all(|g| *g == 0.0)
     }
+
+    /// The free DOFs ordered last in the factorisation, in that order: the contact DOFs, whose
+    /// Schur complement is the factor's trailing block.
+    pub fn interface_dofs(&self) -> &[usize] {
+        match self.solver.permutation() {
+            Some(p) => &p[p.len() - self.interface_dofs.min(p.len())..],
+            None => &[],
+        }
+    }
+}
+
+/// From this many free DOFs on, the problem is ordered by nested dissection, below by AMD
+/// (measured in docs/benchmarks.md, "Contact solves").
+const ND_THRESHOLD: usize = 0;
+
+/// The normal and tangential rows of `pairs`.
+fn pair_rows(
+    system: &LinearSystem,
+    pairs: &[ContactPair],
+    slave: SlaveKind,
+) -> Result<(Vec<PairRow>, Vec<PairRow>), ContactError> {
+    let mut normal_rows = Vec::with_capacity(pairs.len());
+    let mut tangent_rows = Vec::with_capacity(pairs.len());
+    for p in pairs {
+        normal_rows.push(pair_row(system, p, p.normal, slave)?);
+        tangent_rows.push(pair_row(system, p, p.tangent, slave)?);
+    }
+    Ok((normal_rows, tangent_rows))
+}
+
+/// Every free DOF of every node that a pair row touches, in order of first appearance.
+fn interface_dofs(system: &LinearSystem, normal: &[PairRow], tangent: &[PairRow]) -> Vec<usize> {
+    let dofs = &system.dofs;
+    let mut seen = vec![false; dofs.num_free()];
+    let mut out = vec![];
+    for row in normal.iter().chain(tangent) {
+        for &(i, _) in &row.free {
+            let node = dofs.free_dofs()[i].node();
+            for c in [Component::X, Component::Y] {
+                if let DofKind::Free(j) = dofs.kind(Dof::of(node, c))
+                    && !std::mem::replace(&mut seen[j], true)
+                {
+                    out.push(j);
+                }
+            }
+        }
+    }
+    out
 }
 
 /// Whether the slave side deforms or is a rigid obstacle.

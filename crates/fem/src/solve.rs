@@ -1,58 +1,164 @@
 //! Sparse Cholesky solves through faer, with the symbolic factorisation kept for reuse.
 //!
 //! ```text
-//! K_ff = P Lᵀ... : symbolic analysis (AMD ordering, elimination tree, supernodes) once per
-//! sparsity pattern; numeric factorisation K_ff = L Lᵀ whenever the values change.
+//! P K_ff Pᵀ = L Lᵀ :  symbolic analysis (ordering P, elimination tree, supernodes) once per
+//!                     sparsity pattern; numeric factorisation whenever the values change.
+//! P from faer's AMD, or any permutation given (e.g. crate::ordering's nested dissection).
+//! With the last t DOFs of P chosen (contact DOFs), L = [L_aa 0; L_ba L_bb] and
+//! L_bb L_bbᵀ = K_bb − K_ba K_aa⁻¹ K_ab: the Schur complement on them (`trailing_block`).
 //! ```
+//!
+//! The symbolic factorisation and the values of `L` are shared (reference counted): cloning a
+//! solver is cheap, and a clone keeps solving with the factor it was cloned from.
 
-use faer::linalg::solvers::Solve;
-use faer::sparse::linalg::solvers::{Llt, SymbolicLlt};
-use faer::{Mat, Side};
+use std::fmt;
+use std::sync::Arc;
+
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::perm::PermRef;
+use faer::sparse::linalg::cholesky::{
+    LltRef, SymbolicCholesky, SymbolicCholeskyRaw, SymmetricOrdering, factorize_symbolic_cholesky,
+};
+use faer::{Conj, Mat, Side, get_global_parallelism};
 
 use crate::assembly::Csc;
 use crate::error::FemError;
+use crate::ordering::is_permutation;
 
 /// A Cholesky factorisation of a symmetric positive definite matrix stored as its lower triangle.
-#[derive(Debug, Clone)]
+#[derive(Clone)]
 pub struct CholeskySolver {
-    symbolic: SymbolicLlt<usize>,
-    factor: Llt<usize, f64>,
+    symbolic: Arc<SymbolicCholesky<usize>>,
+    values: Arc<Vec<f64>>,
     dim: usize,
+    pattern: PatternFingerprint,
 }
 
-fn numeric(symbolic: &SymbolicLlt<usize>, k: &Csc) -> Result<Llt<usize, f64>, FemError> {
-    Llt::try_new_with_symbolic(symbolic.clone(), k.as_ref(), Side::Lower).map_err(|e| {
-        FemError::Factorization(format!(
-            "stiffness matrix is not positive definite ({e:?}): a body may be unconstrained or an element degenerate"
-        ))
-    })
+/// The shape, number of entries and a hash of the sparsity pattern a factorisation was made for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct PatternFingerprint {
+    nnz: usize,
+    hash: u64,
+}
+
+impl PatternFingerprint {
+    fn of(k: &Csc) -> PatternFingerprint {
+        let k = k.as_ref();
+        // FNV-1a over the column pointers and row indices.
+        let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
+        let mut eat = |v: usize| {
+            hash ^= v as u64;
+            hash = hash.wrapping_mul(0x0100_0000_01b3);
+        };
+        for j in 0..k.ncols() {
+            eat(usize::MAX);
+            k.row_idx_of_col(j).for_each(&mut eat);
+        }
+        PatternFingerprint { nnz: k.compute_nnz(), hash }
+    }
+}
+
+impl fmt::Debug for CholeskySolver {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("CholeskySolver")
+            .field("dim", &self.dim)
+            .field("factor_nnz", &self.factor_nnz())
+            .field("supernodal", &matches!(self.symbolic.raw(), SymbolicCholeskyRaw::Supernodal(_)))
+            .finish()
+    }
+}
+
+fn numeric(symbolic: &SymbolicCholesky<usize>, k: &Csc) -> Result<Vec<f64>, FemError> {
+    let par = get_global_parallelism();
+    let mut values = vec![0.0; symbolic.len_val()];
+    let mut mem = MemBuffer::try_new(symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default()))
+        .map_err(|e| FemError::Factorization(format!("workspace: {e:?}")))?;
+    symbolic
+        .factorize_numeric_llt(
+            &mut values,
+            k.as_ref(),
+            Side::Lower,
+            Default::default(),
+            par,
+            MemStack::new(&mut mem),
+            Default::default(),
+        )
+        .map_err(|e| {
+            FemError::Factorization(format!(
+                "stiffness matrix is not positive definite ({e:?}): a body may be unconstrained or an element degenerate"
+            ))
+        })?;
+    Ok(values)
+}
+
+fn check_square(k: &Csc) -> Result<(), FemError> {
+    if k.nrows() != k.ncols() {
+        return Err(FemError::Factorization(format!("matrix is {}×{}, not square", k.nrows(), k.ncols())));
+    }
+    Ok(())
 }
 
 impl CholeskySolver {
-    /// Analyses and factors `k` (lower triangle).
+    /// Analyses and factors `k` (lower triangle) with faer's AMD ordering.
     ///
     /// # Errors
     /// [`FemError::Factorization`] if `k` is not square or not positive definite.
     pub fn factor(k: &Csc) -> Result<CholeskySolver, FemError> {
-        if k.nrows() != k.ncols() {
-            return Err(FemError::Factorization(format!("matrix is {}×{}, not square", k.nrows(), k.ncols())));
-        }
-        let symbolic = SymbolicLlt::try_new(k.symbolic(), Side::Lower)
+        check_square(k)?;
+        let symbolic = factorize_symbolic_cholesky(k.symbolic(), Side::Lower, SymmetricOrdering::Amd, Default::default())
             .map_err(|e| FemError::Factorization(format!("symbolic analysis: {e:?}")))?;
-        let factor = numeric(&symbolic, k)?;
-        Ok(CholeskySolver { symbolic, factor, dim: k.nrows() })
+        CholeskySolver::finish(symbolic, k)
+    }
+
+    /// Analyses and factors `k` (lower triangle) with the fill-reducing permutation `forward`
+    /// (`forward[new] = old`), e.g. from [`crate::fill_reducing_permutation`].
+    ///
+    /// # Errors
+    /// [`FemError::Factorization`] if `k` is not square or not positive definite, or `forward`
+    /// is not a permutation of `0..k.nrows()`.
+    pub fn factor_with_permutation(k: &Csc, forward: &[usize]) -> Result<CholeskySolver, FemError> {
+        check_square(k)?;
+        let n = k.nrows();
+        if !is_permutation(forward, n) {
+            return Err(FemError::Factorization(format!("the ordering is not a permutation of 0..{n}")));
+        }
+        let mut inverse = vec![0; n];
+        for (new, &old) in forward.iter().enumerate() {
+            inverse[old] = new;
+        }
+        let perm = PermRef::new_checked(forward, &inverse, n);
+        let symbolic =
+            factorize_symbolic_cholesky(k.symbolic(), Side::Lower, SymmetricOrdering::Custom(perm), Default::default())
+                .map_err(|e| FemError::Factorization(format!("symbolic analysis: {e:?}")))?;
+        CholeskySolver::finish(symbolic, k)
+    }
+
+    fn finish(symbolic: SymbolicCholesky<usize>, k: &Csc) -> Result<CholeskySolver, FemError> {
+        let values = numeric(&symbolic, k)?;
+        Ok(CholeskySolver {
+            symbolic: Arc::new(symbolic),
+            values: Arc::new(values),
+            dim: k.nrows(),
+            pattern: PatternFingerprint::of(k),
+        })
     }
 
     /// Refactors with new values on the same sparsity pattern, reusing the symbolic analysis.
     ///
     /// # Errors
-    /// [`FemError::Factorization`] if the pattern's size differs or the matrix is not positive definite.
+    /// [`FemError::Factorization`] if the pattern differs from the analysed one or the matrix is
+    /// not positive definite.
     pub fn refactor(&mut self, k: &Csc) -> Result<(), FemError> {
-        if k.nrows() != self.dim || k.ncols() != self.dim {
-            return Err(FemError::Factorization("refactor: matrix size changed".into()));
+        if !self.same_pattern(k) {
+            return Err(FemError::Factorization("refactor: the sparsity pattern changed".into()));
         }
-        self.factor = numeric(&self.symbolic, k)?;
+        self.values = Arc::new(numeric(&self.symbolic, k)?);
         Ok(())
+    }
+
+    /// Whether `k` has the sparsity pattern this factorisation was analysed for.
+    pub fn same_pattern(&self, k: &Csc) -> bool {
+        k.nrows() == self.dim && k.ncols() == self.dim && PatternFingerprint::of(k) == self.pattern
     }
 
     /// Dimension of the system.
@@ -60,15 +166,90 @@ impl CholeskySolver {
         self.dim
     }
 
+    /// The fill-reducing permutation (`forward[new] = old`), if any.
+    pub fn permutation(&self) -> Option<&[usize]> {
+        self.symbolic.perm().map(|p| p.arrays().0)
+    }
+
+    /// Number of entries of `L` (lower triangle, diagonal included).
+    pub fn factor_nnz(&self) -> usize {
+        match self.symbolic.raw() {
+            SymbolicCholeskyRaw::Simplicial(s) => s.len_val(),
+            SymbolicCholeskyRaw::Supernodal(s) => (0..s.n_supernodes())
+                .map(|j| {
+                    let c = s.supernode_end()[j] - s.supernode_begin()[j];
+                    c * (c + 1) / 2 + c * s.supernode(j).pattern().len()
+                })
+                .sum(),
+        }
+    }
+
     /// Solves `K x = b`.
     pub fn solve(&self, b: &[f64]) -> Vec<f64> {
-        let rhs = Mat::from_fn(b.len(), 1, |i, _| b[i]);
-        let x = self.factor.solve(&rhs);
-        (0..b.len()).map(|i| x[(i, 0)]).collect()
+        let mut x = Mat::from_fn(b.len(), 1, |i, _| b[i]);
+        self.solve_in_place(&mut x);
+        x.col(0).iter().copied().collect()
     }
 
     /// Solves `K X = B` for several right-hand sides at once.
     pub fn solve_many(&self, b: &Mat<f64>) -> Mat<f64> {
-        self.factor.solve(b)
+        let mut x = b.clone();
+        self.solve_in_place(&mut x);
+        x
+    }
+
+    fn solve_in_place(&self, x: &mut Mat<f64>) {
+        let par = get_global_parallelism();
+        let req = self.symbolic.solve_in_place_scratch::<f64>(x.ncols(), par);
+        // The workspace is of the size of the right-hand side; failing to allocate it is an
+        // out-of-memory condition, which Rust's allocator treats as fatal anyway.
+        let mut mem = MemBuffer::new(req);
+        LltRef::new(&self.symbolic, &self.values).solve_in_place_with_conj(
+            Conj::No,
+            x.as_mut(),
+            par,
+            MemStack::new(&mut mem),
+        );
+    }
+
+    /// The trailing `t × t` block `L_bb` of the factor (dense, lower triangular), in the order of
+    /// the last `t` DOFs of [`CholeskySolver::permutation`]: `L_bb L_bbᵀ` is the Schur
+    /// complement of `K` on those DOFs. `None` if `t` exceeds the dimension.
+    pub fn trailing_block(&self, t: usize) -> Option<Mat<f64>> {
+        let n = self.dim;
+        let first = n.checked_sub(t)?;
+        let mut l = Mat::zeros(t, t);
+        match self.symbolic.raw() {
+            SymbolicCholeskyRaw::Simplicial(s) => {
+                let (ptr, rows) = (s.col_ptr(), s.row_idx());
+                for j in first..n {
+                    for p in ptr[j]..ptr[j + 1] {
+                        l[(rows[p] - first, j - first)] = self.values[p];
+                    }
+                }
+            }
+            SymbolicCholeskyRaw::Supernodal(s) => {
+                for sn in 0..s.n_supernodes() {
+                    let (begin, end) = (s.supernode_begin()[sn], s.supernode_end()[sn]);
+                    if end <= first {
+                        continue;
+                    }
+                    let c = end - begin;
+                    let pattern = s.supernode(sn).pattern();
+                    let vals = &self.values[s.col_ptr_for_val()[sn]..s.col_ptr_for_val()[sn + 1]];
+                    let rows = c + pattern.len();
+                    for jj in (first.max(begin) - begin)..c {
+                        let col = &vals[jj * rows..(jj + 1) * rows];
+                        for (ii, v) in col.iter().enumerate().take(c).skip(jj) {
+                            l[(begin + ii - first, begin + jj - first)] = *v;
+                        }
+                        for (r, v) in pattern.iter().zip(&col[c..]) {
+                            l[(r - first, begin + jj - first)] = *v;
+                        }
+                    }
+                }
+            }
+        }
+        Some(l)
     }
 }

@@ -1,0 +1,315 @@
+//! Fill-reducing orderings of the free DOFs for the Cholesky factorisation.
+//!
+//! ```text
+//! Amd:               faer's approximate minimum degree on the DOF graph of K_ff
+//! NestedDissection:  geometric nested dissection of the node graph (nodes ~ if they share a cell):
+//!   dissect(V): |V| ≤ LEAF → minimum degree on V's own graph
+//!               else for both axes: split V at the median coordinate into A | B, separator S =
+//!               the nodes of one side with a neighbour on the other (the smaller side's set);
+//!               keep the axis with the smaller S;  order dissect(A∖S), dissect(B∖S), then S
+//! both DOFs of a node stay together; DOFs listed as `last` (e.g. the contact DOFs) are ordered
+//! after all others, so that L's trailing block holds the Schur complement on them.
+//! ```
+//!
+//! A permutation is `forward[new] = old` over the free indices.
+
+use std::collections::HashSet;
+
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::sparse::SymbolicSparseColMat;
+use faer::sparse::linalg::amd;
+use rayon::prelude::*;
+
+use crate::assembly::Csc;
+use crate::dof::{Dof, DofKind, DofMap};
+use crate::error::FemError;
+use crate::model::Model;
+
+/// The fill-reducing ordering used by [`crate::CholeskySolver`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Ordering {
+    /// Approximate minimum degree on the DOF graph (faer's).
+    Amd,
+    /// Geometric nested dissection on the node graph (needs the node coordinates).
+    #[default]
+    NestedDissection,
+}
+
+/// Node sets of at most this many nodes are ordered by minimum degree instead of dissected.
+const LEAF: usize = 64;
+
+/// The node graph in compressed form: the neighbours of node `n` (itself excluded) are
+/// `adj[ptr[n]..ptr[n + 1]]`, sorted.
+#[derive(Debug, Clone)]
+pub(crate) struct NodeGraph {
+    pub(crate) ptr: Vec<usize>,
+    pub(crate) adj: Vec<usize>,
+}
+
+impl NodeGraph {
+    /// Nodes that share a cell of any body are neighbours.
+    pub(crate) fn of_model(model: &Model) -> NodeGraph {
+        let num_nodes = model.mesh.num_nodes();
+        let cells: Vec<(usize, usize)> =
+            model.bodies.iter().enumerate().flat_map(|(b, body)| (0..body.num_cells()).map(move |i| (b, i))).collect();
+        let mut cell_ptr = vec![0usize; num_nodes + 1];
+        for &(b, i) in &cells {
+            for n in model.bodies[b].cell_nodes(i) {
+                cell_ptr[n.0 + 1] += 1;
+            }
+        }
+        for i in 0..num_nodes {
+            cell_ptr[i + 1] += cell_ptr[i];
+        }
+        let mut next = cell_ptr.clone();
+        let mut node_cells = vec![0usize; cell_ptr[num_nodes]];
+        for (c, &(b, i)) in cells.iter().enumerate() {
+            for n in model.bodies[b].cell_nodes(i) {
+                node_cells[next[n.0]] = c;
+                next[n.0] += 1;
+            }
+        }
+        let lists: Vec<Vec<usize>> = (0..num_nodes)
+            .into_par_iter()
+            .map(|n| {
+                let mut v: Vec<usize> = node_cells[cell_ptr[n]..cell_ptr[n + 1]]
+                    .iter()
+                    .flat_map(|&c| model.bodies[cells[c].0].cell_nodes(cells[c].1).iter().map(|m| m.0))
+                    .filter(|&m| m != n)
+                    .collect();
+                v.sort_unstable();
+                v.dedup();
+                v
+            })
+            .collect();
+        let mut ptr = Vec::with_capacity(num_nodes + 1);
+        ptr.push(0);
+        let mut adj = Vec::with_capacity(lists.iter().map(Vec::len).sum());
+        for v in lists {
+            adj.extend_from_slice(&v);
+            ptr.push(adj.len());
+        }
+        NodeGraph { ptr, adj }
+    }
+
+    /// The neighbours of node `n`.
+    pub(crate) fn neighbours(&self, n: usize) -> &[usize] {
+        &self.adj[self.ptr[n]..self.ptr[n + 1]]
+    }
+}
+
+/// A fill-reducing permutation of the free DOFs of `model` (`forward[new] = old`), with the free
+/// DOFs `last` (and the other free DOF of their nodes, for nested dissection) at the end in the
+/// order given.
+///
+/// # Errors
+/// [`FemError::InvalidInput`] for an index in `last` that is not a free DOF;
+/// [`FemError::Factorization`] if AMD fails (out of memory).
+pub fn fill_reducing_permutation(
+    model: &Model,
+    dofs: &DofMap,
+    stiffness: &Csc,
+    ordering: Ordering,
+    last: &[usize],
+) -> Result<Vec<usize>, FemError> {
+    let nf = dofs.num_free();
+    if let Some(bad) = last.iter().find(|&&i| i >= nf) {
+        return Err(FemError::InvalidInput(format!("ordering: free index {bad} out of range ({nf} free DOFs)")));
+    }
+    match ordering {
+        Ordering::Amd => amd_with_last(stiffness, last),
+        Ordering::NestedDissection => {
+            let mut tail: Vec<usize> = vec![];
+            let mut seen = HashSet::new();
+            for &i in last {
+                let node = dofs.free_dofs()[i].node();
+                if seen.insert(node) {
+                    tail.push(node);
+                }
+            }
+            Ok(nested_dissection(model, dofs, &tail))
+        }
+    }
+}
+
+/// Free index of global DOF `g`, if it is free.
+fn free_index(dofs: &DofMap, g: usize) -> Option<usize> {
+    match dofs.kind(Dof(g)) {
+        DofKind::Free(i) => Some(i),
+        _ => None,
+    }
+}
+
+/// The free DOFs of the nodes in `order`, each node's together.
+fn dofs_of_nodes(order: &[usize], dofs: &DofMap) -> Vec<usize> {
+    order.iter().flat_map(|&n| [2 * n, 2 * n + 1]).filter_map(|g| free_index(dofs, g)).collect()
+}
+
+/// Nested dissection of the nodes with free DOFs, the nodes `tail` ordered last.
+fn nested_dissection(model: &Model, dofs: &DofMap, tail: &[usize]) -> Vec<usize> {
+    let graph = NodeGraph::of_model(model);
+    let points = &model.mesh.points;
+    let num_nodes = points.len();
+    // mark[n]: 0 = not in the set being split, 1 / 2 = side A / B of the current split.
+    let mut mark = vec![0u8; num_nodes];
+    let mut excluded = vec![false; num_nodes];
+    for &n in tail {
+        excluded[n] = true;
+    }
+    let nodes: Vec<usize> = (0..num_nodes)
+        .filter(|&n| !excluded[n] && (free_index(dofs, 2 * n).is_some() || free_index(dofs, 2 * n + 1).is_some()))
+        .collect();
+    let mut order = Vec::with_capacity(nodes.len() + tail.len());
+    // Work stack: a node set to dissect, or a separator to emit once both halves are done.
+    let mut stack: Vec<(Vec<usize>, bool)> = vec![(nodes, false)];
+    while let Some((nodes, is_separator)) = stack.pop() {
+        if is_separator {
+            order.extend(nodes);
+            continue;
+        }
+        if nodes.len() <= LEAF {
+            order.extend(minimum_degree(&graph, &nodes, &mut mark));
+            continue;
+        }
+        let best = [0, 1]
+            .into_iter()
+            .filter_map(|axis| split(&graph, points, &nodes, axis, &mut mark))
+            .min_by_key(|s| s.2.len());
+        let Some((first, second, sep)) = best else {
+            order.extend(minimum_degree(&graph, &nodes, &mut mark));
+            continue;
+        };
+        stack.push((sep, true));
+        stack.push((second, false));
+        stack.push((first, false));
+    }
+    order.extend_from_slice(tail);
+    dofs_of_nodes(&order, dofs)
+}
+
+/// Splits `nodes` at the median of coordinate `axis`: `(first part, second part, separator)`, or
+/// `None` if all nodes share the median coordinate.
+fn split(
+    graph: &NodeGraph,
+    points: &[[f64; 2]],
+    nodes: &[usize],
+    axis: usize,
+    mark: &mut [u8],
+) -> Option<(Vec<usize>, Vec<usize>, Vec<usize>)> {
+    let mut sorted = nodes.to_vec();
+    let mid = sorted.len() / 2;
+    sorted.select_nth_unstable_by(mid, |&a, &b| points[a][axis].total_cmp(&points[b][axis]));
+    let cut = points[sorted[mid]][axis];
+    let (a, b): (Vec<usize>, Vec<usize>) = nodes.iter().partition(|&&n| points[n][axis] < cut);
+    if a.is_empty() || b.is_empty() {
+        return None;
+    }
+    for &n in &a {
+        mark[n] = 1;
+    }
+    for &n in &b {
+        mark[n] = 2;
+    }
+    let touches = |n: usize, other: u8| graph.neighbours(n).iter().any(|&m| mark[m] == other);
+    let (sep_a, inner_a): (Vec<usize>, Vec<usize>) = a.iter().partition(|&&n| touches(n, 2));
+    let (sep_b, inner_b): (Vec<usize>, Vec<usize>) = b.iter().partition(|&&n| touches(n, 1));
+    for &n in nodes {
+        mark[n] = 0;
+    }
+    Some(if sep_a.len() <= sep_b.len() { (inner_a, b, sep_a) } else { (a, inner_b, sep_b) })
+}
+
+/// Exact minimum degree on the graph induced by `nodes` (at most a few hundred): eliminate the
+/// node of least degree, join its neighbours into a clique, repeat.
+fn minimum_degree(graph: &NodeGraph, nodes: &[usize], mark: &mut [u8]) -> Vec<usize> {
+    let k = nodes.len();
+    if k <= 2 {
+        return nodes.to_vec();
+    }
+    let words = k.div_ceil(64);
+    // Local index of each node through a temporary map (mark holds membership only).
+    let mut index = std::collections::HashMap::with_capacity(k);
+    for (i, &n) in nodes.iter().enumerate() {
+        mark[n] = 3;
+        index.insert(n, i);
+    }
+    let mut adj = vec![0u64; k * words];
+    for (i, &n) in nodes.iter().enumerate() {
+        for m in graph.neighbours(n) {
+            if mark[*m] == 3
+                && let Some(&j) = index.get(m)
+            {
+                adj[i * words + j / 64] |= 1 << (j % 64);
+            }
+        }
+    }
+    for &n in nodes {
+        mark[n] = 0;
+    }
+    let mut alive = vec![true; k];
+    let mut order = Vec::with_capacity(k);
+    for _ in 0..k {
+        let degree = |i: usize| adj[i * words..(i + 1) * words].iter().map(|w| w.count_ones()).sum::<u32>();
+        let Some(v) = (0..k).filter(|&i| alive[i]).min_by_key(|&i| degree(i)) else { break };
+        alive[v] = false;
+        order.push(nodes[v]);
+        let row: Vec<u64> = adj[v * words..(v + 1) * words].to_vec();
+        for (u, live) in alive.iter().enumerate() {
+            if *live && row[u / 64] >> (u % 64) & 1 == 1 {
+                for w in 0..words {
+                    adj[u * words + w] |= row[w];
+                }
+                adj[u * words + u / 64] &= !(1 << (u % 64));
+                adj[u * words + v / 64] &= !(1 << (v % 64));
+            }
+        }
+    }
+    order
+}
+
+/// faer's AMD on the DOF graph of `K_ff` without the DOFs `last`, then `last`.
+fn amd_with_last(stiffness: &Csc, last: &[usize]) -> Result<Vec<usize>, FemError> {
+    let n = stiffness.nrows();
+    let mut is_last = vec![false; n];
+    for &i in last {
+        is_last[i] = true;
+    }
+    // Sub-matrix pattern of the remaining DOFs, renumbered 0..n_rest.
+    let mut new_index = vec![usize::MAX; n];
+    let mut rest = Vec::with_capacity(n);
+    for (i, l) in is_last.iter().enumerate() {
+        if !l {
+            new_index[i] = rest.len();
+            rest.push(i);
+        }
+    }
+    let k = stiffness.as_ref();
+    let mut col_ptr = Vec::with_capacity(rest.len() + 1);
+    col_ptr.push(0);
+    let mut row_idx = Vec::with_capacity(k.compute_nnz());
+    for &j in &rest {
+        row_idx.extend(k.row_idx_of_col(j).map(|i| new_index[i]).filter(|&i| i != usize::MAX));
+        col_ptr.push(row_idx.len());
+    }
+    let m = rest.len();
+    let pattern = SymbolicSparseColMat::new_checked(m, m, col_ptr, None, row_idx);
+    let (mut fwd, mut inv) = (vec![0usize; m], vec![0usize; m]);
+    let mut mem = MemBuffer::try_new(amd::order_maybe_unsorted_scratch::<usize>(m, pattern.compute_nnz()))
+        .map_err(|e| FemError::Factorization(format!("AMD workspace: {e:?}")))?;
+    amd::order_maybe_unsorted(&mut fwd, &mut inv, pattern.as_ref(), Default::default(), MemStack::new(&mut mem))
+        .map_err(|e| FemError::Factorization(format!("AMD: {e:?}")))?;
+    let mut seen = vec![false; n];
+    let mut forward: Vec<usize> = fwd.iter().map(|&i| rest[i]).collect();
+    for &i in last {
+        if !std::mem::replace(&mut seen[i], true) {
+            forward.push(i);
+        }
+    }
+    Ok(forward)
+}
+
+/// Whether `forward` is a permutation of `0..n`.
+pub(crate) fn is_permutation(forward: &[usize], n: usize) -> bool {
+    let mut seen = vec![false; n];
+    forward.len() == n && forward.iter().all(|&i| i < n && !std::mem::replace(&mut seen[i], true))
+}

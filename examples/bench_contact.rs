@@ -1,0 +1,168 @@
+//! Contact-solve benchmark: the frictional no-gap plate with insert (μ = 0.3, w = 1, the scene
+//! `scenes/plate_insert_nogap_mu03.toml`) at N = 16 … 128, each phase timed on its own, with
+//! what each saving of docs/algorithms.md ("What a scene does not compute") is worth.
+//!
+//! ```text
+//! set-up      mesh read + node-to-node morphing + pairing + ContactProblem::new (PlateInsert::build)
+//!   of which  assemble | ordering (ND or AMD, contact DOFs last) | factor (symbolic + numeric)
+//! condense    Interface::new: u0 = K⁻¹ r and C = Yᵀ Y on the factor's trailing block
+//! algorithm   frictional active set on the interface; recovery = one solve for u
+//! before      the previous condensation: AMD factor, K Z = Bᵀ for 2 × pairs columns, C = B Z
+//! linear      one linear solve of the same mesh (assemble + factor + solve, no contact)
+//! ```
+//!
+//! Every time is the minimum over `--repeat` runs (default 3). Run:
+//! `cargo run --release --example bench_contact -- 16 32 64 128`; results in docs/benchmarks.md.
+
+use std::time::Instant;
+
+use contact2d::contact::{
+    ContactProblem, Interface, StepAlgorithm, StepStart, equal_steps, solve_frictional_active_set, solve_history,
+};
+use contact2d::fem::{CholeskySolver, Ordering, assemble, fill_reducing_permutation};
+use contact2d::plate_insert::PlateInsert;
+use faer::Mat;
+
+/// Minimum wall time of `f` over `repeat` runs, and its last result.
+fn best<T>(repeat: usize, mut f: impl FnMut() -> T) -> (f64, T) {
+    let mut best = f64::INFINITY;
+    let mut out = None;
+    for _ in 0..repeat.max(1) {
+        let t = Instant::now();
+        let r = f();
+        best = best.min(t.elapsed().as_secs_f64());
+        out = Some(r);
+    }
+    match out {
+        Some(r) => (best, r),
+        None => unreachable!("repeat ≥ 1"),
+    }
+}
+
+fn ms(s: f64) -> String {
+    format!("{:.1}", 1e3 * s)
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let mut levels: Vec<usize> = vec![];
+    let mut repeat = 3;
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        if a == "--repeat" {
+            repeat = args.next().ok_or("--repeat needs a value")?.parse()?;
+        } else {
+            levels.push(a.parse()?);
+        }
+    }
+    if levels.is_empty() {
+        levels = vec![16, 32, 64, 128];
+    }
+    println!(
+        "| N | DOFs | pairs | contact DOFs | set-up | assemble | order | factor | condense | algorithm (it) | recovery | contact total | linear solve | ratio | P | Φ_f |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let mut savings = vec![];
+    for n in levels {
+        let mesh = format!("{}/meshes/plate_insert/plate_insert_eps0_N{n}.msh", env!("CARGO_MANIFEST_DIR"));
+        let spec = PlateInsert { friction: 0.3, ..PlateInsert::paper(mesh) };
+        let (t_setup, case) = best(repeat, || spec.build());
+        let case = case?;
+        let problem = &case.problem;
+        let (model, pairs) = (problem.model.clone(), problem.pairs.clone());
+        let (t_assemble, system) = best(repeat, || assemble(&model));
+        let system = system?;
+        let last = problem.interface_dofs().to_vec();
+        let (t_order, forward) = best(repeat, || {
+            fill_reducing_permutation(&model, &system.dofs, &system.stiffness, Ordering::NestedDissection, &last)
+        });
+        let forward = forward?;
+        let (t_factor, solver) = best(repeat, || CholeskySolver::factor_with_permutation(&system.stiffness, &forward));
+        let solver = solver?;
+        let (t_condense, interface) = best(repeat, || Interface::new(problem));
+        let start = StepStart::initial(problem.num_pairs());
+        let (t_solve, solution) = best(repeat, || solve_frictional_active_set(problem, &interface, 1.0, &start, None, 100));
+        let t_algorithm = solution.time.as_secs_f64();
+        let q = case.results(&solution)?;
+        // One linear solve of the same mesh: assemble, order (ND), factor, solve.
+        let (t_linear, _) = best(repeat, || -> Result<Vec<f64>, Box<dyn std::error::Error>> {
+            let s = assemble(&model)?;
+            let f = fill_reducing_permutation(&model, &s.dofs, &s.stiffness, Ordering::NestedDissection, &[])?;
+            let k = CholeskySolver::factor_with_permutation(&s.stiffness, &f)?;
+            Ok(k.solve(&s.rhs(s.dofs.prescribed_values())))
+        });
+        let contact_total = t_setup + t_condense + t_solve;
+        println!(
+            "| {n} | {} | {} | {} | {} | {} | {} | {} | {} | {} ({}) | {} | **{}** | {} | {:.2} | {:.5} | {:.6} |",
+            system.dofs.num_free(),
+            problem.num_pairs(),
+            last.len(),
+            ms(t_setup),
+            ms(t_assemble),
+            ms(t_order),
+            ms(t_factor),
+            ms(t_condense),
+            ms(t_algorithm),
+            solution.iterations,
+            ms(t_solve - t_algorithm),
+            ms(contact_total),
+            ms(t_linear),
+            (t_assemble + t_order + t_factor + t_condense + t_solve) / t_linear,
+            q.pull,
+            q.dissipation,
+        );
+
+        // Before: AMD factor, then K Z = Bᵀ for the normal and tangential columns, C = B Z.
+        let (t_amd, amd) = best(repeat, || CholeskySolver::factor(&system.stiffness));
+        let amd = amd?;
+        let nf = system.dofs.num_free();
+        let (t_old_condense, _) = best(repeat, || {
+            let mut b = Mat::<f64>::zeros(nf, 2 * problem.num_pairs());
+            for (k, row) in problem.normal_rows.iter().chain(&problem.tangent_rows).enumerate() {
+                for &(i, v) in &row.free {
+                    b[(i, k)] += v;
+                }
+            }
+            let u0 = amd.solve(&problem.pattern_rhs);
+            let z = amd.solve_many(&b);
+            (u0, b.transpose() * &z)
+        });
+        // Frictionless: no tangential unknowns against the same problem with them.
+        let mut frictionless = problem.clone();
+        frictionless.set_friction(0.0)?;
+        let (t_condense_mu0, _) = best(repeat, || Interface::new(&frictionless));
+        // Reusing the symbolic factorisation on a moved mesh against building anew.
+        let (t_rebuild, rebuilt) = best(repeat, || problem.rebuild_moved(model.clone(), pairs.clone()));
+        rebuilt?;
+        let (t_new, _) = best(repeat, || ContactProblem::new(model.clone(), pairs.clone()));
+        // No gap: one solve at w = 1 scaled, against a ten-step history.
+        let (t_history, _) =
+            best(repeat, || solve_history(problem, &interface, StepAlgorithm::ActiveSet, &equal_steps(1.0, 10), 100));
+        // Condensed once against re-solving the bodies in every active-set iteration.
+        let (t_refactor_solve, _) = best(repeat, || {
+            let mut s = solver.clone();
+            s.refactor(&system.stiffness).map(|_| s.solve(&problem.pattern_rhs))
+        });
+        savings.push((
+            n,
+            nf,
+            [
+                (t_amd + t_old_condense, t_factor + t_order + t_condense),
+                (t_condense, t_condense_mu0),
+                (t_new, t_rebuild),
+                (t_history, t_solve),
+                (solution.iterations as f64 * t_refactor_solve, t_condense + t_solve),
+                (t_assemble, 0.0),
+            ],
+        ));
+    }
+    println!();
+    println!(
+        "| N | DOFs | condensation before (AMD + K Z = Bᵀ) / after (ND, contact last, trailing block) | μ = 0.3 / μ = 0 condensation | ContactProblem::new / rebuild_moved | 10-step history / one scaled solve | refactor + solve per iteration / condensed | second assembly avoided |"
+    );
+    println!("|---|---|---|---|---|---|---|---|");
+    for (n, nf, s) in savings {
+        let cells: Vec<String> = s[..5].iter().map(|(a, b)| format!("{} / {} ms", ms(*a), ms(*b))).collect();
+        println!("| {n} | {nf} | {} | {} ms |", cells.join(" | "), ms(s[5].0));
+    }
+    Ok(())
+}
