@@ -80,7 +80,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let solver = solver?;
         let (t_condense, interface) = best(repeat, || Interface::new(problem));
         let start = StepStart::initial(problem.num_pairs());
-        let (t_solve, solution) = best(repeat, || solve_frictional_active_set(problem, &interface, 1.0, &start, None, 100));
+        let (t_solve, solution) =
+            best(repeat, || solve_frictional_active_set(problem, &interface, 1.0, &start, None, 100));
         let t_algorithm = solution.time.as_secs_f64();
         let q = case.results(&solution)?;
         // One linear solve of the same mesh: assemble, order (ND), factor, solve.

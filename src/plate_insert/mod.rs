@@ -143,7 +143,22 @@ impl PlateInsert {
     ///
     /// # Errors
     /// Model or pairing errors, or a placement outside its corner's range.
-    pub fn build_on(&self, mut mesh: contact2d_mesh::Mesh) -> Result<PlateInsertProblem, ContactError> {
+    pub fn build_on(&self, mesh: contact2d_mesh::Mesh) -> Result<PlateInsertProblem, ContactError> {
+        self.build_reusing(mesh, None)
+    }
+
+    /// Like [`PlateInsert::build_on`], reusing the symbolic factorisation of `previous` (a
+    /// problem of the same mesh topology, e.g. before its nodes were moved): only the numeric
+    /// factorisation is redone.
+    ///
+    /// # Errors
+    /// As [`PlateInsert::build_on`], or a DOF numbering or sparsity pattern that differs from
+    /// `previous`'s.
+    pub fn build_reusing(
+        &self,
+        mut mesh: contact2d_mesh::Mesh,
+        previous: Option<&ContactProblem>,
+    ) -> Result<PlateInsertProblem, ContactError> {
         if !self.placed_nodes.is_empty() {
             let (_, hole, insert) = self.model(mesh.clone())?;
             let master = match self.variant {
@@ -162,7 +177,9 @@ impl PlateInsert {
         }
         let (model, hole, insert_edge) = self.model(mesh)?;
         let (pairs, _) = self.pair(&model, &hole, &insert_edge)?;
-        let mut problem = if self.rigid_insert {
+        let mut problem = if let Some(previous) = previous {
+            previous.rebuild_moved(model, pairs)?
+        } else if self.rigid_insert {
             ContactProblem::with_rigid_slave(model, pairs)?
         } else {
             ContactProblem::new(model, pairs)?

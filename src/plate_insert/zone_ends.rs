@@ -122,6 +122,8 @@ impl Evaluation {
 struct Search<'a> {
     template: &'a PlateInsert,
     mesh: &'a Mesh,
+    /// The generated mesh's problem: its symbolic factorisation serves every adjusted mesh.
+    base: &'a PlateInsertProblem,
     loading: PlacedLoading,
     history: &'a ContourHistory,
     l_corner: usize,
@@ -155,7 +157,8 @@ impl Search<'_> {
         }
         let mut placed_nodes = vec![NodePlacement { eta: l, corner: self.l_corner }];
         placed_nodes.extend(b.map(|(eta, corner, _)| NodePlacement { eta, corner }));
-        let case = PlateInsert { placed_nodes, ..self.template.clone() }.build_on(self.mesh.clone())?;
+        let template = PlateInsert { placed_nodes, ..self.template.clone() };
+        let case = template.build_reusing(self.mesh.clone(), Some(&self.base.problem))?;
         let interface = Interface::new(&case.problem);
         let start = self.history.start_for(&case);
         let order = eta_order(&case);
@@ -250,6 +253,7 @@ pub fn place_zone_ends(
     let mut run = Search {
         template: &template,
         mesh,
+        base: &base,
         loading,
         history,
         l_corner: 0,

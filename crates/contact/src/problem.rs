@@ -97,7 +97,17 @@ impl ContactProblem {
         let forward = fill_reducing_permutation(&model, &system.dofs, &system.stiffness, ordering, &last)?;
         let solver = CholeskySolver::factor_with_permutation(&system.stiffness, &forward)?;
         let friction = vec![0.0; pairs.len()];
-        Ok(ContactProblem::assemble_parts(model, system, solver, pairs, normal_rows, tangent_rows, friction, slave, last.len()))
+        Ok(ContactProblem::assemble_parts(
+            model,
+            system,
+            solver,
+            pairs,
+            normal_rows,
+            tangent_rows,
+            friction,
+            slave,
+            last.len(),
+        ))
     }
 
     /// The same problem on a moved mesh with the same topology: `model` must have the same DOF
