@@ -10,7 +10,7 @@
 use std::fmt::Write;
 use std::time::Instant;
 
-use contact2d::doc_sections::write_section;
+use contact2d::doc_sections::publish_section;
 use contact2d::plate_insert::{PairingVariant, PlacedLoading, PlateInsert, ZoneEndSearch, solve_placed_history};
 
 fn mesh(eps: &str, n: usize) -> String {
@@ -106,9 +106,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
     println!("{out}");
-    if !std::env::args().any(|a| a == "--print") {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/verification.md");
-        write_section(&path, "Verification", "boussinesq-placed", &out)?;
+    if let Some(path) = publish_section("verification.md", "Verification", "boussinesq-placed", &out)? {
         eprintln!("wrote {}", path.display());
     }
     Ok(())

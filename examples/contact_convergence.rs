@@ -15,7 +15,7 @@ use std::fmt::Write;
 use std::time::Instant;
 
 use contact2d::contact::{ContactSolution, Interface, solve_frictionless_active_set, solve_frictionless_qp};
-use contact2d::doc_sections::write_section;
+use contact2d::doc_sections::publish_section;
 use contact2d::plate_insert::{PairingVariant, PlateInsert};
 
 struct Case {
@@ -111,9 +111,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         writeln!(out)?;
     }
     println!("{out}");
-    if !std::env::args().any(|a| a == "--print") {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/verification.md");
-        write_section(&path, "Verification", "contact-frictionless", &out)?;
+    if let Some(path) = publish_section("verification.md", "Verification", "contact-frictionless", &out)? {
         eprintln!("wrote {}", path.display());
     }
     Ok(())

@@ -14,7 +14,7 @@ use contact2d::contact::{
     BoussinesqLoading, ContactSolution, Interface, StepStart, solve_boussinesq_step, solve_frictional_active_set,
     solve_frictional_qp,
 };
-use contact2d::doc_sections::write_section;
+use contact2d::doc_sections::publish_section;
 use contact2d::plate_insert::PlateInsert;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -92,9 +92,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
     println!("{out}");
-    if !std::env::args().any(|a| a == "--print") {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/verification.md");
-        write_section(&path, "Verification", "contact-friction", &out)?;
+    if let Some(path) = publish_section("verification.md", "Verification", "contact-friction", &out)? {
         eprintln!("wrote {}", path.display());
     }
     Ok(())

@@ -11,7 +11,7 @@
 use std::fmt::Write;
 
 use contact2d::contact::{Interface, StepAlgorithm, equal_steps, solve_history};
-use contact2d::doc_sections::write_section;
+use contact2d::doc_sections::publish_section;
 use contact2d::plate_insert::{PairingVariant, PlateInsert};
 
 const STEPS: [usize; 8] = [1, 2, 3, 4, 5, 8, 20, 40];
@@ -68,9 +68,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
     println!("{out}");
-    if !std::env::args().any(|a| a == "--print") {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/verification.md");
-        write_section(&path, "Verification", "stick-zone-study", &out)?;
+    if let Some(path) = publish_section("verification.md", "Verification", "stick-zone-study", &out)? {
         eprintln!("wrote {}", path.display());
     }
     Ok(())

@@ -7,7 +7,22 @@
 //! <!-- END name -->
 //! ```
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
+
+/// Writes `body` as section `name` of `docs/<doc>` in this repository (title `title` if the
+/// file is new), unless the program was started with `--print` (a dry run). Returns the path
+/// written.
+///
+/// # Errors
+/// I/O errors reading or writing the file.
+pub fn publish_section(doc: &str, title: &str, name: &str, body: &str) -> std::io::Result<Option<PathBuf>> {
+    if std::env::args().any(|a| a == "--print") {
+        return Ok(None);
+    }
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs").join(doc);
+    write_section(&path, title, name, body)?;
+    Ok(Some(path))
+}
 
 /// Replaces the section `name` of the Markdown file at `path` by `body` (appending the section
 /// if the markers are missing; creating the file with `title` if it does not exist).
