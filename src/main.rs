@@ -41,7 +41,8 @@ enum Command {
         /// Print one JSON object instead of text.
         #[arg(long)]
         json: bool,
-        /// Write `summary.json` into this directory.
+        /// Write the outputs into this directory: summary.json, figures (PNG, SVG), CSV profiles,
+        /// VTU files per step with a .pvd collection, README.txt.
         #[arg(long, value_name = "DIR")]
         out: Option<std::path::PathBuf>,
     },
@@ -64,17 +65,20 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         }
         Command::Run { scene, set, json, out } => {
             let scene = contact2d::scene::Scene::load(&scene, &set)?;
-            let report = contact2d::run::run_scene(&scene)?;
-            let text = serde_json::to_string_pretty(&report)?;
-            if let Some(dir) = out {
-                std::fs::create_dir_all(&dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
-                let path = dir.join("summary.json");
-                std::fs::write(&path, &text).map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
-            }
+            let outcome = contact2d::run::solve_scene(&scene)?;
+            let report = &outcome.report;
             if json {
-                println!("{text}");
+                println!("{}", serde_json::to_string_pretty(report)?);
             } else {
-                print_report(&report);
+                print_report(report);
+            }
+            if let Some(dir) = out {
+                let written = contact2d::output::write_outputs(&dir, &scene, &outcome)?;
+                // With --json, stdout stays one JSON object; the file list goes to stderr.
+                let list = |p: &std::path::PathBuf| format!("  {}", p.display());
+                let lines: Vec<String> = written.iter().map(list).collect();
+                let text = format!("wrote {} files:\n{}", written.len(), lines.join("\n"));
+                if json { eprintln!("{text}") } else { println!("{text}") }
             }
         }
     }

@@ -50,6 +50,12 @@ pub enum OutputError {
         /// What is missing.
         reason: String,
     },
+    /// Recovering stresses or reactions from the solution failed.
+    #[error("post-processing: {0}")]
+    Fem(#[from] contact2d_fem::FemError),
+    /// Evaluating an element (isoparametric map, stress) failed.
+    #[error("post-processing: {0}")]
+    Element(#[from] contact2d_element::ElementError),
 }
 
 impl OutputError {
