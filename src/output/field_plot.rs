@@ -96,8 +96,8 @@ pub fn draw_von_mises(path: &Path, title: &str, step: &SolvedStep) -> Result<(),
     let cells = von_mises_cells(step)?;
     let size = figure_size(bounding_box(step.case.problem.model.mesh.points.iter()));
     let result = match format {
-        ImageFormat::Png => draw_on(&BitMapBackend::new(path, size).into_drawing_area(), title, step, &cells),
-        ImageFormat::Svg => draw_on(&SVGBackend::new(path, size).into_drawing_area(), title, step, &cells),
+        ImageFormat::Png => draw_on(&BitMapBackend::new(path, size).into_drawing_area(), title, step, &cells, true),
+        ImageFormat::Svg => draw_on(&SVGBackend::new(path, size).into_drawing_area(), title, step, &cells, false),
     };
     result.map_err(|reason| OutputError::draw(path, reason))
 }
@@ -116,6 +116,7 @@ fn draw_on<DB: DrawingBackend>(
     title: &str,
     step: &SolvedStep,
     cells: &[SubCell],
+    outlines: bool,
 ) -> Result<(), String> {
     let err = |e: &dyn std::fmt::Display| e.to_string();
     let (lo, hi) = cells.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| {
@@ -157,9 +158,11 @@ fn draw_on<DB: DrawingBackend>(
     chart
         .draw_series(cells.iter().map(|c| Polygon::new(c.corners.clone(), colour(c.value).filled())))
         .map_err(|e| err(&e))?;
-    // Outlines in the fill colour close the hairline gaps a rasteriser leaves between polygons.
+    // Outlines in the fill colour close the hairline gaps the bitmap rasteriser leaves between
+    // polygons (SVG viewers anti-alias instead; outlines there would double the file).
+    let outlined = if outlines { cells } else { &[] };
     chart
-        .draw_series(cells.iter().map(|c| {
+        .draw_series(outlined.iter().map(|c| {
             let mut ring = c.corners.clone();
             ring.extend(c.corners.first().copied());
             PathElement::new(ring, colour(c.value).stroke_width(1))

@@ -17,6 +17,7 @@ use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, read_msh};
 
 mod placement;
+pub mod published;
 mod results;
 pub use placement::{PlacedContactEnd, contact_end_by_placement};
 pub use results::{PLATE_HALF_HEIGHT, PlateInsertResults};
