@@ -145,7 +145,9 @@ pub(crate) fn axis_range(values: impl Iterator<Item = f64>, log: bool) -> (f64, 
         return if log { (0.1, 10.0) } else { (0.0, 1.0) };
     }
     if log {
-        if hi / lo < 1.0 + 1e-9 { (lo / 2.0, hi * 2.0) } else { (lo, hi) }
+        // A 5 % margin in log space.
+        let pad = if hi / lo < 1.0 + 1e-9 { 2.0 } else { (hi / lo).powf(0.05) };
+        (lo / pad, hi * pad)
     } else {
         let span = hi - lo;
         if span <= 1e-12 * hi.abs().max(lo.abs()).max(1e-300) {
@@ -165,12 +167,41 @@ fn draw_with_scales<DB: DrawingBackend>(
     (x0, x1): (f64, f64),
     (y0, y1): (f64, f64),
 ) -> Result<(), String> {
+    let corner = legend_corner(series, [(x0, x1, axes.log_x), (y0, y1, axes.log_y)]);
     match (axes.log_x, axes.log_y) {
-        (false, false) => draw_chart(root, axes, series, x0..x1, y0..y1),
-        (true, false) => draw_chart(root, axes, series, (x0..x1).log_scale(), y0..y1),
-        (false, true) => draw_chart(root, axes, series, x0..x1, (y0..y1).log_scale()),
-        (true, true) => draw_chart(root, axes, series, (x0..x1).log_scale(), (y0..y1).log_scale()),
+        (false, false) => draw_chart(root, axes, series, corner, x0..x1, y0..y1),
+        (true, false) => draw_chart(root, axes, series, corner, (x0..x1).log_scale(), y0..y1),
+        (false, true) => draw_chart(root, axes, series, corner, x0..x1, (y0..y1).log_scale()),
+        (true, true) => draw_chart(root, axes, series, corner, (x0..x1).log_scale(), (y0..y1).log_scale()),
     }
+}
+
+/// The corner (0 upper right, 1 upper left, 2 lower right, 3 lower left) whose legend-sized box
+/// (38 % of the width, 28 % of the height) covers the fewest samples of the drawn lines, so that
+/// the legend hides as little data as possible; ties go to the upper right.
+fn legend_corner(series: &[Series], axes: [(f64, f64, bool); 2]) -> usize {
+    let unit = |v: f64, (lo, hi, log): (f64, f64, bool)| {
+        if log { (v.ln() - lo.ln()) / (hi.ln() - lo.ln()) } else { (v - lo) / (hi - lo) }
+    };
+    let mut counts = [0usize; 4];
+    for s in series {
+        for w in s.points.windows(2) {
+            for k in 0..=8 {
+                let t = k as f64 / 8.0;
+                let (x, y) = (w[0].0 + t * (w[1].0 - w[0].0), w[0].1 + t * (w[1].1 - w[0].1));
+                let (u, v) = (unit(x, axes[0]), unit(y, axes[1]));
+                if !(u.is_finite() && v.is_finite()) {
+                    continue;
+                }
+                let (right, left, top, bottom) = (u > 0.62, u < 0.38, v > 0.72, v < 0.28);
+                for (c, inside) in [right && top, left && top, right && bottom, left && bottom].into_iter().enumerate()
+                {
+                    counts[c] += usize::from(inside);
+                }
+            }
+        }
+    }
+    (0..4).min_by_key(|c| counts[*c]).unwrap_or(0)
 }
 
 /// Draws the chart on `root` with the given coordinate specs and presents it (writes the file).
@@ -178,6 +209,7 @@ fn draw_chart<DB, X, Y>(
     root: &DrawingArea<DB, Shift>,
     axes: &Axes,
     series: &[Series],
+    corner: usize,
     x_spec: X,
     y_spec: Y,
 ) -> Result<(), String>
@@ -237,7 +269,12 @@ where
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
             .label_font(("sans-serif", 16))
-            .position(SeriesLabelPosition::UpperRight)
+            .position(match corner {
+                1 => SeriesLabelPosition::UpperLeft,
+                2 => SeriesLabelPosition::LowerRight,
+                3 => SeriesLabelPosition::LowerLeft,
+                _ => SeriesLabelPosition::UpperRight,
+            })
             .draw()
             .map_err(|e| err(&e))?;
     }
@@ -327,9 +364,18 @@ mod tests {
     }
 
     #[test]
+    fn the_legend_avoids_the_data() {
+        let rising = Series { label: "y = x".into(), points: vec![(0.0, 0.0), (1.0, 1.0)], markers: false };
+        // A rising diagonal crosses the upper-right and lower-left corners: the legend goes upper left.
+        assert_eq!(legend_corner(&[rising], [(0.0, 1.0, false), (0.0, 1.0, false)]), 1);
+        assert_eq!(legend_corner(&[], [(0.0, 1.0, false), (0.0, 1.0, false)]), 0);
+    }
+
+    #[test]
     fn axis_range_covers_the_data() {
         assert_eq!(axis_range([0.0, 10.0].into_iter(), false), (-0.5, 10.5));
-        assert_eq!(axis_range([1e-2, 1e2, -3.0].into_iter(), true), (1e-2, 1e2));
+        let (lo, hi) = axis_range([1e-2, 1e2, -3.0].into_iter(), true);
+        assert!((lo * 10f64.powf(0.2) - 1e-2).abs() < 1e-12 && (hi / 10f64.powf(0.2) - 1e2).abs() < 1e-9);
         assert_eq!(axis_range(std::iter::empty(), false), (0.0, 1.0));
         let (lo, hi) = axis_range([2.0, 2.0].into_iter(), false);
         assert!(lo < 2.0 && hi > 2.0);
