@@ -118,6 +118,13 @@ fn check_hole_edge_balance(dir: &Path, summary: &serde_json::Value) {
     let pull = summary["P"].as_f64().unwrap();
     assert!(pull > 0.0);
     assert!((resultant + pull).abs() <= 1e-9 * pull, "Σ t1 w = {resultant:e}, P = {pull:e}");
+    // Newton's third law: the insert edge carries the opposite forces, Σ traction_x1 · weight = +P
+    // (every slave shape weight lands on an insert-edge node), to the same tolerance.
+    let (ih, irows) = read_csv(&dir.join("insert_edge.csv"));
+    let it1 = column(&ih, &irows, "traction_x1");
+    let iw = column(&ih, &irows, "weight");
+    let insert_resultant: f64 = it1.iter().zip(&iw).filter_map(|(t, w)| Some((*t)? * (*w)?)).sum();
+    assert!((insert_resultant - pull).abs() <= 1e-9 * pull, "insert Σ t1 w = {insert_resultant:e}, P = {pull:e}");
     // Compression near η = 0: p < 0 on the pair at the bearing point.
     let eta = column(&header, &rows, "eta");
     let p = column(&header, &rows, "p");

@@ -118,8 +118,9 @@ fn draw_on<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, title: &str, step:
     let u = &step.solution.displacement;
     let beta = exaggeration(u);
     let undeformed = mesh.points.clone();
+    let at = |k: usize| u.get(k).copied().unwrap_or(0.0);
     let deformed: Vec<[f64; 2]> =
-        mesh.points.iter().enumerate().map(|(i, p)| [p[0] + beta * u[2 * i], p[1] + beta * u[2 * i + 1]]).collect();
+        mesh.points.iter().enumerate().map(|(i, p)| [p[0] + beta * at(2 * i), p[1] + beta * at(2 * i + 1)]).collect();
     let bounds = bounding_box(undeformed.iter().chain(&deformed));
 
     root.fill(&WHITE).map_err(|e| err(&e))?;

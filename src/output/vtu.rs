@@ -56,6 +56,12 @@ pub fn write_step_vtu(path: &Path, step: &SolvedStep, profiles: &Profiles) -> Re
     let mesh = &model.mesh;
     let n = mesh.num_nodes();
     let u = &step.solution.displacement;
+    if u.len() != 2 * n {
+        return Err(OutputError::MissingData {
+            path: path.to_path_buf(),
+            reason: format!("{} displacement values for {n} nodes", u.len()),
+        });
+    }
     let points: Vec<f64> = mesh.points.iter().flat_map(|p| [p[0], p[1], 0.0]).collect();
     let displacement: Vec<f64> = (0..n).flat_map(|i| [u[2 * i], u[2 * i + 1], 0.0]).collect();
 
