@@ -26,16 +26,33 @@ fn series_of(label: &str, rows: &[ProfileRow], value: impl Fn(&ProfileRow) -> Op
     Series { label: label.into(), points, markers: false }
 }
 
-/// s_φφ, p and q along the hole edge vs η.
+/// s_φφ, p and q along the hole edge vs η, with the zone ends (e.g. `[("l", 0.47), ("b", 0.15)]`)
+/// as vertical lines across the data.
 ///
 /// # Errors
 /// As [`line_chart`].
-pub fn draw_hole_edge(path: &Path, title: &str, hole: &[ProfileRow]) -> Result<(), OutputError> {
-    let series = [
+pub fn draw_hole_edge(
+    path: &Path,
+    title: &str,
+    hole: &[ProfileRow],
+    zone_ends: &[(&str, f64)],
+) -> Result<(), OutputError> {
+    let mut series = vec![
         series_of("s_φφ (hoop stress of the plate)", hole, |r| r.hoop_stress),
         series_of("p (normal contact traction, < 0 in compression)", hole, |r| r.contact.map(|c| c.pressure)),
         series_of("q (tangential contact traction)", hole, |r| r.contact.map(|c| c.shear)),
     ];
+    let (lo, hi) = series
+        .iter()
+        .flat_map(|s| s.points.iter().map(|p| p.1))
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    if lo < hi {
+        for (name, eta) in zone_ends.iter().filter(|(_, eta)| eta.is_finite()) {
+            let label = format!("{name} = {eta:.4}");
+            series.push(Series { label, points: vec![(*eta, lo), (*eta, hi)], markers: false });
+        }
+    }
     let axes = Axes { title: title.into(), x_label: ETA_LABEL.into(), y_label: STRESS_LABEL.into(), ..Axes::default() };
     line_chart(path, &axes, &series)
 }

@@ -68,7 +68,11 @@ pub fn write_outputs(dir: &Path, scene: &Scene, outcome: &RunOutcome) -> Result<
         mesh_plot::draw_mesh(&path, &title("mesh"), last)?;
         written.push(path);
         let path = dir.join(format!("hole_edge.{ext}"));
-        figures::draw_hole_edge(&path, &title("hole edge"), &final_profiles.hole)?;
+        let ends: Vec<(&str, f64)> = [("l", last.results.contact_end), ("b", last.results.stick_end)]
+            .into_iter()
+            .filter_map(|(name, v)| Some((name, v?)))
+            .collect();
+        figures::draw_hole_edge(&path, &title("hole edge"), &final_profiles.hole, &ends)?;
         written.push(path);
         if elastic_insert {
             let path = dir.join(format!("insert_hoop.{ext}"));
