@@ -14,9 +14,11 @@ pub use contact2d_mesh as mesh;
 
 pub mod doc_sections;
 pub mod mesh_summary;
+pub mod output;
 pub mod plate_insert;
 pub mod run;
 pub mod scene;
+pub mod sweep;
 pub mod verify;
 
 // The README's library example is compiled and run as a doctest.

@@ -19,6 +19,7 @@ enum Command {
     /// Examples:
     ///   contact2d mesh meshes/plate_insert/plate_insert_eps0_N32.msh
     ///   contact2d mesh meshes/plate_insert/plate_insert_eps0_N32.msh --json
+    #[command(verbatim_doc_comment)]
     Mesh {
         /// The .msh file (MSH 2.2 or 4.1, ASCII or binary).
         file: std::path::PathBuf,
@@ -32,6 +33,7 @@ enum Command {
     ///   contact2d run scenes/plate_insert_nogap_mu0.toml
     ///   contact2d run scenes/plate_insert_gap_v2_mu0.toml --set solver.algorithm=clarabel --json
     ///   contact2d run scenes/plate_insert_nogap_mu0.toml --set plate_insert.stiffness_ratio=0.5 --out out/soft
+    #[command(verbatim_doc_comment)]
     Run {
         /// The scene file.
         scene: std::path::PathBuf,
@@ -41,7 +43,8 @@ enum Command {
         /// Print one JSON object instead of text.
         #[arg(long)]
         json: bool,
-        /// Write `summary.json` into this directory.
+        /// Write the outputs into this directory: summary.json, figures (PNG, SVG), CSV profiles,
+        /// VTU files per step with a .pvd collection, README.txt.
         #[arg(long, value_name = "DIR")]
         out: Option<std::path::PathBuf>,
         /// No progress bar (it is hidden anyway when stdout is not a terminal).
@@ -51,6 +54,38 @@ enum Command {
         /// slipping, residuals.
         #[arg(long, short)]
         verbose: bool,
+    },
+    /// Run a scene over the Cartesian product of varied values, in parallel; write sweep.csv,
+    /// sweep.md and plots of the chosen outputs against the first varied key.
+    ///
+    /// A failed combination is a row with its error. The plots draw one line per combination of
+    /// the other varied keys, with a log x axis when the values span more than two decades.
+    ///
+    /// Examples:
+    ///   contact2d sweep scenes/plate_insert_nogap_mu0.toml --vary plate_insert.friction=0,0.1,0.2,0.3
+    ///   contact2d sweep scenes/plate_insert_nogap_mu03.toml --vary plate_insert.stiffness_ratio=0.01,0.1,1,10,100 --vary plate_insert.friction=0,0.3 --plot l,b,P,K --out out/stiffness
+    ///   contact2d sweep scenes/plate_insert_gap_v1_mu03.toml --vary plate_insert.steps=1,2,3,5,10,20 --set plate_insert.mesh='"../meshes/plate_insert/plate_insert_eps0.05_N32.msh"' --quiet
+    #[command(verbatim_doc_comment)]
+    Sweep {
+        /// The scene file.
+        scene: std::path::PathBuf,
+        /// A varied key and its values, e.g. `plate_insert.friction=0,0.1,0.3` (repeatable; the
+        /// first one is the plots' x axis).
+        #[arg(long = "vary", value_name = "KEY=V1,V2,...", required = true)]
+        vary: Vec<String>,
+        /// Override a scene value for every run, as in `run` (repeatable).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// The outputs to plot, comma-separated: l, b, P, Phi_E1, Phi_E2, Phi_f, W, sigma_star, K,
+        /// insert_hoop_max.
+        #[arg(long, value_name = "NAMES", default_value = "l,b,P")]
+        plot: String,
+        /// The output directory (default: out/sweep_<scene file name>).
+        #[arg(long, value_name = "DIR")]
+        out: Option<std::path::PathBuf>,
+        /// No progress bar and no table on stdout (the list of files written only).
+        #[arg(long)]
+        quiet: bool,
     },
 }
 
@@ -77,19 +112,61 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             if verbose {
                 print_iterations(&outcome);
             }
-            let report = outcome.report;
-            let text = serde_json::to_string_pretty(&report)?;
-            if let Some(dir) = out {
-                std::fs::create_dir_all(&dir).map_err(|e| anyhow::anyhow!("cannot create {}: {e}", dir.display()))?;
-                let path = dir.join("summary.json");
-                std::fs::write(&path, &text).map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
-            }
+            let report = &outcome.report;
             if json {
-                println!("{text}");
+                println!("{}", serde_json::to_string_pretty(report)?);
             } else {
-                print_report(&report);
+                print_report(report);
+            }
+            if let Some(dir) = out {
+                let written = contact2d::output::write_outputs(&dir, &scene, &outcome)?;
+                // With --json, stdout stays one JSON object; the file list goes to stderr.
+                let list = |p: &std::path::PathBuf| format!("  {}", p.display());
+                let lines: Vec<String> = written.iter().map(list).collect();
+                let text = format!("wrote {} files:\n{}", written.len(), lines.join("\n"));
+                if json { eprintln!("{text}") } else { println!("{text}") }
             }
         }
+        Command::Sweep { scene, vary, set, plot, out, quiet } => sweep(&scene, &vary, &set, &plot, out, quiet)?,
+    }
+    Ok(())
+}
+
+fn sweep(
+    scene: &std::path::Path,
+    vary: &[String],
+    set: &[String],
+    plot: &str,
+    out: Option<std::path::PathBuf>,
+    quiet: bool,
+) -> anyhow::Result<()> {
+    use contact2d::sweep::{Quantity, Variation, combinations, run_sweep, sweep_markdown, write_sweep};
+    use std::io::IsTerminal;
+    let variations = vary.iter().map(|v| Variation::parse(v)).collect::<Result<Vec<_>, _>>()?;
+    let plots = plot.split(',').filter(|p| !p.trim().is_empty()).map(Quantity::parse).collect::<Result<Vec<_>, _>>()?;
+    // Fail early on a scene that does not load at all (each combination is checked in its run).
+    let base = contact2d::scene::Scene::load(scene, set)?;
+    let stem = scene.file_stem().map_or("scene".into(), |s| s.to_string_lossy().into_owned());
+    let dir = out.unwrap_or_else(|| std::path::PathBuf::from("out").join(format!("sweep_{stem}")));
+    let bar = if quiet || !std::io::stdout().is_terminal() {
+        indicatif::ProgressBar::hidden()
+    } else {
+        indicatif::ProgressBar::new(combinations(&variations).len() as u64)
+    };
+    bar.set_style(
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} runs, {elapsed} elapsed, ETA {eta}")
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+    );
+    let rows = run_sweep(scene, &variations, set, || bar.inc(1));
+    bar.finish_and_clear();
+    let written = write_sweep(&dir, &base.name, &variations, &rows, &plots)?;
+    if !quiet {
+        print!("{}", sweep_markdown(&variations, &rows));
+    }
+    let failed = rows.iter().filter(|r| r.result.is_err()).count();
+    println!("{} runs ({failed} failed); wrote {} files:", rows.len(), written.len());
+    for p in &written {
+        println!("  {}", p.display());
     }
     Ok(())
 }

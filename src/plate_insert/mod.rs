@@ -17,6 +17,7 @@ use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, read_msh};
 
 mod contour_history;
+pub mod published;
 mod results;
 mod roots;
 mod zone_ends;
