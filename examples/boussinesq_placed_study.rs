@@ -11,10 +11,21 @@ use std::fmt::Write;
 use std::time::Instant;
 
 use contact2d::doc_sections::publish_section;
-use contact2d::plate_insert::{PairingVariant, PlacedLoading, PlateInsert, ZoneEndSearch, solve_placed_history};
+use contact2d::plate_insert::{
+    PairingVariant, PlacedLoading, PlacedStep, PlateInsert, ZoneEndSearch, solve_placed_history,
+};
 
 fn mesh(eps: &str, n: usize) -> String {
     format!("{}/meshes/plate_insert/plate_insert_eps{eps}_N{n}.msh", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// b for the tables: placed, interpolated (marked), or the whole contact zone.
+fn stick_column(s: &PlacedStep) -> String {
+    match (s.stick_end_placed, s.stick_end == s.contact_end) {
+        (true, _) => format!("{:.4}", s.stick_end_hole),
+        (false, true) => "= l".into(),
+        (false, false) => format!("{:.4} (interpolated)", s.stick_end_hole),
+    }
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -46,7 +57,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 out,
                 "| {mu} | {n} | {:.4} | {} | {:.4} | {:.5} | {:.5} | {:.5} | {:.4} | {:.3} | {} | {:.0e}, {:.0e} | {time:.1} s |",
                 s.contact_end_hole,
-                s.stick_end_hole.map_or("–".into(), |b| format!("{b:.4}")),
+                stick_column(s),
                 q.pull,
                 q.energy_plate,
                 q.energy_insert,
@@ -96,7 +107,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     out,
                     "| {row} | {n} | {steps} | {:.4} | {} | {:.4} | {:.4} | {:.4} | {:.3} | {meshes} | {time:.1} s |",
                     s.contact_end_hole,
-                    s.stick_end_hole.map_or("= l".into(), |b| format!("{b:.4}")),
+                    stick_column(s),
                     q.pull * 1e2,
                     q.energy_plate * 1e3,
                     q.energy_insert * 1e3,

@@ -269,8 +269,10 @@ fn placed_steps(placed: Vec<(PlacedStep, f64)>, scale: f64) -> Result<Vec<Solved
             results.contact_end = Some(step.contact_end_hole);
             results.contact_bracket = Some([step.contact_end_hole; 2]);
             results.contact_end_master = Some(step.contact_end);
-            results.stick_end = Some(step.stick_end_hole.unwrap_or(step.contact_end_hole));
-            results.stick_bracket = results.stick_end.map(|b| [b; 2]);
+            results.stick_end = Some(step.stick_end_hole);
+            if step.stick_end_placed || step.stick_end == step.contact_end {
+                results.stick_bracket = Some([step.stick_end_hole; 2]);
+            }
             Ok(SolvedStep { case, solution, results, dissipated: dissipated * scale * scale })
         })
         .collect()

@@ -48,7 +48,8 @@ fn placed_zone_ends_reproduce_the_published_l_and_b() {
                 found.contact_end
             );
             if let Some(b_paper) = b_paper {
-                let b = found.stick_end.unwrap();
+                assert!(found.stick_end_placed, "μ = {mu}: b* not placed");
+                let b = found.stick_end;
                 assert!((b - b_paper).abs() <= 0.005, "μ = {mu}: b* = {b:.5} vs {b_paper}");
             }
             assert!(found.residual_pressure <= 1e-4 && found.residual_cone <= 1e-4);

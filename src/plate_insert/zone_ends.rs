@@ -62,13 +62,16 @@ impl Default for ZoneEndSearch {
 pub struct PlacedStep {
     /// l* on the master's own coordinate.
     pub contact_end: f64,
-    /// b* on the master's own coordinate (`None` when nothing slips: the stick zone is the
-    /// whole contact zone).
-    pub stick_end: Option<f64>,
+    /// b* on the master's own coordinate (l* when nothing slips: the stick zone is the whole
+    /// contact zone).
+    pub stick_end: f64,
+    /// Whether a node was placed at b* (false when nothing slips, or when b* is closer to l*
+    /// than two corners can be placed; b is then interpolated between the pairs like the slip).
+    pub stick_end_placed: bool,
     /// l* on the hole-edge angle η = 1 − φ/π (the paired hole point's in variant 2).
     pub contact_end_hole: f64,
     /// b* likewise.
-    pub stick_end_hole: Option<f64>,
+    pub stick_end_hole: f64,
     /// The load w (given, or from the Boussinesq condition).
     pub load: f64,
     /// |p(l*)| left by the search, relative to the largest contact pressure.
@@ -265,10 +268,9 @@ pub fn place_zone_ends(
     // the root finder points at.
     for _attempt in 0..8 {
         match search_zone_ends(&mut run, &base, l_estimate, b_estimate, search.tolerance) {
-            Ok((last, None)) => return finish((run.evaluations, clock.elapsed()), last, None, 0.0, run.trace),
-            Ok((last, Some(b))) => {
+            Ok((last, stick_end)) => {
                 let residual_cone = last.b_pair.map_or(0.0, |k| last.cone(k).abs() / last.pressure_scale());
-                return finish((run.evaluations, clock.elapsed()), last, Some(b), residual_cone, run.trace);
+                return finish((run.evaluations, clock.elapsed()), last, stick_end, residual_cone, run.trace);
             }
             Err(Miss::Contact(e)) => return Err(e),
             Err(Miss::ContactEnd(towards)) => (l_estimate, b_estimate) = (towards, None),
@@ -298,15 +300,26 @@ impl From<ContactError> for Miss {
     }
 }
 
-/// One pass of the search with corners chosen for the estimates: the final evaluation and b*
-/// (`None` when nothing slips).
+/// How the stick end of a step was found.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum StickEnd {
+    /// Nothing slips: the stick zone is the whole contact zone.
+    Whole,
+    /// A node placed at b*.
+    Placed(f64),
+    /// b* closer to l* than two corners can be placed (a few hundredths of the corner spacing):
+    /// the b iteration on the nodes, b interpolated like the slip (the 3/2-power law).
+    Interpolated(f64),
+}
+
+/// One pass of the search with corners chosen for the estimates: the final evaluation and b*.
 fn search_zone_ends(
     run: &mut Search<'_>,
     base: &PlateInsertProblem,
     l_estimate: f64,
     b_estimate: Option<(f64, PairState)>,
     tol: f64,
-) -> Result<(Evaluation, Option<f64>), Miss> {
+) -> Result<(Evaluation, StickEnd), Miss> {
     let loading = run.loading;
     let (mut l, mut b, slip) = match b_estimate {
         Some((b, slip)) => (l_estimate, b, slip),
@@ -323,14 +336,16 @@ fn search_zone_ends(
             };
             let first = run.evaluate(l, None)?;
             let Some((b, slip)) = stick_estimate(&first) else {
-                return Ok((first, None));
+                return Ok((first, StickEnd::Whole));
             };
             (l, b, slip)
         }
     };
-    let (l_corner, b_corner) = assign_corners(base, l, b).ok_or_else(|| {
-        ContactError::InvalidInput(format!("no two master corners can be placed at b = {b:.5} and l = {l:.5}"))
-    })?;
+    let Some((l_corner, b_corner)) = assign_corners(base, l, b) else {
+        let first = run.evaluate(l, None)?;
+        let b = stick_estimate(&first).map_or(b, |(b, _)| b);
+        return Ok((first, StickEnd::Interpolated(b)));
+    };
     run.l_corner = l_corner;
     let l_range = placement_limits(base.corner_range(l_corner).unwrap_or([l, l]));
     let b_range = placement_limits(base.corner_range(b_corner).unwrap_or([b, b]));
@@ -358,7 +373,7 @@ fn search_zone_ends(
     let b_node = (b_corner, slip);
     (l, b) = polish(run, (l, b), b_node, [l_range, b_range], tol)?;
     let last = run.evaluate(l, Some((b, b_corner, slip)))?;
-    Ok((last, Some(b)))
+    Ok((last, StickEnd::Placed(b)))
 }
 
 /// Newton's method on both residuals from one evaluation, `F(l, b) = (r_l, r_b)` (only r_b,
@@ -471,7 +486,7 @@ fn stick_estimate(e: &Evaluation) -> Option<(f64, PairState)> {
 fn finish(
     (evaluations, elapsed): (usize, std::time::Duration),
     e: Evaluation,
-    stick_end: Option<f64>,
+    stick_end: StickEnd,
     residual_cone: f64,
     trace: Vec<IterationRecord>,
 ) -> Result<PlacedStep, ContactError> {
@@ -479,7 +494,18 @@ fn finish(
     let by_condition = residual_pressure == 0.0;
     let (eta, eta_hole) = (e.case.eta_master(), e.case.eta_hole());
     let contact_end = eta[e.l_pair];
-    let stick_pair = stick_end.map(|_| e.b_pair.unwrap_or(e.l_pair));
+    // b on both coordinates: a placed node's, l's, or interpolated between pairs.
+    let on_hole = |b: f64| {
+        let i = e.order.partition_point(|&k| eta[k] < b).clamp(1, e.order.len().saturating_sub(1));
+        let (k0, k1) = (e.order[i - 1], e.order[i]);
+        let t = (b - eta[k0]) / (eta[k1] - eta[k0]);
+        if t.is_finite() { eta_hole[k0] + t * (eta_hole[k1] - eta_hole[k0]) } else { eta_hole[k0] }
+    };
+    let (stick_master, stick_hole) = match stick_end {
+        StickEnd::Whole => (contact_end, eta_hole[e.l_pair]),
+        StickEnd::Placed(_) => e.b_pair.map_or((contact_end, eta_hole[e.l_pair]), |k| (eta[k], eta_hole[k])),
+        StickEnd::Interpolated(b) => (b, on_hole(b)),
+    };
     let forces = contact2d_contact::ZoneForces {
         load: e.load,
         normal_force: e.normal_force,
@@ -500,9 +526,10 @@ fn finish(
     step.solution.trace = trace;
     Ok(PlacedStep {
         contact_end,
-        stick_end: stick_pair.map(|k| eta[k]),
+        stick_end: stick_master,
+        stick_end_placed: matches!(stick_end, StickEnd::Placed(_)),
         contact_end_hole: eta_hole[e.l_pair],
-        stick_end_hole: stick_pair.map(|k| eta_hole[k]),
+        stick_end_hole: stick_hole,
         load: e.load,
         residual_pressure,
         residual_cone,
@@ -513,7 +540,7 @@ fn finish(
     })
 }
 
-/// The corners to place at l and b: each within its range and keeping a tenth of the corner
+/// The corners to place at l and b: each within its range and keeping 6 % of the corner
 /// spacing from its neighbours (placed or not), the b corner before the l corner along η; of the
 /// candidates, the pair that moves the corners least.
 fn assign_corners(base: &PlateInsertProblem, l: f64, b: f64) -> Option<(usize, usize)> {
@@ -538,21 +565,21 @@ fn assign_corners(base: &PlateInsertProblem, l: f64, b: f64) -> Option<(usize, u
     best.map(|(_, cl, cb)| (cl, cb))
 }
 
-/// Where a corner with neighbour range `[lo, hi]` may go: a tenth of the corner spacing from
-/// each neighbour.
+/// Where a corner with neighbour range `[lo, hi]` (two corner spacings) may go: 6 % of the
+/// spacing from each neighbour (thinner elements are still valid, the interior being relaxed).
 fn placement_limits([lo, hi]: [f64; 2]) -> [f64; 2] {
-    let d = 0.05 * (hi - lo);
+    let d = 0.03 * (hi - lo);
     [lo + d, hi - d]
 }
 
-/// Limits of the l node above a b node at `b` (about a tenth of the corner spacing clear).
+/// Limits of the l node above a b node at `b` (about 6 % of the corner spacing clear).
 fn above([lo, hi]: [f64; 2], b: f64) -> [f64; 2] {
-    [lo.max(b + 0.055 * (hi - lo)), hi]
+    [lo.max(b + 0.03 * (hi - lo)), hi]
 }
 
 /// Limits of the b node below an l node at `l`.
 fn below([lo, hi]: [f64; 2], l: f64) -> [f64; 2] {
-    [lo, hi.min(l - 0.055 * (hi - lo))]
+    [lo, hi.min(l - 0.03 * (hi - lo))]
 }
 
 /// A loading history with zone ends placed at every step, the slips carried over on the
