@@ -105,8 +105,9 @@ impl CholeskySolver {
     /// [`FemError::Factorization`] if `k` is not square or not positive definite.
     pub fn factor(k: &Csc) -> Result<CholeskySolver, FemError> {
         check_square(k)?;
-        let symbolic = factorize_symbolic_cholesky(k.symbolic(), Side::Lower, SymmetricOrdering::Amd, Default::default())
-            .map_err(|e| FemError::Factorization(format!("symbolic analysis: {e:?}")))?;
+        let symbolic =
+            factorize_symbolic_cholesky(k.symbolic(), Side::Lower, SymmetricOrdering::Amd, Default::default())
+                .map_err(|e| FemError::Factorization(format!("symbolic analysis: {e:?}")))?;
         CholeskySolver::finish(symbolic, k)
     }
 

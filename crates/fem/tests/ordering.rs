@@ -86,9 +86,8 @@ fn trailing_block_is_the_schur_complement_factor() {
     for (nx, ny) in [(8, 2), (160, 40)] {
         let (model, system) = cantilever(CellKind::Quad9, nx, ny);
         let last = dofs_on_line(&model, &system, 2.0);
-        let p =
-            fill_reducing_permutation(&model, &system.dofs, &system.stiffness, Ordering::NestedDissection, &last)
-                .unwrap();
+        let p = fill_reducing_permutation(&model, &system.dofs, &system.stiffness, Ordering::NestedDissection, &last)
+            .unwrap();
         let solver = CholeskySolver::factor_with_permutation(&system.stiffness, &p).unwrap();
         let t = last.len();
         let l = solver.trailing_block(t).unwrap();
@@ -116,8 +115,8 @@ fn nested_dissection_fills_no_more_than_amd_on_a_structured_mesh() {
     let (model, system) = cantilever(CellKind::Quad4, 448, 112);
     assert!(system.dofs.num_free() > 100_000);
     let amd = CholeskySolver::factor(&system.stiffness).unwrap();
-    let p = fill_reducing_permutation(&model, &system.dofs, &system.stiffness, Ordering::NestedDissection, &[])
-        .unwrap();
+    let p =
+        fill_reducing_permutation(&model, &system.dofs, &system.stiffness, Ordering::NestedDissection, &[]).unwrap();
     let nd = CholeskySolver::factor_with_permutation(&system.stiffness, &p).unwrap();
     assert!(nd.factor_nnz() <= amd.factor_nnz(), "ND {} vs AMD {}", nd.factor_nnz(), amd.factor_nnz());
 }
