@@ -198,6 +198,9 @@ fn main() -> Result<()> {
         }
         Ordering::NdProto => Some(nested_dissection(&model, &dofs)),
     };
+    if perm.is_some() {
+        phases.lap("ordering");
+    }
     let (u, stats) = match args.index {
         IndexWidth::U64 => factor_and_solve(k.as_ref(), perm, &rhs, &mut phases)?,
         IndexWidth::U32 => {

@@ -7,9 +7,10 @@
 //!   [ K_cf  K_cc ] [u_c] = [f_c + r_c]      r_c = K_cf u_f + K_cc u_c - f_c (reactions)
 //! ```
 //!
-//! Element matrices are computed in parallel (rayon), scattered into triplets, and summed into
-//! faer's CSC (duplicates summed). Only the lower triangle of `K_ff` is stored: the Cholesky
-//! factorisation reads that side. `K_fc` and `K_cc` are kept so that the right-hand side and the
+//! `K_ff` is assembled in place into its compressed-column pattern, built from the node graph
+//! ([`crate::pattern`], parallel over column blocks); the few cells with a constrained DOF are
+//! scattered into triplets for `K_fc` and `K_cc`. Only the lower triangle of `K_ff` is stored:
+//! the Cholesky factorisation reads that side. `K_fc` and `K_cc` are kept so that the right-hand side and the
 //! reactions can be formed for any prescribed values without assembling again.
 
 use contact2d_element::{EdgeType, GaussRule, edge_traction_load, element_stiffness};
@@ -22,6 +23,8 @@ use rayon::prelude::*;
 use crate::dof::{DofKind, DofMap};
 use crate::error::FemError;
 use crate::model::{EdgeLoad, Model};
+use crate::ordering::NodeGraph;
+use crate::pattern::assemble_free_free;
 use crate::rigid::check_rigid_modes;
 
 /// Compressed sparse column matrix of f64 with usize indices.
@@ -44,14 +47,12 @@ pub struct LinearSystem {
 
 #[derive(Default)]
 struct Triplets {
-    ff: Vec<Triplet<usize, usize, f64>>,
     fc: Vec<Triplet<usize, usize, f64>>,
     cc: Vec<Triplet<usize, usize, f64>>,
 }
 
 impl Triplets {
     fn append(mut self, mut other: Triplets) -> Triplets {
-        self.ff.append(&mut other.ff);
         self.fc.append(&mut other.fc);
         self.cc.append(&mut other.cc);
         self
@@ -79,11 +80,13 @@ pub fn assemble(model: &Model) -> Result<LinearSystem, FemError> {
         })
         .try_reduce(Triplets::default, |a, b| Ok(a.append(b)))?;
     let (nf, nc) = (dofs.num_free(), dofs.num_constrained());
+    // K_fc and K_cc from the cells with a constrained DOF; K_ff in place in its pattern.
     let build = |n: usize, m: usize, t: &[Triplet<usize, usize, f64>]| {
         Csc::try_new_from_triplets(n, m, t).map_err(|e| FemError::Factorization(format!("sparse assembly: {e:?}")))
     };
+    let graph = NodeGraph::of_model(model);
     Ok(LinearSystem {
-        stiffness: build(nf, nf, &triplets.ff)?,
+        stiffness: assemble_free_free(model, &dofs, &graph)?,
         coupling: build(nf, nc, &triplets.fc)?,
         constrained: build(nc, nc, &triplets.cc)?,
         load: assemble_edge_loads(model)?,
@@ -93,16 +96,18 @@ pub fn assemble(model: &Model) -> Result<LinearSystem, FemError> {
 
 fn scatter_cell(model: &Model, dofs: &DofMap, b: usize, i: usize, t: &mut Triplets) -> Result<(), FemError> {
     let body = &model.bodies[b];
+    let kinds: Vec<DofKind> = body.cell_dofs(i).map(|d| dofs.kind(d)).collect();
+    if !kinds.iter().any(|k| matches!(k, DofKind::Constrained(_))) {
+        return Ok(());
+    }
     let element = body.elements[i];
     let coords = body.cell_coords(&model.mesh, i);
     let k = element_stiffness(element, &coords, &body.material, body.thickness, &GaussRule::stiffness_rule(element))
         .map_err(|source| FemError::Element { body: body.name.clone(), cell: body.cell_tags[i], source })?;
-    let kinds: Vec<DofKind> = body.cell_dofs(i).map(|d| dofs.kind(d)).collect();
     for (col, kc) in kinds.iter().enumerate() {
         for (row, kr) in kinds.iter().enumerate() {
             let v = k[(row, col)];
             match (kr, kc) {
-                (DofKind::Free(r), DofKind::Free(c)) if r >= c => t.ff.push(Triplet::new(*r, *c, v)),
                 (DofKind::Free(r), DofKind::Constrained(c)) => t.fc.push(Triplet::new(*r, *c, v)),
                 (DofKind::Constrained(r), DofKind::Constrained(c)) => t.cc.push(Triplet::new(*r, *c, v)),
                 _ => {}

@@ -3,7 +3,8 @@
 //! ```text
 //! Model::new(mesh) + add_body(region, material) + fix(group, component, value) + add_edge_load
 //!   → assemble (parallel, Dirichlet eliminated, K_ff lower triangle in faer CSC)
-//!   → CholeskySolver::factor (symbolic analysis kept for refactoring)
+//!   → fill_reducing_permutation (AMD or nested dissection, chosen DOFs last; optional)
+//!   → CholeskySolver::factor / factor_with_permutation (symbolic analysis kept for refactoring)
 //!   → Solution (displacements, reactions) → strain_energy, nodal_stresses, stresses_along_curve
 //! ```
 //!
@@ -15,6 +16,7 @@ pub mod dof;
 pub mod error;
 pub mod model;
 pub mod ordering;
+mod pattern;
 pub mod recovery;
 pub mod rigid;
 pub mod solution;

@@ -3,7 +3,7 @@
 //! ```text
 //! Amd:               faer's approximate minimum degree on the DOF graph of K_ff
 //! NestedDissection:  geometric nested dissection of the node graph (nodes ~ if they share a cell):
-//!   dissect(V): |V| ≤ LEAF → minimum degree on V's own graph
+//!   dissect(V): |V| ≤ 128 → minimum degree on V's graph (the surrounding separators counted)
 //!               else for both axes: split V at the median coordinate into A | B, separator S =
 //!               the nodes of one side with a neighbour on the other (the smaller side's set);
 //!               keep the axis with the smaller S;  order dissect(A∖S), dissect(B∖S), then S
@@ -13,7 +13,9 @@
 //!
 //! A permutation is `forward[new] = old` over the free indices.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
+use std::sync::atomic::AtomicU8;
+use std::sync::atomic::Ordering::Relaxed;
 
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::sparse::SymbolicSparseColMat;
@@ -36,7 +38,7 @@ pub enum Ordering {
 }
 
 /// Node sets of at most this many nodes are ordered by minimum degree instead of dissected.
-const LEAF: usize = 64;
+const LEAF: usize = 128;
 
 /// The node graph in compressed form: the neighbours of node `n` (itself excluded) are
 /// `adj[ptr[n]..ptr[n + 1]]`, sorted.
@@ -150,8 +152,6 @@ fn nested_dissection(model: &Model, dofs: &DofMap, tail: &[usize]) -> Vec<usize>
     let graph = NodeGraph::of_model(model);
     let points = &model.mesh.points;
     let num_nodes = points.len();
-    // mark[n]: 0 = not in the set being split, 1 / 2 = side A / B of the current split.
-    let mut mark = vec![0u8; num_nodes];
     let mut excluded = vec![false; num_nodes];
     for &n in tail {
         excluded[n] = true;
@@ -159,32 +159,36 @@ fn nested_dissection(model: &Model, dofs: &DofMap, tail: &[usize]) -> Vec<usize>
     let nodes: Vec<usize> = (0..num_nodes)
         .filter(|&n| !excluded[n] && (free_index(dofs, 2 * n).is_some() || free_index(dofs, 2 * n + 1).is_some()))
         .collect();
-    let mut order = Vec::with_capacity(nodes.len() + tail.len());
-    // Work stack: a node set to dissect, or a separator to emit once both halves are done.
-    let mut stack: Vec<(Vec<usize>, bool)> = vec![(nodes, false)];
-    while let Some((nodes, is_separator)) = stack.pop() {
-        if is_separator {
-            order.extend(nodes);
-            continue;
-        }
-        if nodes.len() <= LEAF {
-            order.extend(minimum_degree(&graph, &nodes, &mut mark));
-            continue;
-        }
-        let best = [0, 1]
-            .into_iter()
-            .filter_map(|axis| split(&graph, points, &nodes, axis, &mut mark))
-            .min_by_key(|s| s.2.len());
-        let Some((first, second, sep)) = best else {
-            order.extend(minimum_degree(&graph, &nodes, &mut mark));
-            continue;
-        };
-        stack.push((sep, true));
-        stack.push((second, false));
-        stack.push((first, false));
-    }
+    // mark[n]: 0 = not in a set being split, 1 / 2 = side A / B of the current split. Sets split
+    // at the same time (in parallel) are disjoint and not adjacent, so they never read each
+    // other's marks.
+    let mark: Vec<AtomicU8> = (0..num_nodes).map(|_| AtomicU8::new(0)).collect();
+    let mut order = dissect(&graph, points, nodes, &mark);
     order.extend_from_slice(tail);
     dofs_of_nodes(&order, dofs)
+}
+
+/// Sets larger than this are dissected with their two halves in parallel.
+const PARALLEL: usize = 20_000;
+
+/// The nested-dissection order of `nodes`: `dissect(first) dissect(second) separator`.
+fn dissect(graph: &NodeGraph, points: &[[f64; 2]], nodes: Vec<usize>, mark: &[AtomicU8]) -> Vec<usize> {
+    if nodes.len() <= LEAF {
+        return minimum_degree(graph, &nodes);
+    }
+    let best = [0, 1].into_iter().filter_map(|axis| split(graph, points, &nodes, axis, mark)).min_by_key(|s| s.2.len());
+    let Some((first, second, sep)) = best else {
+        // All nodes at one point (not a valid mesh): any order.
+        return nodes;
+    };
+    let (mut order, rest) = if nodes.len() > PARALLEL {
+        rayon::join(|| dissect(graph, points, first, mark), || dissect(graph, points, second, mark))
+    } else {
+        (dissect(graph, points, first, mark), dissect(graph, points, second, mark))
+    };
+    order.extend(rest);
+    order.extend(sep);
+    order
 }
 
 /// Splits `nodes` at the median of coordinate `axis`: `(first part, second part, separator)`, or
@@ -194,7 +198,7 @@ fn split(
     points: &[[f64; 2]],
     nodes: &[usize],
     axis: usize,
-    mark: &mut [u8],
+    mark: &[AtomicU8],
 ) -> Option<(Vec<usize>, Vec<usize>, Vec<usize>)> {
     let mut sorted = nodes.to_vec();
     let mid = sorted.len() / 2;
@@ -204,49 +208,49 @@ fn split(
     if a.is_empty() || b.is_empty() {
         return None;
     }
-    for &n in &a {
-        mark[n] = 1;
-    }
-    for &n in &b {
-        mark[n] = 2;
-    }
-    let touches = |n: usize, other: u8| graph.neighbours(n).iter().any(|&m| mark[m] == other);
+    let set = |n: usize, v: u8| mark[n].store(v, Relaxed);
+    a.iter().for_each(|&n| set(n, 1));
+    b.iter().for_each(|&n| set(n, 2));
+    let touches = |n: usize, other: u8| graph.neighbours(n).iter().any(|&m| mark[m].load(Relaxed) == other);
     let (sep_a, inner_a): (Vec<usize>, Vec<usize>) = a.iter().partition(|&&n| touches(n, 2));
     let (sep_b, inner_b): (Vec<usize>, Vec<usize>) = b.iter().partition(|&&n| touches(n, 1));
-    for &n in nodes {
-        mark[n] = 0;
-    }
+    nodes.iter().for_each(|&n| set(n, 0));
     Some(if sep_a.len() <= sep_b.len() { (inner_a, b, sep_a) } else { (a, inner_b, sep_b) })
 }
 
-/// Exact minimum degree on the graph induced by `nodes` (at most a few hundred): eliminate the
-/// node of least degree, join its neighbours into a clique, repeat.
-fn minimum_degree(graph: &NodeGraph, nodes: &[usize], mark: &mut [u8]) -> Vec<usize> {
+/// Exact minimum degree on the nodes `nodes` (at most a few hundred): eliminate the node of least
+/// degree, join its neighbours into a clique, repeat. Neighbours outside `nodes` (the separators
+/// around them, ordered later) count in the degrees and receive fill but are not eliminated.
+fn minimum_degree(graph: &NodeGraph, nodes: &[usize]) -> Vec<usize> {
     let k = nodes.len();
     if k <= 2 {
         return nodes.to_vec();
     }
-    let words = k.div_ceil(64);
-    // Local index of each node through a temporary map (mark holds membership only).
-    let mut index = std::collections::HashMap::with_capacity(k);
+    // Local indices: the nodes first, then their outside neighbours.
+    let mut index = HashMap::with_capacity(2 * k);
     for (i, &n) in nodes.iter().enumerate() {
-        mark[n] = 3;
         index.insert(n, i);
     }
-    let mut adj = vec![0u64; k * words];
-    for (i, &n) in nodes.iter().enumerate() {
+    let mut all = nodes.to_vec();
+    for &n in nodes {
+        for &m in graph.neighbours(n) {
+            if let std::collections::hash_map::Entry::Vacant(e) = index.entry(m) {
+                e.insert(all.len());
+                all.push(m);
+            }
+        }
+    }
+    let total = all.len();
+    let words = total.div_ceil(64);
+    let mut adj = vec![0u64; total * words];
+    for (i, &n) in all.iter().enumerate() {
         for m in graph.neighbours(n) {
-            if mark[*m] == 3
-                && let Some(&j) = index.get(m)
-            {
+            if let Some(&j) = index.get(m) {
                 adj[i * words + j / 64] |= 1 << (j % 64);
             }
         }
     }
-    for &n in nodes {
-        mark[n] = 0;
-    }
-    let mut alive = vec![true; k];
+    let mut alive = vec![true; total];
     let mut order = Vec::with_capacity(k);
     for _ in 0..k {
         let degree = |i: usize| adj[i * words..(i + 1) * words].iter().map(|w| w.count_ones()).sum::<u32>();
