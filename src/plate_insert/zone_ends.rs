@@ -341,7 +341,7 @@ fn search_zone_ends(
             (l, b, slip)
         }
     };
-    let Some((l_corner, b_corner)) = assign_corners(base, l, b) else {
+    let Some((l_corner, b_corner)) = assign_corners(base, l, b, run.l_corner) else {
         let first = run.evaluate(l, None)?;
         let b = stick_estimate(&first).map_or(b, |(b, _)| b);
         return Ok((first, StickEnd::Interpolated(b)));
@@ -361,7 +361,7 @@ fn search_zone_ends(
             PlacedLoading::Load(_) => {
                 let l_limits = above(l_range, b_new);
                 find_root(|x| run_pressure(run, x, Some((b_new, b_corner, slip))), l, l_limits, coarse)
-                    .map_err(|m| m.into_miss(Miss::ContactEnd))?
+                    .map_err(|m| m.into_miss(|towards| Miss::StickEnd { towards: b_new, slip, contact_end: towards }))?
             }
         };
         let settled = (b_new - b).abs() <= coarse && (l_new - l).abs() <= coarse;
@@ -397,9 +397,14 @@ fn polish(
         Ok(r)
     };
     let h = 1e-7;
-    let mut last_step = f64::INFINITY;
+    let norm = |f: [f64; 2]| f[0].abs().max(f[1].abs());
+    let mut best = (l, b, f64::INFINITY);
     for _ in 0..4 {
         let f = both(run, l, b)?;
+        if norm(f) >= best.2 {
+            break; // the last step did not reduce the residuals: keep the best iterate
+        }
+        best = (l, b, norm(f));
         let fb = both(run, l, b + h)?;
         let (dl, db) = if load_given {
             let fl = both(run, l + h, b)?;
@@ -415,16 +420,15 @@ fn polish(
         };
         let step = dl.abs().max(db.abs());
         let inside = |x: f64, [lo, hi]: [f64; 2]| x > lo && x < hi;
-        if !step.is_finite() || step > 2.0 * last_step.min(1e-3) || !inside(l + dl, l_range) || !inside(b + db, b_range)
-        {
+        if !step.is_finite() || step > 1e-3 || !inside(l + dl, l_range) || !inside(b + db, b_range) {
             break;
         }
-        (l, b, last_step) = (l + dl, b + db, step);
+        (l, b) = (l + dl, b + db);
         if step <= tol {
-            break;
+            return Ok((l, b)); // a Newton step this small only improves
         }
     }
-    Ok((l, b))
+    Ok((best.0, best.1))
 }
 
 /// p at the l node (compression positive), relative to the largest pressure.
@@ -542,8 +546,8 @@ fn finish(
 
 /// The corners to place at l and b: each within its range and keeping 6 % of the corner
 /// spacing from its neighbours (placed or not), the b corner before the l corner along η; of the
-/// candidates, the pair that moves the corners least.
-fn assign_corners(base: &PlateInsertProblem, l: f64, b: f64) -> Option<(usize, usize)> {
+/// candidates, the pair that keeps `keep_l` for l if it can and moves the corners least.
+fn assign_corners(base: &PlateInsertProblem, l: f64, b: f64, keep_l: usize) -> Option<(usize, usize)> {
     let eta = base.master_node_eta();
     let corners: Vec<usize> = (1..eta.len().saturating_sub(1) / 2).map(|c| 2 * c).collect();
     let mut best: Option<(f64, usize, usize)> = None;
@@ -555,7 +559,9 @@ fn assign_corners(base: &PlateInsertProblem, l: f64, b: f64) -> Option<(usize, u
                     .is_some_and(|[lo, hi]| x > lo && x < hi)
             };
             if fits(cl, l, above, b) && fits(cb, b, below, l) {
-                let cost = (eta[cl] - l).abs() + (eta[cb] - b).abs();
+                // Keeping the corner l was found on avoids a new l search (and a cycle of them).
+                let moved = if cl == keep_l { 0.0 } else { 1.0 };
+                let cost = moved + (eta[cl] - l).abs() + (eta[cb] - b).abs();
                 if best.is_none_or(|(c, _, _)| cost < c) {
                     best = Some((cost, cl, cb));
                 }
