@@ -13,7 +13,8 @@
 //! ```
 //!
 //! Phases: mesh generation, model setup (`add_body`, which checks every Jacobian), assembly
-//! (`assemble`: DOF map, rigid-mode check, element matrices, triplets → CSC, edge loads),
+//! (`assemble`: DOF map, rigid-mode check, `K_ff` in place in its node-graph pattern, the
+//! constrained blocks from triplets, edge loads), the ordering (with `--ordering nd`),
 //! symbolic analysis (ordering, elimination tree, supernodes), numeric factorisation
 //! `K_ff = L Lᵀ`, solve. The factorisation goes through faer's low-level API with the defaults
 //! that `CholeskySolver` uses (`SymbolicLlt::try_new` + `Llt::try_new_with_symbolic`: AMD,
@@ -25,7 +26,8 @@
 //!   `K_ff` from the node graph and element matrices added in place, in parallel over column
 //!   blocks (no triplets, no sort); `--verify` compares it entry by entry with `assemble`.
 //! * `--ordering amd-nodes`: AMD on the node graph (each node's DOFs together) instead of the DOF graph.
-//! * `--ordering nd`: geometric nested dissection of the node graph instead of AMD.
+//! * `--ordering nd`: the library's nested dissection (`contact2d_fem::fill_reducing_permutation`);
+//!   `--ordering nd-proto`: its first prototype (leaves of 8 nodes in the order they come).
 //! * `--index u32`: the factorisation with 32-bit instead of 64-bit sparse indices.
 //! * `--breakdown`: the pieces of `assemble` timed one by one through the public API, the triplet
 //!   sort on its own, and a refill of a kept pattern (`new_from_argsort`).
@@ -97,7 +99,7 @@ enum Cell {
 }
 
 #[derive(Debug, Parser)]
-#[command(about = "Time each phase of a linear Quad9 cantilever solve")]
+#[command(about = "Time each phase of a linear Quad4/Quad9 cantilever solve")]
 struct Args {
     /// Requested number of DOFs (the mesh is chosen to be the closest).
     #[arg(default_value_t = 100_000)]
@@ -125,23 +127,38 @@ struct Args {
     breakdown: bool,
 }
 
-/// Wall-clock time and peak RSS after each phase.
+/// Wall-clock time, CPU time and peak RSS after each phase.
 struct Phases {
     start: Instant,
-    rows: Vec<(&'static str, f64, Option<f64>)>,
+    cpu: f64,
+    rows: Vec<(&'static str, f64, f64, Option<f64>)>,
 }
 
 impl Phases {
     fn new() -> Phases {
-        Phases { start: Instant::now(), rows: vec![] }
+        Phases { start: Instant::now(), cpu: cpu_seconds().unwrap_or(0.0), rows: vec![] }
     }
 
     /// Records the time since the previous call under `name`.
     fn lap(&mut self, name: &'static str) {
         let now = Instant::now();
-        self.rows.push((name, (now - self.start).as_secs_f64(), peak_rss_mib()));
+        let cpu = cpu_seconds().unwrap_or(0.0);
+        self.rows.push((name, (now - self.start).as_secs_f64(), cpu - self.cpu, peak_rss_mib()));
         self.start = now;
+        self.cpu = cpu;
     }
+}
+
+/// CPU time of all threads of this process so far (Linux `/proc/self/task/*/schedstat`; it
+/// advances in scheduler ticks, a few ms), if readable. On a shared machine it is what the
+/// phases would take on otherwise idle cores (summed over the threads).
+fn cpu_seconds() -> Option<f64> {
+    let mut total = 0u64;
+    for task in std::fs::read_dir("/proc/self/task").ok()? {
+        let stat = std::fs::read_to_string(task.ok()?.path().join("schedstat")).ok()?;
+        total += stat.split_whitespace().next()?.parse::<u64>().ok()?;
+    }
+    Some(total as f64 * 1e-9)
 }
 
 /// `VmHWM` of this process in MiB, if `/proc/self/status` can be read.
@@ -357,13 +374,14 @@ fn report(
     println!("‖K u - f‖ / ‖f‖      {:.2e}", res / norm);
     println!("tip deflection       {tip:.6} at {:?} (Timoshenko ≈ -0.2685)", model.mesh.points[tip_node]);
     println!();
-    let mut total = 0.0;
-    for (name, secs, rss) in &phases.rows {
+    let (mut total, mut total_cpu) = (0.0, 0.0);
+    for (name, secs, cpu, rss) in &phases.rows {
         total += secs;
+        total_cpu += cpu;
         let rss = rss.map_or_else(|| "?".to_string(), |r| format!("{r:.0}"));
-        println!("{name:<28} {secs:>9.3} s   peak RSS so far {rss:>6} MiB");
+        println!("{name:<28} {secs:>9.3} s  (CPU {cpu:>7.3} s)   peak RSS so far {rss:>6} MiB");
     }
-    println!("{:<28} {total:>9.3} s", "total");
+    println!("{:<28} {total:>9.3} s  (CPU {total_cpu:>7.3} s)", "total");
 }
 
 /// `y = K x` from the stored lower triangle.

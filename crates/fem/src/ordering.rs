@@ -30,10 +30,12 @@ use crate::model::Model;
 /// The fill-reducing ordering used by [`crate::CholeskySolver`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Ordering {
-    /// Approximate minimum degree on the DOF graph (faer's).
-    Amd,
-    /// Geometric nested dissection on the node graph (needs the node coordinates).
+    /// Approximate minimum degree on the DOF graph (faer's). The default: it fills least on the
+    /// graded, unstructured meshes of the contact problems (docs/benchmarks.md).
     #[default]
+    Amd,
+    /// Geometric nested dissection on the node graph (needs the node coordinates): 7–12 % less
+    /// fill and 20 % fewer flops than AMD on large structured meshes.
     NestedDissection,
 }
 

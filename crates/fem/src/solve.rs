@@ -21,9 +21,10 @@ use faer::sparse::linalg::cholesky::{
 };
 use faer::{Conj, Mat, Side, get_global_parallelism};
 
-use crate::assembly::Csc;
+use crate::assembly::{Csc, LinearSystem};
 use crate::error::FemError;
-use crate::ordering::is_permutation;
+use crate::model::Model;
+use crate::ordering::{Ordering, fill_reducing_permutation, is_permutation};
 
 /// A Cholesky factorisation of a symmetric positive definite matrix stored as its lower triangle.
 #[derive(Clone)]
@@ -109,6 +110,24 @@ impl CholeskySolver {
             factorize_symbolic_cholesky(k.symbolic(), Side::Lower, SymmetricOrdering::Amd, Default::default())
                 .map_err(|e| FemError::Factorization(format!("symbolic analysis: {e:?}")))?;
         CholeskySolver::finish(symbolic, k)
+    }
+
+    /// Analyses and factors the stiffness of `system` (assembled from `model`) with `ordering`.
+    ///
+    /// # Errors
+    /// As [`CholeskySolver::factor`].
+    pub fn factor_with_ordering(
+        model: &Model,
+        system: &LinearSystem,
+        ordering: Ordering,
+    ) -> Result<CholeskySolver, FemError> {
+        match ordering {
+            Ordering::Amd => CholeskySolver::factor(&system.stiffness),
+            Ordering::NestedDissection => {
+                let forward = fill_reducing_permutation(model, &system.dofs, &system.stiffness, ordering, &[])?;
+                CholeskySolver::factor_with_permutation(&system.stiffness, &forward)
+            }
+        }
     }
 
     /// Analyses and factors `k` (lower triangle) with the fill-reducing permutation `forward`
