@@ -1,0 +1,337 @@
+//! Line charts (PNG or SVG, headless) with the bundled font: the one drawing API of the project.
+//!
+//! ```text
+//! line_chart(path, axes, series)   path ".png" → bitmap (1024 × 768), ".svg" → vector
+//! ```
+//! Axis ranges cover every finite point of every series (positive ones only on a log axis), with a
+//! 5 % margin on linear axes. Non-finite points are skipped, so a series may carry gaps as NaN.
+
+use std::path::Path;
+use std::sync::OnceLock;
+
+use plotters::coord::Shift;
+use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use plotters::prelude::*;
+
+use super::OutputError;
+
+/// DejaVu Sans, embedded so that figures render the same on every machine (no system fonts).
+const FONT_BYTES: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+
+/// The size of every figure, in pixels (the SVG's user units).
+pub const FIGURE_SIZE: (u32, u32) = (1024, 768);
+
+/// Colours of successive series (the "tab10" palette, distinguishable in print and by most readers
+/// with colour-vision deficiency).
+pub const PALETTE: [RGBColor; 10] = [
+    RGBColor(31, 119, 180),
+    RGBColor(255, 127, 14),
+    RGBColor(44, 160, 44),
+    RGBColor(214, 39, 40),
+    RGBColor(148, 103, 189),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(127, 127, 127),
+    RGBColor(188, 189, 34),
+    RGBColor(23, 190, 207),
+];
+
+/// One line of a chart.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Series {
+    /// The legend entry.
+    pub label: String,
+    /// The points (x, y), drawn in this order; non-finite points are skipped.
+    pub points: Vec<(f64, f64)>,
+    /// Whether each point also gets a marker (a filled circle).
+    pub markers: bool,
+}
+
+/// Title and axes of a chart (labels carry quantity and unit, e.g. "w (non-dimensional)").
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Axes {
+    /// The chart's title (drawn above the plot).
+    pub title: String,
+    /// The horizontal axis' label.
+    pub x_label: String,
+    /// The vertical axis' label.
+    pub y_label: String,
+    /// A logarithmic horizontal axis.
+    pub log_x: bool,
+    /// A logarithmic vertical axis.
+    pub log_y: bool,
+}
+
+/// The image format of a figure file, chosen by its extension.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ImageFormat {
+    /// A PNG bitmap.
+    Png,
+    /// An SVG vector drawing.
+    Svg,
+}
+
+impl ImageFormat {
+    /// The format named by `path`'s extension (".png" or ".svg", any case).
+    ///
+    /// # Errors
+    /// [`OutputError::UnsupportedFormat`] for any other extension.
+    pub fn from_path(path: &Path) -> Result<Self, OutputError> {
+        let ext = path.extension().and_then(|e| e.to_str()).map(str::to_ascii_lowercase);
+        match ext.as_deref() {
+            Some("png") => Ok(Self::Png),
+            Some("svg") => Ok(Self::Svg),
+            _ => Err(OutputError::UnsupportedFormat { path: path.to_path_buf(), expected: "\".png\" or \".svg\"" }),
+        }
+    }
+}
+
+/// Registers the bundled font as plotters' "sans-serif" family, once per process.
+///
+/// Every drawing function of this module calls it; figure code outside this module that draws with
+/// plotters directly calls it first too.
+///
+/// # Errors
+/// [`OutputError::Font`] when the embedded font cannot be parsed (then on every call).
+pub fn register_bundled_font() -> Result<(), OutputError> {
+    static REGISTERED: OnceLock<bool> = OnceLock::new();
+    let ok =
+        *REGISTERED.get_or_init(|| plotters::style::register_font("sans-serif", FontStyle::Normal, FONT_BYTES).is_ok());
+    if ok { Ok(()) } else { Err(OutputError::Font) }
+}
+
+/// Draws the series as lines (with point markers where asked) with a legend; PNG or SVG chosen by
+/// the path's extension (".png" / ".svg"); the bundled font is registered on first use.
+///
+/// # Errors
+/// [`OutputError::UnsupportedFormat`] for another extension, [`OutputError::Font`] if the font
+/// cannot be registered, [`OutputError::Draw`] if the backend fails (e.g. the directory is missing).
+///
+/// # Examples
+/// ```
+/// use contact2d::output::chart::{line_chart, Axes, Series};
+/// let dir = std::env::temp_dir().join("contact2d_chart_doctest");
+/// std::fs::create_dir_all(&dir).unwrap();
+/// let axes = Axes { title: "y = x²".into(), x_label: "x (-)".into(), y_label: "y (-)".into(),
+///                   ..Axes::default() };
+/// let s = Series { label: "x²".into(), points: (0..10).map(|i| (i as f64, (i * i) as f64)).collect(),
+///                  markers: true };
+/// line_chart(&dir.join("square.svg"), &axes, &[s]).unwrap();
+/// ```
+pub fn line_chart(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), OutputError> {
+    let format = ImageFormat::from_path(path)?;
+    register_bundled_font()?;
+    let x_range = axis_range(series.iter().flat_map(|s| s.points.iter().map(|p| p.0)), axes.log_x);
+    let y_range = axis_range(series.iter().flat_map(|s| s.points.iter().map(|p| p.1)), axes.log_y);
+    let result = match format {
+        ImageFormat::Png => {
+            let root = BitMapBackend::new(path, FIGURE_SIZE).into_drawing_area();
+            draw_with_scales(&root, axes, series, x_range, y_range)
+        }
+        ImageFormat::Svg => {
+            let root = SVGBackend::new(path, FIGURE_SIZE).into_drawing_area();
+            draw_with_scales(&root, axes, series, x_range, y_range)
+        }
+    };
+    result.map_err(|reason| OutputError::draw(path, reason))
+}
+
+/// The range of an axis over the finite values (positive ones on a log axis), with a margin.
+pub(crate) fn axis_range(values: impl Iterator<Item = f64>, log: bool) -> (f64, f64) {
+    let (lo, hi) = values
+        .filter(|v| v.is_finite() && (!log || *v > 0.0))
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    if !lo.is_finite() {
+        return if log { (0.1, 10.0) } else { (0.0, 1.0) };
+    }
+    if log {
+        if hi / lo < 1.0 + 1e-9 { (lo / 2.0, hi * 2.0) } else { (lo, hi) }
+    } else {
+        let span = hi - lo;
+        if span <= 1e-12 * hi.abs().max(lo.abs()).max(1e-300) {
+            let pad = if lo == 0.0 { 1.0 } else { 0.1 * lo.abs() };
+            (lo - pad, hi + pad)
+        } else {
+            (lo - 0.05 * span, hi + 0.05 * span)
+        }
+    }
+}
+
+/// Dispatches on the four linear/log combinations (each is a different coordinate type).
+fn draw_with_scales<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    axes: &Axes,
+    series: &[Series],
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+) -> Result<(), String> {
+    match (axes.log_x, axes.log_y) {
+        (false, false) => draw_chart(root, axes, series, x0..x1, y0..y1),
+        (true, false) => draw_chart(root, axes, series, (x0..x1).log_scale(), y0..y1),
+        (false, true) => draw_chart(root, axes, series, x0..x1, (y0..y1).log_scale()),
+        (true, true) => draw_chart(root, axes, series, (x0..x1).log_scale(), (y0..y1).log_scale()),
+    }
+}
+
+/// Draws the chart on `root` with the given coordinate specs and presents it (writes the file).
+fn draw_chart<DB, X, Y>(
+    root: &DrawingArea<DB, Shift>,
+    axes: &Axes,
+    series: &[Series],
+    x_spec: X,
+    y_spec: Y,
+) -> Result<(), String>
+where
+    DB: DrawingBackend,
+    X: AsRangedCoord<Value = f64>,
+    Y: AsRangedCoord<Value = f64>,
+    X::CoordDescType: ValueFormatter<f64>,
+    Y::CoordDescType: ValueFormatter<f64>,
+{
+    let err = |e: &dyn std::fmt::Display| e.to_string();
+    root.fill(&WHITE).map_err(|e| err(&e))?;
+    let mut chart = ChartBuilder::on(root)
+        .caption(&axes.title, ("sans-serif", 26))
+        .margin(18)
+        .x_label_area_size(56)
+        .y_label_area_size(84)
+        .build_cartesian_2d(x_spec, y_spec)
+        .map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .x_desc(axes.x_label.as_str())
+        .y_desc(axes.y_label.as_str())
+        .label_style(("sans-serif", 16))
+        .axis_desc_style(("sans-serif", 18))
+        .light_line_style(RGBColor(235, 235, 235))
+        .draw()
+        .map_err(|e| err(&e))?;
+    let mut any_label = false;
+    for (k, s) in series.iter().enumerate() {
+        let colour = PALETTE[k % PALETTE.len()];
+        let style = colour.stroke_width(2);
+        for (r, run) in finite_runs(&s.points).into_iter().enumerate() {
+            let drawn = chart.draw_series(LineSeries::new(run.iter().copied(), style)).map_err(|e| err(&e))?;
+            // One legend entry per series, attached to its first drawn run.
+            if r == 0 && !s.label.is_empty() {
+                drawn
+                    .label(s.label.as_str())
+                    .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], colour.stroke_width(2)));
+                any_label = true;
+            }
+        }
+        if s.markers {
+            chart
+                .draw_series(
+                    s.points
+                        .iter()
+                        .filter(|p| p.0.is_finite() && p.1.is_finite())
+                        .map(|&p| Circle::new(p, 3, colour.filled())),
+                )
+                .map_err(|e| err(&e))?;
+        }
+    }
+    if any_label {
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 16))
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()
+            .map_err(|e| err(&e))?;
+    }
+    root.present().map_err(|e| err(&e))
+}
+
+/// The maximal runs of consecutive finite points (a NaN breaks the line).
+fn finite_runs(points: &[(f64, f64)]) -> Vec<&[(f64, f64)]> {
+    points.split(|p| !(p.0.is_finite() && p.1.is_finite())).filter(|run| !run.is_empty()).collect()
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+
+    fn sample() -> (Axes, Vec<Series>) {
+        let axes = Axes {
+            title: "Chart test title".into(),
+            x_label: "x (non-dimensional)".into(),
+            y_label: "y (non-dimensional)".into(),
+            log_x: false,
+            log_y: false,
+        };
+        let series = vec![
+            Series {
+                label: "sin".into(),
+                points: (0..50).map(|i| (i as f64 * 0.1, (i as f64 * 0.1).sin())).collect(),
+                markers: false,
+            },
+            Series {
+                label: "with a gap".into(),
+                points: vec![(0.0, 0.5), (1.0, f64::NAN), (2.0, -0.5), (3.0, 0.0)],
+                markers: true,
+            },
+        ];
+        (axes, series)
+    }
+
+    fn temp_dir(name: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("contact2d_chart_{name}_{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn writes_png_and_svg() {
+        let dir = temp_dir("both");
+        let (axes, series) = sample();
+        let png = dir.join("c.png");
+        let svg = dir.join("c.svg");
+        line_chart(&png, &axes, &series).unwrap();
+        line_chart(&svg, &axes, &series).unwrap();
+        let bytes = std::fs::read(&png).unwrap();
+        // The eight-byte PNG signature (PNG specification, section 5.2).
+        assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+        let text = std::fs::read_to_string(&svg).unwrap();
+        assert!(text.starts_with("<svg"), "{}", &text[..40.min(text.len())]);
+        assert!(text.contains("Chart test title"));
+        assert!(text.contains("with a gap"));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn log_axes_and_empty_series_draw() {
+        let dir = temp_dir("log");
+        let (mut axes, _) = sample();
+        axes.log_x = true;
+        axes.log_y = true;
+        let s = Series {
+            label: "power".into(),
+            points: vec![(1e-3, 1.0), (1.0, 10.0), (1e3, 100.0), (-1.0, 5.0)],
+            markers: true,
+        };
+        line_chart(&dir.join("log.svg"), &axes, &[s]).unwrap();
+        line_chart(&dir.join("empty.png"), &axes, &[]).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn errors_are_typed() {
+        let (axes, series) = sample();
+        let bad_ext = Path::new("figure.jpg");
+        assert!(matches!(line_chart(bad_ext, &axes, &series), Err(OutputError::UnsupportedFormat { .. })));
+        let missing_dir = std::env::temp_dir().join("contact2d_no_such_dir_xyz/deeper/c.png");
+        assert!(matches!(line_chart(&missing_dir, &axes, &series), Err(OutputError::Draw { .. })));
+    }
+
+    #[test]
+    fn axis_range_covers_the_data() {
+        assert_eq!(axis_range([0.0, 10.0].into_iter(), false), (-0.5, 10.5));
+        assert_eq!(axis_range([1e-2, 1e2, -3.0].into_iter(), true), (1e-2, 1e2));
+        assert_eq!(axis_range(std::iter::empty(), false), (0.0, 1.0));
+        let (lo, hi) = axis_range([2.0, 2.0].into_iter(), false);
+        assert!(lo < 2.0 && hi > 2.0);
+    }
+}

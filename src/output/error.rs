@@ -1,0 +1,65 @@
+//! The one error type of the output module: every variant names the file it concerns and the cause.
+
+use std::path::PathBuf;
+
+/// Why writing an output file failed.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum OutputError {
+    /// The bundled font could not be registered with the plotting library.
+    #[error("the bundled font (assets/fonts/DejaVuSans.ttf) could not be registered with plotters")]
+    Font,
+    /// The file's extension names no format this writer produces.
+    #[error("{path}: unsupported file extension (expected {expected})")]
+    UnsupportedFormat {
+        /// The file asked for.
+        path: PathBuf,
+        /// The extensions accepted, e.g. "\".png\" or \".svg\"".
+        expected: &'static str,
+    },
+    /// Drawing a figure failed (the plotting backend's message).
+    #[error("{path}: drawing failed: {reason}")]
+    Draw {
+        /// The figure file.
+        path: PathBuf,
+        /// The plotting backend's message.
+        reason: String,
+    },
+    /// Creating a directory or writing a file failed.
+    #[error("{path}: {source}")]
+    Io {
+        /// The file or directory.
+        path: PathBuf,
+        /// The operating system's error.
+        #[source]
+        source: std::io::Error,
+    },
+    /// Serialising data (JSON, VTK) failed.
+    #[error("{path}: could not serialise: {reason}")]
+    Serialize {
+        /// The file being written.
+        path: PathBuf,
+        /// The serialiser's message.
+        reason: String,
+    },
+    /// The solved scene lacks what this output needs (e.g. a contour or a solved step).
+    #[error("{path}: {reason}")]
+    MissingData {
+        /// The file that could not be produced.
+        path: PathBuf,
+        /// What is missing.
+        reason: String,
+    },
+}
+
+impl OutputError {
+    /// An [`OutputError::Io`] for `path`.
+    pub fn io(path: impl Into<PathBuf>, source: std::io::Error) -> Self {
+        Self::Io { path: path.into(), source }
+    }
+
+    /// An [`OutputError::Draw`] for `path` from any displayable plotting error.
+    pub fn draw(path: impl Into<PathBuf>, reason: impl std::fmt::Display) -> Self {
+        Self::Draw { path: path.into(), reason: reason.to_string() }
+    }
+}
