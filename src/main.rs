@@ -45,6 +45,12 @@ enum Command {
         #[arg(long, value_name = "DIR")]
         out: Option<std::path::PathBuf>,
     },
+    /// Wall time against discretisation error: flagship cases × mesh levels × algorithms.
+    ///
+    /// Examples:
+    ///   contact2d bench --levels 16,32,64 --repeats 3 --out bench-out
+    ///   contact2d bench --cases U3 --algorithms active_set,clarabel --max-seconds 10
+    Bench(contact2d::bench::BenchArgs),
 }
 
 fn run(cli: Cli) -> anyhow::Result<()> {
@@ -77,6 +83,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 print_report(&report);
             }
         }
+        Command::Bench(args) => println!("{}", contact2d::bench::run_command(&args)?),
     }
     Ok(())
 }
