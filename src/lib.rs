@@ -19,6 +19,7 @@ pub mod output;
 pub mod plate_insert;
 pub mod run;
 pub mod scene;
+pub mod stress;
 pub mod verify;
 
 // The README's library example is compiled and run as a doctest.
