@@ -227,9 +227,10 @@ pub fn error_time_series(
         .collect()
 }
 
-/// The log-log figures of error against median wall time, one per case (`bench_<case>.svg` and `.png`):
-/// one line per algorithm and quantity (P and Φ_E, the two that converge smoothly; l, b and σ*
-/// are in the tables).
+/// The log-log figures of error against median wall time, one per case (`bench_<case>.svg` and
+/// `.png`): one line per algorithm and quantity (P and Φ_E, the two that converge smoothly; l, b
+/// and σ* are in the tables). Both axes carry log₁₀ of the value on a linear scale, which keeps
+/// the tick labels exact decades.
 ///
 /// # Errors
 /// The path and cause of a figure that cannot be drawn.
@@ -246,7 +247,7 @@ pub fn figures(
                 if !points.is_empty() {
                     series.push(Series {
                         label: format!("{} {}", algorithm_name(algorithm), q.name()),
-                        points,
+                        points: points.iter().map(|(t, e)| (t.log10(), e.log10())).collect(),
                         markers: true,
                     });
                 }
@@ -261,10 +262,10 @@ pub fn figures(
         }
         let axes = Axes {
             title: format!("{}: error against wall time (N = {})", case.name(), levels.join(", ")),
-            x_label: "median wall time of the run (s)".into(),
-            y_label: "relative error against the reference".into(),
-            log_x: true,
-            log_y: true,
+            x_label: "log10 of the median wall time of the run (s)".into(),
+            y_label: "log10 of the relative error".into(),
+            log_x: false,
+            log_y: false,
         };
         for ext in ["svg", "png"] {
             let path = dir.join(format!("bench_{}.{ext}", case.name()));
