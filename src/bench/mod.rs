@@ -128,7 +128,7 @@ pub struct BenchArgs {
     /// Directory of the bundled scenes.
     #[arg(long, default_value = "scenes")]
     pub scenes: PathBuf,
-    /// Output directory (bench.csv, bench.md, bench_<case>.svg/.png).
+    /// Output directory (bench.csv, bench.md, bench_CASE.svg and .png).
     #[arg(long, default_value = "bench-out")]
     pub out: PathBuf,
     /// No progress bar.
