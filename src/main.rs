@@ -50,12 +50,14 @@ enum Command {
     /// Examples:
     ///   contact2d bench --levels 16,32,64 --repeats 3 --out bench-out
     ///   contact2d bench --cases U3 --algorithms active_set,clarabel --max-seconds 10
+    #[command(verbatim_doc_comment)]
     Bench(contact2d::bench::BenchArgs),
     /// Numerical stress tests: extreme stiffness ratios, friction, clearances, ν, distorted meshes.
     ///
     /// Examples:
     ///   contact2d stress --out stress-out
     ///   contact2d stress --ratios 1e-4,1e6 --frictions 0,1.5 --eps 0 --no-extra
+    #[command(verbatim_doc_comment)]
     Stress(contact2d::stress::StressArgs),
 }
 
