@@ -3,6 +3,8 @@
 #
 #   pip install gmsh                     # gmsh 4.15.2 was used for the committed files
 #   meshes/generate_plate_insert.sh      # writes meshes/plate_insert/plate_insert_eps{0,0.05}_N{16,32,64,128}.msh
+#                                        # and, for the stress tests (contact2d stress),
+#                                        # plate_insert_eps{1e-6,0.001,0.2}_N{16,32}.msh
 #
 # Options:  --no-check    only run gmsh
 #           --check F EPS N [NAME=VALUE ...]
@@ -162,14 +164,24 @@ out="$here/plate_insert"
 mkdir -p "$out"
 "$GMSH" --version >/dev/null
 status=0
+generate() {  # eps N
+  local f="$out/plate_insert_eps${1}_N${2}.msh"
+  "$GMSH" "$here/plate_insert.geo" -2 -order 2 -format msh41 \
+    -setnumber eps "$1" -setnumber N "$2" -v 2 -o "$f"
+  if [[ ${CHECK:-1} == 1 ]]; then
+    check "$f" "$1" "$2" || status=1
+  fi
+}
+[[ ${1:-} == --no-check ]] && CHECK=0
 for eps in 0 0.05; do
   for N in 16 32 64 128; do
-    f="$out/plate_insert_eps${eps}_N${N}.msh"
-    "$GMSH" "$here/plate_insert.geo" -2 -order 2 -format msh41 \
-      -setnumber eps "$eps" -setnumber N "$N" -v 2 -o "$f"
-    if [[ ${1:-} != --no-check ]]; then
-      check "$f" "$eps" "$N" || status=1
-    fi
+    generate "$eps" "$N"
+  done
+done
+# Clearances for the numerical stress tests (src/stress.rs): nearly coincident, small, large.
+for eps in 1e-6 0.001 0.2; do
+  for N in 16 32; do
+    generate "$eps" "$N"
   done
 done
 exit $status

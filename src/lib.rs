@@ -12,12 +12,14 @@ pub use contact2d_element as element;
 pub use contact2d_fem as fem;
 pub use contact2d_mesh as mesh;
 
+pub mod bench;
 pub mod doc_sections;
 pub mod mesh_summary;
 pub mod output;
 pub mod plate_insert;
 pub mod run;
 pub mod scene;
+pub mod stress;
 pub mod sweep;
 pub mod verify;
 

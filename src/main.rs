@@ -87,6 +87,20 @@ enum Command {
         #[arg(long)]
         quiet: bool,
     },
+    /// Wall time against discretisation error: flagship cases × mesh levels × algorithms.
+    ///
+    /// Examples:
+    ///   contact2d bench --levels 16,32,64 --repeats 3 --out bench-out
+    ///   contact2d bench --cases U3 --algorithms active_set,clarabel --max-seconds 10
+    #[command(verbatim_doc_comment)]
+    Bench(contact2d::bench::BenchArgs),
+    /// Numerical stress tests: extreme stiffness ratios, friction, clearances, ν, distorted meshes.
+    ///
+    /// Examples:
+    ///   contact2d stress --out stress-out
+    ///   contact2d stress --ratios 1e-4,1e6 --frictions 0,1.5 --eps 0 --no-extra
+    #[command(verbatim_doc_comment)]
+    Stress(contact2d::stress::StressArgs),
 }
 
 fn run(cli: Cli) -> anyhow::Result<()> {
@@ -128,6 +142,8 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             }
         }
         Command::Sweep { scene, vary, set, plot, out, quiet } => sweep(&scene, &vary, &set, &plot, out, quiet)?,
+        Command::Bench(args) => println!("{}", contact2d::bench::run_command(&args)?),
+        Command::Stress(args) => println!("{}", contact2d::stress::run_command(&args)?),
     }
     Ok(())
 }

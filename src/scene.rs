@@ -10,6 +10,7 @@
 //! stiffness_ratio = 1.0         # E2 / E1
 //! rigid_insert = false          # true: the insert is a rigid, fixed contour
 //! poissons_ratio = 0.3
+//! plane_condition = "stress"   # or "strain" (both bodies)
 //! eps = 0.0                     # geometric clearance of the mesh (insert radius 1 - eps)
 //! clearance = 0.0               # c, the clearance in displacement units
 //! gap = "paper"                 # default "geometric"; "paper" is the stricter u_ρc / u_rc
@@ -31,6 +32,8 @@
 use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
+
+use contact2d_element::PlaneCondition;
 
 use crate::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
 
@@ -118,6 +121,9 @@ pub struct PlateInsertSection {
     /// ν of both bodies.
     #[serde(default = "nu")]
     pub poissons_ratio: f64,
+    /// `stress` (default, the paper's thin plate) or `strain`.
+    #[serde(default = "plane_stress")]
+    pub plane_condition: PlaneKey,
     /// ε of the mesh.
     #[serde(default)]
     pub eps: f64,
@@ -169,6 +175,9 @@ fn one() -> f64 {
 fn nu() -> f64 {
     0.3
 }
+fn plane_stress() -> PlaneKey {
+    PlaneKey::Stress
+}
 fn geometric() -> GapKey {
     GapKey::Geometric
 }
@@ -181,6 +190,16 @@ pub enum VariantKey {
     HoleMaster,
     /// Variant 2.
     InsertMaster,
+}
+
+/// Scene spelling of [`PlaneCondition`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PlaneKey {
+    /// Plane stress.
+    Stress,
+    /// Plane strain.
+    Strain,
 }
 
 /// Scene spelling of [`GapModel`].
@@ -239,6 +258,10 @@ impl Scene {
             stiffness_ratio: p.stiffness_ratio,
             rigid_insert: p.rigid_insert,
             poissons_ratio: p.poissons_ratio,
+            plane: match p.plane_condition {
+                PlaneKey::Stress => PlaneCondition::Stress,
+                PlaneKey::Strain => PlaneCondition::Strain,
+            },
             variant: match p.variant {
                 VariantKey::HoleMaster => PairingVariant::HoleMaster,
                 VariantKey::InsertMaster => PairingVariant::InsertMaster,
@@ -313,6 +336,9 @@ algorithm = "active_set"
         assert_eq!(s.plate_insert.load, 0.5);
         assert_eq!(s.solver.algorithm, ContactAlgorithm::Clarabel);
         assert_eq!(s.plate_insert.poissons_ratio, 0.3);
+        assert_eq!(s.plate_insert().plane, PlaneCondition::Stress);
+        let s = Scene::load(&path, &["plate_insert.plane_condition=strain".into()]).unwrap();
+        assert_eq!(s.plate_insert().plane, PlaneCondition::Strain);
         assert!(s.plate_insert().mesh.ends_with("m.msh"));
     }
 

@@ -56,6 +56,8 @@ pub struct PlateInsert {
     pub rigid_insert: bool,
     /// ν1 and ν2.
     pub poissons_ratio: f64,
+    /// Plane stress (the paper's thin plate) or plane strain, for both bodies.
+    pub plane: PlaneCondition,
     /// Pairing variant.
     pub variant: PairingVariant,
     /// ε: the mesh's geometric clearance (insert radius 1 − ε, centred at (−ε, 0)).
@@ -112,7 +114,7 @@ pub struct PlateInsertProblem {
 }
 
 impl PlateInsert {
-    /// The paper's case on the mesh at `mesh`: E2 = E1, ν = 0.3, variant 1, neat fit (ε = c = 0),
+    /// The paper's case on the mesh at `mesh`: E2 = E1, ν = 0.3, plane stress, variant 1, neat fit (ε = c = 0),
     /// the paper's gap model, no friction, node-to-node pairs, elastic insert, no placed nodes.
     /// Change fields with struct update syntax: `PlateInsert { friction: 0.3, ..PlateInsert::paper(m) }`.
     pub fn paper(mesh: impl Into<String>) -> PlateInsert {
@@ -121,6 +123,7 @@ impl PlateInsert {
             stiffness_ratio: 1.0,
             rigid_insert: false,
             poissons_ratio: 0.3,
+            plane: PlaneCondition::Stress,
             variant: PairingVariant::HoleMaster,
             eps: 0.0,
             clearance: 0.0,
@@ -259,9 +262,8 @@ impl PlateInsert {
     /// The model of the two bodies with the boundary conditions of spec §2, and both contours.
     fn model(&self, mesh: contact2d_mesh::Mesh) -> Result<(Model, Contour, Contour), ContactError> {
         let mut model = Model::new(mesh);
-        let plate = Material::new(1.0, self.poissons_ratio, PlaneCondition::Stress).map_err(fem_input)?;
-        let insert =
-            Material::new(self.stiffness_ratio, self.poissons_ratio, PlaneCondition::Stress).map_err(fem_input)?;
+        let plate = Material::new(1.0, self.poissons_ratio, self.plane).map_err(fem_input)?;
+        let insert = Material::new(self.stiffness_ratio, self.poissons_ratio, self.plane).map_err(fem_input)?;
         model.add_body("plate", plate, 1.0)?;
         for group in ["top", "bottom_plate", "right"] {
             model.fix(group, Component::Y, 0.0)?;

@@ -1,0 +1,235 @@
+//! `contact2d stress`: numerical stress tests of the flagship problem at extreme parameters.
+//!
+//! ```text
+//! main grid (plane stress, ν = 0.3, the mesh as generated):
+//!   E2/E1 ∈ {1e-4, 1e-2, 1, 1e2, 1e4, 1e6} × μ ∈ {0, 0.1, 0.3, 0.6, 1.0, 1.5} × ε ∈ {0, 1e-6, 1e-3, 0.05, 0.2}
+//! extra axes (on E2/E1 ∈ {1e-4, 1, 1e6} × μ ∈ {0, 0.3, 1.5} × ε ∈ {0, 0.05}):
+//!   plane strain with ν = 0.45 and 0.49;  plane stress, ν = 0.3, interior nodes distorted by
+//!   0.15, 0.25 and 0.3 of their local spacing ([`distort`]; 0.3 inverts a cell of the N = 16
+//!   mesh, which shows how that is reported)
+//! every cell: variant 1, c = 1 with the paper's gap when ε > 0 (w = 0.3838 in 3 steps), neat
+//!   fit otherwise (w = 1), each algorithm (active set, Clarabel, Boussinesq), see [`cell`]
+//! ```
+//!
+//! Meshes: the bundled `plate_insert_eps{ε}_N{N}.msh` (ε = 1e-6, 1e-3, 0.2 exist for N = 16 and
+//! 32 only); distorted meshes are written to a temporary directory.
+
+pub mod cell;
+pub mod distort;
+pub mod report;
+
+use std::path::{Path, PathBuf};
+
+use contact2d_element::PlaneCondition;
+use contact2d_mesh::{MshFormat, read_msh, write_msh};
+
+use crate::bench::progress_bar;
+use crate::scene::ContactAlgorithm;
+
+pub use cell::{CellResult, StressCell, run_cell};
+
+/// Errors of the stress command.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum StressError {
+    /// A flag value that names nothing.
+    #[error("{flag}: {reason}")]
+    Flag {
+        /// The flag.
+        flag: &'static str,
+        /// What is wrong.
+        reason: String,
+    },
+    /// A file could not be read or written.
+    #[error("{path}: {reason}")]
+    File {
+        /// The file.
+        path: String,
+        /// The cause.
+        reason: String,
+    },
+}
+
+/// Command-line flags of `contact2d stress`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct StressArgs {
+    /// Mesh level N (16 or 32: the clearance meshes exist for these).
+    #[arg(long, default_value_t = 16)]
+    pub level: usize,
+    /// Stiffness ratios E2/E1 of the main grid, comma separated.
+    #[arg(long, value_delimiter = ',', default_value = "1e-4,1e-2,1,1e2,1e4,1e6")]
+    pub ratios: Vec<f64>,
+    /// Friction coefficients of the main grid.
+    #[arg(long, value_delimiter = ',', default_value = "0,0.1,0.3,0.6,1.0,1.5")]
+    pub frictions: Vec<f64>,
+    /// Clearances ε of the main grid (0, 1e-6, 1e-3, 0.05, 0.2 have meshes).
+    #[arg(long, value_delimiter = ',', default_value = "0,1e-6,1e-3,0.05,0.2")]
+    pub eps: Vec<f64>,
+    /// Leave out the plane-strain and distorted-mesh cells.
+    #[arg(long)]
+    pub no_extra: bool,
+    /// Poisson's ratios of the plane-strain cells.
+    #[arg(long, value_delimiter = ',', default_value = "0.45,0.49")]
+    pub strain_nu: Vec<f64>,
+    /// Distortion amplitudes of the distorted-mesh cells (fractions of the local node spacing).
+    #[arg(long, value_delimiter = ',', default_value = "0.15,0.25,0.3")]
+    pub distortions: Vec<f64>,
+    /// Algorithms, comma separated.
+    #[arg(long, value_delimiter = ',', default_value = "active_set,clarabel,boussinesq")]
+    pub algorithms: Vec<String>,
+    /// Seed of the mesh distortion.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Directory of the bundled scenes (the base scene is plate_insert_gap_v1_mu03.toml).
+    #[arg(long, default_value = "scenes")]
+    pub scenes: PathBuf,
+    /// Output directory (stress.csv, stress.md).
+    #[arg(long, default_value = "stress-out")]
+    pub out: PathBuf,
+    /// No progress bar.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// The axes of the grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GridAxes {
+    /// E2/E1 of the main grid.
+    pub ratios: Vec<f64>,
+    /// μ of the main grid.
+    pub frictions: Vec<f64>,
+    /// ε of the main grid.
+    pub eps: Vec<f64>,
+    /// ν of the plane-strain cells (none: no such cells).
+    pub strain_nu: Vec<f64>,
+    /// Distortion amplitudes (none: no distorted cells).
+    pub distortions: Vec<f64>,
+}
+
+/// The cells of the grid: the main grid, then the plane-strain and distorted cells.
+pub fn grid(axes: &GridAxes) -> Vec<StressCell> {
+    let GridAxes { ratios, frictions, eps, .. } = axes;
+    let base = StressCell { ratio: 1.0, mu: 0.0, eps: 0.0, nu: 0.3, plane: PlaneCondition::Stress, distortion: 0.0 };
+    let mut cells = Vec::new();
+    for &e in eps {
+        for &ratio in ratios {
+            for &mu in frictions {
+                cells.push(StressCell { ratio, mu, eps: e, ..base });
+            }
+        }
+    }
+    let variants = axes
+        .strain_nu
+        .iter()
+        .map(|&nu| StressCell { nu, plane: PlaneCondition::Strain, ..base })
+        .chain(axes.distortions.iter().map(|&distortion| StressCell { distortion, ..base }));
+    for v in variants {
+        for e in [0.0, 0.05] {
+            for ratio in [1e-4, 1.0, 1e6] {
+                for mu in [0.0, 0.3, 1.5] {
+                    cells.push(StressCell { ratio, mu, eps: e, ..v });
+                }
+            }
+        }
+    }
+    cells
+}
+
+/// The bundled mesh file name of ε (`None` if there is none).
+pub fn mesh_name(eps: f64, level: usize) -> Option<String> {
+    let tag = [(0.0, "0"), (1e-6, "1e-6"), (1e-3, "0.001"), (0.05, "0.05"), (0.2, "0.2")]
+        .iter()
+        .find(|(e, _)| *e == eps)
+        .map(|(_, t)| *t)?;
+    Some(format!("plate_insert_eps{tag}_N{level}.msh"))
+}
+
+fn parse_algorithm(s: &str) -> Option<ContactAlgorithm> {
+    match s.trim() {
+        "boussinesq" => Some(ContactAlgorithm::Boussinesq),
+        "active_set" => Some(ContactAlgorithm::ActiveSet),
+        "clarabel" => Some(ContactAlgorithm::Clarabel),
+        _ => None,
+    }
+}
+
+/// Runs one cell, distorting the mesh first when the cell asks for it (written into `tmp`).
+///
+/// # Errors
+/// [`StressError::File`] when the mesh cannot be read or the distorted mesh written;
+/// [`StressError::Flag`] for an ε without a bundled mesh.
+pub fn run_stress_cell(
+    scenes: &Path,
+    level: usize,
+    cell: StressCell,
+    algorithms: &[ContactAlgorithm],
+    seed: u64,
+    tmp: &Path,
+) -> Result<CellResult, StressError> {
+    let name = mesh_name(cell.eps, level)
+        .ok_or_else(|| StressError::Flag { flag: "--eps", reason: format!("no bundled mesh for ε = {}", cell.eps) })?;
+    let base_scene = scenes.join("plate_insert_gap_v1_mu03.toml");
+    let bundled = format!("../meshes/plate_insert/{name}");
+    if cell.distortion == 0.0 {
+        return Ok(run_cell(&base_scene, &bundled, cell, algorithms, None));
+    }
+    let file = |path: &Path, e: &dyn std::fmt::Display| StressError::File {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    };
+    let source = scenes.join(&bundled);
+    let mut mesh = read_msh(&source).map_err(|e| file(&source, &e))?;
+    distort::distort_interior(&mut mesh, cell.distortion, seed);
+    let quality = distort::jacobian_quality(&mesh);
+    std::fs::create_dir_all(tmp).map_err(|e| file(tmp, &e))?;
+    let path = tmp.join(format!("distorted_{}_{}_{seed}_{name}", cell.distortion, level));
+    write_msh(&mesh, &path, MshFormat::V41Binary).map_err(|e| file(&path, &e))?;
+    let absolute = std::fs::canonicalize(&path).map_err(|e| file(&path, &e))?;
+    Ok(run_cell(&base_scene, &absolute.display().to_string(), cell, algorithms, quality))
+}
+
+/// The whole command: runs the grid with a progress bar, writes `stress.csv` and `stress.md` into
+/// `args.out`, and returns the markdown.
+///
+/// # Errors
+/// Bad flags, unreadable meshes or unwritable outputs.
+pub fn run_command(args: &StressArgs) -> Result<String, StressError> {
+    let algorithms = args
+        .algorithms
+        .iter()
+        .map(|s| {
+            parse_algorithm(s)
+                .ok_or_else(|| StressError::Flag { flag: "--algorithms", reason: format!("unknown algorithm {s:?}") })
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let extra = |v: &Vec<f64>| if args.no_extra { vec![] } else { v.clone() };
+    let cells = grid(&GridAxes {
+        ratios: args.ratios.clone(),
+        frictions: args.frictions.clone(),
+        eps: args.eps.clone(),
+        strain_nu: extra(&args.strain_nu),
+        distortions: extra(&args.distortions),
+    });
+    let bar = progress_bar(cells.len(), args.quiet);
+    let tmp = std::env::temp_dir().join(format!("contact2d-stress-{}", std::process::id()));
+    let mut results = Vec::with_capacity(cells.len());
+    for cell in cells {
+        bar.set_message(format!("E2/E1 {:e} μ {} ε {:e}", cell.ratio, cell.mu, cell.eps));
+        results.push(run_stress_cell(&args.scenes, args.level, cell, &algorithms, args.seed, &tmp)?);
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    // Best effort: the temporary meshes are not needed any more.
+    let _ = std::fs::remove_dir_all(&tmp);
+    let file = |path: &Path, e: &dyn std::fmt::Display| StressError::File {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    };
+    std::fs::create_dir_all(&args.out).map_err(|e| file(&args.out, &e))?;
+    let md = report::markdown(&results, args.level);
+    for (name, text) in [("stress.csv", report::csv(&results)), ("stress.md", md.clone())] {
+        let path = args.out.join(name);
+        std::fs::write(&path, text).map_err(|e| file(&path, &e))?;
+    }
+    Ok(md)
+}
