@@ -1,5 +1,6 @@
 //! The `contact2d` command-line tool.
 
+use std::io::Write;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
@@ -74,10 +75,11 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 _ => anyhow::anyhow!("{}: {e}", file.display()),
             })?;
             let summary = contact2d::mesh_summary::summarize_mesh(&mesh);
+            let mut stdout = std::io::stdout().lock();
             if json {
-                println!("{}", serde_json::to_string_pretty(&summary)?);
+                writeln!(stdout, "{}", serde_json::to_string_pretty(&summary)?)?;
             } else {
-                println!("{}\n{summary}", file.display());
+                writeln!(stdout, "{}\n{summary}", file.display())?;
             }
         }
         Command::Run { scene, set, json, out } => {
@@ -92,19 +94,21 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 let path = dir.join("summary.json");
                 std::fs::write(&path, &text).map_err(|e| anyhow::anyhow!("cannot write {}: {e}", path.display()))?;
             }
+            let mut stdout = std::io::stdout().lock();
             if json {
-                println!("{text}");
+                writeln!(stdout, "{text}")?;
             } else {
-                print_report(&report);
+                print_report(&mut stdout, &report)?;
             }
         }
     }
     Ok(())
 }
 
-fn print_report(r: &contact2d::run::RunReport) {
+fn print_report(out: &mut impl Write, r: &contact2d::run::RunReport) -> std::io::Result<()> {
     let opt = |v: Option<f64>| v.map_or("-".to_string(), |x| format!("{x:.4}"));
-    println!(
+    writeln!(
+        out,
         "scene {}  ({} DOFs, {} pairs, {:?}, {} after {} iterations in {} step(s))",
         r.scene,
         r.dofs,
@@ -113,22 +117,29 @@ fn print_report(r: &contact2d::run::RunReport) {
         r.status,
         r.iterations,
         r.steps.len()
-    );
-    println!("  w      = {}   mu = {}", r.w, r.mu);
-    println!("  l      = {}   (bracket {:?}, master's own {})", opt(r.l), r.l_bracket, opt(r.l_master));
-    println!("  b      = {}   (bracket {:?})", opt(r.b), r.b_bracket);
-    println!("  P      = {:.5}   W = {:.6}", r.P, r.W);
-    println!("  Phi_E1 = {:.6}   Phi_E2 = {:.6}   Phi_f = {:.6}", r.Phi_E1, r.Phi_E2, r.Phi_f);
-    println!("  sigma* = {:.4}   K = {:.3}", r.sigma_star, r.K);
-    println!(
+    )?;
+    writeln!(out, "  w      = {}   mu = {}", r.w, r.mu)?;
+    writeln!(out, "  l      = {}   (bracket {:?}, master's own {})", opt(r.l), r.l_bracket, opt(r.l_master))?;
+    writeln!(out, "  b      = {}   (bracket {:?})", opt(r.b), r.b_bracket)?;
+    writeln!(out, "  P      = {:.5}   W = {:.6}", r.P, r.W)?;
+    writeln!(out, "  Phi_E1 = {:.6}   Phi_E2 = {:.6}   Phi_f = {:.6}", r.Phi_E1, r.Phi_E2, r.Phi_f)?;
+    writeln!(out, "  sigma* = {:.4}   K = {:.3}", r.sigma_star, r.K)?;
+    writeln!(
+        out,
         "  KKT: penetration {:.1e}, complementarity {:.1e}, cone {:.1e}, min dissipation {:.1e}",
         r.kkt.max_penetration, r.kkt.max_complementarity, r.kkt.max_cone_violation, r.kkt.min_dissipation
-    );
-    println!("  time {:.3} s (contact solve {:.4} s)", r.time_s, r.solve_time_s);
+    )?;
+    writeln!(out, "  time {:.3} s (contact solve {:.4} s)", r.time_s, r.solve_time_s)?;
+    Ok(())
 }
+
 fn main() -> ExitCode {
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
+        // A closed pipe (`contact2d run ... | head`) ends the output quietly.
+        Err(e) if e.downcast_ref::<std::io::Error>().is_some_and(|e| e.kind() == std::io::ErrorKind::BrokenPipe) => {
+            ExitCode::SUCCESS
+        }
         Err(e) => {
             eprintln!("error: {e:#}");
             ExitCode::FAILURE

@@ -117,3 +117,19 @@ fn bad_override_values_name_the_key_and_the_override() {
         .unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
 }
+
+#[test]
+fn a_closed_stdout_ends_quietly_without_a_panic() {
+    // `contact2d mesh big.msh --json | head -1`: the reader goes away before the output is written.
+    use std::process::Stdio;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_contact2d"))
+        .args(["mesh", "meshes/plate_insert/plate_insert_eps0_N64.msh", "--json"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success() && !stderr.contains("panicked"), "{:?} {stderr}", out.status);
+}
