@@ -84,6 +84,10 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         }
         Command::Run { scene, set, json, out } => {
             let scene = contact2d::scene::Scene::load(&scene, &set)?;
+            // A mesh that cannot be read is reported by the run below, with the scene.
+            if let Ok(mesh) = contact2d::mesh::read_msh(scene.mesh_path()) {
+                scene.check_mesh_geometry(&mesh)?;
+            }
             // Set-up failures past the scene checks concern the mesh: name both files.
             let report = contact2d::run::run_scene(&scene).map_err(|e| {
                 anyhow::anyhow!("scene {}, mesh {}: {e}", scene.file.display(), scene.mesh_path().display())

@@ -410,6 +410,50 @@ impl Scene {
         }
     }
 
+    /// Checks that `mesh` has the geometry the scene's `eps` describes: the hole edge on the
+    /// circle of radius 1 about the origin and the insert edge on the circle of radius 1 − ε
+    /// about (−ε, 0), each node within 1e-6 (the bundled meshes are exact to 1e-15). A
+    /// missing group is left to the run, which reports it.
+    ///
+    /// # Errors
+    /// [`SceneError::Value`] on `plate_insert.eps`, with the ε the mesh was made for.
+    pub fn check_mesh_geometry(&self, mesh: &contact2d_mesh::Mesh) -> Result<(), SceneError> {
+        let eps = self.plate_insert.eps;
+        let off_circle = |group: &str, centre: f64, radius: f64| {
+            mesh.group_nodes(group).ok().and_then(|nodes| {
+                nodes.iter().map(|v| mesh.points[v.0]).find(|x| ((x[0] - centre).hypot(x[1]) - radius).abs() > 1e-6)
+            })
+        };
+        if let Some(x) = off_circle("hole_edge", 0.0, 1.0) {
+            return Err(SceneError::Value {
+                path: self.file.display().to_string(),
+                key: "plate_insert.mesh".into(),
+                reason: format!(
+                    "the hole edge must be the circle of radius 1 about the origin; node ({}, {}) is not on it",
+                    x[0], x[1]
+                ),
+            });
+        }
+        if off_circle("insert_edge", -eps, 1.0 - eps).is_some() {
+            // The insert's rightmost point is at x1 = 1 − 2ε whatever ε (its leftmost at −1).
+            let right = mesh
+                .group_nodes("insert_edge")
+                .map(|nodes| nodes.iter().map(|v| mesh.points[v.0][0]).fold(f64::NEG_INFINITY, f64::max))
+                .unwrap_or(f64::NAN);
+            return Err(SceneError::Value {
+                path: self.file.display().to_string(),
+                key: "plate_insert.eps".into(),
+                reason: format!(
+                    "{eps} does not match the mesh {}: its insert edge is not the circle of radius 1 − ε about \
+                     (−ε, 0) (it reaches x1 = {right:.6}, which suggests eps = {:.6})",
+                    self.mesh_path().display(),
+                    (1.0 - right) / 2.0
+                ),
+            });
+        }
+        Ok(())
+    }
+
     /// The mesh path resolved against the scene file's directory.
     pub fn mesh_path(&self) -> PathBuf {
         self.base_dir.join(&self.plate_insert.mesh)

@@ -97,3 +97,20 @@ fn file_errors_give_the_line_and_the_key() {
     let e = Scene::load(&dir.join("bad.toml"), &[]).unwrap_err().to_string();
     assert!(e.contains("UTF-8") && e.contains("bad.toml"), "{e}");
 }
+
+#[test]
+fn the_mesh_must_have_the_scenes_eps() {
+    // The bundled meshes are made for eps = 0 and 0.05 (meshes/README.md): their insert edges
+    // are circles of radius 1 − eps about (−eps, 0) to 2e-16.
+    let neat = contact2d::mesh::read_msh("meshes/plate_insert/plate_insert_eps0_N16.msh").unwrap();
+    let gap = contact2d::mesh::read_msh("meshes/plate_insert/plate_insert_eps0.05_N16.msh").unwrap();
+    let with_eps = |eps: &str| check(&[&format!("plate_insert.eps={eps}")]).unwrap();
+    with_eps("0").check_mesh_geometry(&neat).unwrap();
+    with_eps("0.05").check_mesh_geometry(&gap).unwrap();
+    for (scene, mesh) in [(with_eps("0.05"), &neat), (with_eps("0"), &gap), (with_eps("0.04"), &gap)] {
+        match scene.check_mesh_geometry(mesh) {
+            Err(SceneError::Value { key, .. }) => assert_eq!(key, "plate_insert.eps"),
+            other => panic!("expected a value error, got {other:?}"),
+        }
+    }
+}
