@@ -26,6 +26,10 @@
 //!
 //! Unknown keys are errors. `--set key.path=value` sets any value (also one the file leaves at its
 //! default) before the scene is checked (the value is parsed as TOML, falling back to a string).
+//! Then [`Scene::validate`] checks every range and the combinations that contradict each other,
+//! and [`Scene::check_mesh_geometry`] that the mesh is the one ε describes. Every error names the
+//! file and the line (syntax, types), the dotted key (values) or the override at fault; the keys,
+//! units and defaults are tabulated in `docs/user-guide.md`.
 
 use std::path::{Path, PathBuf};
 
