@@ -1,25 +1,49 @@
 //! The `contact2d` command-line tool.
 
+use std::io::Write;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
 /// 2D finite-element contact mechanics with Coulomb friction.
 #[derive(Debug, Parser)]
-#[command(name = "contact2d", version, about, long_about = None)]
+#[command(name = "contact2d", version, about, long_about = None, after_help = TOP_EXAMPLES)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
 }
 
+const TOP_EXAMPLES: &str = "\
+Examples:
+  contact2d run scenes/plate_insert_nogap_mu0.toml
+  contact2d mesh meshes/plate_insert/plate_insert_eps0_N32.msh
+
+Errors print one line naming the file and the key, line or byte at fault, and exit with status 1
+(2 for a malformed command line). Guide: docs/user-guide.md; walk-through: docs/tutorial.md.";
+
+const MESH_EXAMPLES: &str = "\
+Examples:
+  contact2d mesh meshes/plate_insert/plate_insert_eps0_N32.msh
+  contact2d mesh meshes/plate_insert/plate_insert_eps0_N32.msh --json
+  contact2d mesh meshes/fixtures/plate_hole_v22_bin.msh";
+
+const RUN_EXAMPLES: &str = "\
+Examples:
+  contact2d run scenes/plate_insert_nogap_mu0.toml
+  contact2d run scenes/plate_insert_nogap_mu03.toml --set plate_insert.friction=0.6
+  contact2d run scenes/plate_insert_gap_v2_mu0.toml --set solver.algorithm=clarabel --json
+  contact2d run scenes/plate_insert_nogap_mu0.toml --set plate_insert.stiffness_ratio=0.5 --out out/soft
+  contact2d run scenes/plate_insert_nogap_mu03.toml --set plate_insert.rigid_insert=true
+  contact2d run scenes/plate_insert_nogap_mu03.toml --set solver.algorithm=boussinesq -v
+  contact2d run scenes/plate_insert_history_v1.toml --out out/history
+
+--set takes a dotted key and a TOML value (a bare word is read as a string); it may set a key the
+file leaves at its default. The scene keys are listed in docs/user-guide.md.";
+
 #[derive(Debug, Subcommand)]
 enum Command {
     /// Summarise a Gmsh .msh file: nodes, elements by type, physical groups, bounding box, quality.
-    ///
-    /// Examples:
-    ///   contact2d mesh meshes/plate_insert/plate_insert_eps0_N32.msh
-    ///   contact2d mesh meshes/plate_insert/plate_insert_eps0_N32.msh --json
-    #[command(verbatim_doc_comment)]
+    #[command(after_help = MESH_EXAMPLES)]
     Mesh {
         /// The .msh file (MSH 2.2 or 4.1, ASCII or binary).
         file: std::path::PathBuf,
@@ -28,12 +52,7 @@ enum Command {
         json: bool,
     },
     /// Run a scene (TOML) and report the paper's quantities.
-    ///
-    /// Examples:
-    ///   contact2d run scenes/plate_insert_nogap_mu0.toml
-    ///   contact2d run scenes/plate_insert_gap_v2_mu0.toml --set solver.algorithm=clarabel --json
-    ///   contact2d run scenes/plate_insert_nogap_mu0.toml --set plate_insert.stiffness_ratio=0.5 --out out/soft
-    #[command(verbatim_doc_comment)]
+    #[command(after_help = RUN_EXAMPLES)]
     Run {
         /// The scene file.
         scene: std::path::PathBuf,
@@ -112,25 +131,34 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 _ => anyhow::anyhow!("{}: {e}", file.display()),
             })?;
             let summary = contact2d::mesh_summary::summarize_mesh(&mesh);
+            let mut stdout = std::io::stdout().lock();
             if json {
-                println!("{}", serde_json::to_string_pretty(&summary)?);
+                writeln!(stdout, "{}", serde_json::to_string_pretty(&summary)?)?;
             } else {
-                println!("{}\n{summary}", file.display());
+                writeln!(stdout, "{}\n{summary}", file.display())?;
             }
         }
         Command::Run { scene, set, json, out, quiet, verbose } => {
             let scene = contact2d::scene::Scene::load(&scene, &set)?;
+            // A mesh that cannot be read is reported by the run below, with the scene.
+            if let Ok(mesh) = contact2d::mesh::read_msh(scene.mesh_path()) {
+                scene.check_mesh_geometry(&mesh)?;
+            }
             let mut bar = StepBar::new(quiet || json);
-            let outcome = contact2d::run::solve_scene_with(&scene, &mut bar)?;
+            // Set-up failures past the scene checks concern the mesh: name both files.
+            let outcome = contact2d::run::solve_scene_with(&scene, &mut bar).map_err(|e| {
+                anyhow::anyhow!("scene {}, mesh {}: {e}", scene.file.display(), scene.mesh_path().display())
+            })?;
             bar.finish();
             if verbose {
                 print_iterations(&outcome);
             }
             let report = &outcome.report;
+            let mut stdout = std::io::stdout().lock();
             if json {
-                println!("{}", serde_json::to_string_pretty(report)?);
+                writeln!(stdout, "{}", serde_json::to_string_pretty(report)?)?;
             } else {
-                print_report(report);
+                print_report(&mut stdout, report)?;
             }
             if let Some(dir) = out {
                 let written = contact2d::output::write_outputs(&dir, &scene, &outcome)?;
@@ -138,12 +166,16 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 let list = |p: &std::path::PathBuf| format!("  {}", p.display());
                 let lines: Vec<String> = written.iter().map(list).collect();
                 let text = format!("wrote {} files:\n{}", written.len(), lines.join("\n"));
-                if json { eprintln!("{text}") } else { println!("{text}") }
+                if json {
+                    eprintln!("{text}");
+                } else {
+                    writeln!(stdout, "{text}")?;
+                }
             }
         }
         Command::Sweep { scene, vary, set, plot, out, quiet } => sweep(&scene, &vary, &set, &plot, out, quiet)?,
-        Command::Bench(args) => println!("{}", contact2d::bench::run_command(&args)?),
-        Command::Stress(args) => println!("{}", contact2d::stress::run_command(&args)?),
+        Command::Bench(args) => writeln!(std::io::stdout().lock(), "{}", contact2d::bench::run_command(&args)?)?,
+        Command::Stress(args) => writeln!(std::io::stdout().lock(), "{}", contact2d::stress::run_command(&args)?)?,
     }
     Ok(())
 }
@@ -176,20 +208,22 @@ fn sweep(
     let rows = run_sweep(scene, &variations, set, || bar.inc(1));
     bar.finish_and_clear();
     let written = write_sweep(&dir, &base.name, &variations, &rows, &plots)?;
+    let mut stdout = std::io::stdout().lock();
     if !quiet {
-        print!("{}", sweep_markdown(&variations, &rows));
+        write!(stdout, "{}", sweep_markdown(&variations, &rows))?;
     }
     let failed = rows.iter().filter(|r| r.result.is_err()).count();
-    println!("{} runs ({failed} failed); wrote {} files:", rows.len(), written.len());
+    writeln!(stdout, "{} runs ({failed} failed); wrote {} files:", rows.len(), written.len())?;
     for p in &written {
-        println!("  {}", p.display());
+        writeln!(stdout, "  {}", p.display())?;
     }
     Ok(())
 }
 
-fn print_report(r: &contact2d::run::RunReport) {
+fn print_report(out: &mut impl Write, r: &contact2d::run::RunReport) -> std::io::Result<()> {
     let opt = |v: Option<f64>| v.map_or("-".to_string(), |x| format!("{x:.4}"));
-    println!(
+    writeln!(
+        out,
         "scene {}  ({} DOFs, {} pairs, {:?}, {} after {} iterations in {} step(s))",
         r.scene,
         r.dofs,
@@ -198,18 +232,20 @@ fn print_report(r: &contact2d::run::RunReport) {
         r.status,
         r.iterations,
         r.steps.len()
-    );
-    println!("  w      = {}   mu = {}", r.w, r.mu);
-    println!("  l      = {}   (bracket {:?}, master's own {})", opt(r.l), r.l_bracket, opt(r.l_master));
-    println!("  b      = {}   (bracket {:?})", opt(r.b), r.b_bracket);
-    println!("  P      = {:.5}   W = {:.6}", r.P, r.W);
-    println!("  Phi_E1 = {:.6}   Phi_E2 = {:.6}   Phi_f = {:.6}", r.Phi_E1, r.Phi_E2, r.Phi_f);
-    println!("  sigma* = {:.4}   K = {:.3}", r.sigma_star, r.K);
-    println!(
+    )?;
+    writeln!(out, "  w      = {}   mu = {}", r.w, r.mu)?;
+    writeln!(out, "  l      = {}   (bracket {:?}, master's own {})", opt(r.l), r.l_bracket, opt(r.l_master))?;
+    writeln!(out, "  b      = {}   (bracket {:?})", opt(r.b), r.b_bracket)?;
+    writeln!(out, "  P      = {:.5}   W = {:.6}", r.P, r.W)?;
+    writeln!(out, "  Phi_E1 = {:.6}   Phi_E2 = {:.6}   Phi_f = {:.6}", r.Phi_E1, r.Phi_E2, r.Phi_f)?;
+    writeln!(out, "  sigma* = {:.4}   K = {:.3}", r.sigma_star, r.K)?;
+    writeln!(
+        out,
         "  KKT: penetration {:.1e}, complementarity {:.1e}, cone {:.1e}, min dissipation {:.1e}",
         r.kkt.max_penetration, r.kkt.max_complementarity, r.kkt.max_cone_violation, r.kkt.min_dissipation
-    );
-    println!("  time {:.3} s (contact solve {:.4} s)", r.time_s, r.solve_time_s);
+    )?;
+    writeln!(out, "  time {:.3} s (contact solve {:.4} s)", r.time_s, r.solve_time_s)?;
+    Ok(())
 }
 /// The iteration log of every step (`run -v`), on stderr so that `--json` stays parseable.
 fn print_iterations(outcome: &contact2d::run::RunOutcome) {
@@ -262,6 +298,10 @@ impl contact2d::run::Progress for StepBar {
 fn main() -> ExitCode {
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
+        // A closed pipe (`contact2d run ... | head`) ends the output quietly.
+        Err(e) if e.downcast_ref::<std::io::Error>().is_some_and(|e| e.kind() == std::io::ErrorKind::BrokenPipe) => {
+            ExitCode::SUCCESS
+        }
         Err(e) => {
             eprintln!("error: {e:#}");
             ExitCode::FAILURE

@@ -28,6 +28,10 @@
 //!
 //! Unknown keys are errors. `--set key.path=value` sets any value (also one the file leaves at its
 //! default) before the scene is checked (the value is parsed as TOML, falling back to a string).
+//! Then [`Scene::validate`] checks every range and the combinations that contradict each other,
+//! and [`Scene::check_mesh_geometry`] that the mesh is the one ε describes. Every error names the
+//! file and the line (syntax, types), the dotted key (values) or the override at fault; the keys,
+//! units and defaults are tabulated in `docs/user-guide.md`.
 
 use std::path::{Path, PathBuf};
 
@@ -55,6 +59,16 @@ pub enum SceneError {
         /// Path as given.
         path: String,
         /// What is wrong (with the key or line).
+        reason: String,
+    },
+    /// A value out of its range, or two values that contradict each other.
+    #[error("scene {path}: {key}: {reason}")]
+    Value {
+        /// Path as given.
+        path: String,
+        /// The dotted key at fault.
+        key: String,
+        /// What is wrong.
         reason: String,
     },
     /// A `--set` override that does not parse or names no key.
@@ -228,33 +242,185 @@ pub struct Scene {
     /// Directory of the scene file (mesh paths are relative to it).
     #[serde(skip)]
     pub base_dir: PathBuf,
+    /// The scene file as given (named in errors).
+    #[serde(skip)]
+    pub file: PathBuf,
 }
 
 impl Scene {
-    /// Reads `path`, applies `overrides` (`key.path=value`), and checks the result.
+    /// Reads `path`, applies `overrides` (`key.path=value`), and checks the result
+    /// ([`Scene::from_toml_str`] on the file's text).
     ///
     /// # Errors
-    /// [`SceneError`] naming the file, key or override.
+    /// [`SceneError`] naming the file, and the key, line or override at fault.
     pub fn load(path: &Path, overrides: &[String]) -> Result<Scene, SceneError> {
         let shown = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io { path: shown.clone(), source })?;
-        let mut value: toml::Value =
-            toml::from_str(&text).map_err(|e| SceneError::Invalid { path: shown.clone(), reason: e.to_string() })?;
+        let bytes = std::fs::read(path).map_err(|source| SceneError::Io { path: shown.clone(), source })?;
+        let text = String::from_utf8(bytes).map_err(|e| SceneError::Invalid {
+            path: shown.clone(),
+            reason: format!("not UTF-8 text (invalid byte at offset {})", e.utf8_error().valid_up_to()),
+        })?;
+        Scene::from_toml_str(&text, path, overrides)
+    }
+
+    /// Parses a scene from TOML `text` as if read from the file `path` (named in errors; its
+    /// directory resolves the mesh path), applies `overrides` and checks the values
+    /// ([`Scene::validate`]). Nothing is read from disk.
+    ///
+    /// # Errors
+    /// [`SceneError::Invalid`] for TOML syntax, unknown keys and wrong types (with the line when
+    /// the file itself is at fault, with the dotted key otherwise), [`SceneError::Override`] for a
+    /// malformed `--set`, [`SceneError::Value`] for a value out of range or contradicting another.
+    ///
+    /// # Examples
+    /// ```
+    /// use contact2d::scene::Scene;
+    /// let text = "name = \"t\"\n[plate_insert]\nmesh = \"m.msh\"\nvariant = \"hole_master\"\n\
+    ///             load = 1.0\n[solver]\nalgorithm = \"active_set\"\n";
+    /// let path = std::path::Path::new("scenes/t.toml");
+    /// let scene = Scene::from_toml_str(text, path, &["plate_insert.friction=0.3".into()]).unwrap();
+    /// assert_eq!(scene.plate_insert.friction, 0.3);
+    /// assert!(Scene::from_toml_str(text, path, &["plate_insert.poissons_ratio=0.5".into()]).is_err());
+    /// ```
+    pub fn from_toml_str(text: &str, path: &Path, overrides: &[String]) -> Result<Scene, SceneError> {
+        let shown = path.display().to_string();
+        let invalid = |reason: String| SceneError::Invalid { path: shown.clone(), reason };
+        let mut value: toml::Value = toml::from_str(text).map_err(|e| invalid(spanned_reason(text, &e)))?;
         for assignment in overrides {
             apply_override(&mut value, assignment)?;
         }
-        let mut scene: Scene = value
-            .try_into()
-            .map_err(|e: toml::de::Error| SceneError::Invalid { path: shown.clone(), reason: e.to_string() })?;
+        let mut scene: Scene = match value.try_into() {
+            Ok(scene) => scene,
+            Err(e) => {
+                let e: toml::de::Error = e;
+                let shown_error = e.to_string();
+                let key =
+                    shown_error.rsplit_once("\nin `").map(|(_, k)| k.trim_end().trim_end_matches('`').to_string());
+                let at = key.map_or(String::new(), |k| format!("{k}: "));
+                // Without overrides the text itself is at fault: give its line too.
+                return Err(invalid(match (overrides.is_empty(), toml::from_str::<Scene>(text)) {
+                    (true, Err(spanned)) if spanned.message() == e.message() => {
+                        format!("{}{at}{}", line_of(text, &spanned), e.message())
+                    }
+                    (true, _) => format!("{at}{}", e.message()),
+                    (false, _) => format!("{at}{} (after the --set overrides)", e.message()),
+                }));
+            }
+        };
+        scene.file = path.to_path_buf();
         scene.base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        scene.validate()?;
         Ok(scene)
+    }
+
+    /// Checks every value's range and the combinations that contradict each other (see
+    /// `docs/user-guide.md`, "Scene keys"):
+    ///
+    /// * ranges: w, μ, ε, c finite and ≥ 0, ε < 1, E2/E1 finite and > 0, ν in (−1, 0.5),
+    ///   1 ≤ steps ≤ 100 000, max_iterations ≥ 1, each l in l_steps in (0, 1) and increasing;
+    /// * contradictions: c > 0 with ε = 0 (a neat-fit mesh has no room for a clearance),
+    ///   l_steps with an algorithm other than `boussinesq`, l_steps with steps ≠ 1 or load ≠ 0
+    ///   (the loads then follow from l), rigid_insert with stiffness_ratio ≠ 1 (a rigid insert
+    ///   has no modulus) or with variant `insert_master` (the rigid contour must be the slave).
+    ///
+    /// # Errors
+    /// [`SceneError::Value`] naming the first key at fault.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        let fail = |key: &str, reason: String| SceneError::Value {
+            path: self.file.display().to_string(),
+            key: key.to_string(),
+            reason,
+        };
+        let p = &self.plate_insert;
+        let non_negative = |key: &str, v: f64| {
+            if v.is_finite() && v >= 0.0 { Ok(()) } else { Err(fail(key, format!("{v} must be finite and ≥ 0"))) }
+        };
+        non_negative("plate_insert.load", p.load)?;
+        non_negative("plate_insert.friction", p.friction)?;
+        non_negative("plate_insert.eps", p.eps)?;
+        non_negative("plate_insert.clearance", p.clearance)?;
+        if p.eps >= 1.0 {
+            return Err(fail("plate_insert.eps", format!("{} must be < 1 (the insert radius is 1 − ε)", p.eps)));
+        }
+        if !(p.stiffness_ratio.is_finite() && p.stiffness_ratio > 0.0) {
+            return Err(fail(
+                "plate_insert.stiffness_ratio",
+                format!("E2/E1 = {} must be finite and > 0", p.stiffness_ratio),
+            ));
+        }
+        if !(p.poissons_ratio > -1.0 && p.poissons_ratio < 0.5) {
+            return Err(fail("plate_insert.poissons_ratio", format!("ν = {} must lie in (−1, 0.5)", p.poissons_ratio)));
+        }
+        if !(1..=MAX_STEPS).contains(&p.steps) {
+            return Err(fail("plate_insert.steps", format!("{} must lie in 1 ..= {MAX_STEPS}", p.steps)));
+        }
+        if self.solver.max_iterations == 0 {
+            return Err(fail("solver.max_iterations", "must be at least 1".into()));
+        }
+        if p.clearance > 0.0 && p.eps == 0.0 {
+            return Err(fail(
+                "plate_insert.clearance",
+                format!("c = {} needs a mesh with a clearance (eps > 0); eps = 0 is a neat fit", p.clearance),
+            ));
+        }
+        if p.rigid_insert && p.stiffness_ratio != 1.0 {
+            return Err(fail(
+                "plate_insert.stiffness_ratio",
+                format!("{} is meaningless with rigid_insert = true (remove it or set 1)", p.stiffness_ratio),
+            ));
+        }
+        if p.rigid_insert && p.variant == VariantKey::InsertMaster {
+            return Err(fail(
+                "plate_insert.variant",
+                "rigid_insert = true needs variant = \"hole_master\" (the rigid contour is the slave)".into(),
+            ));
+        }
+        self.validate_l_steps()
+    }
+
+    fn validate_l_steps(&self) -> Result<(), SceneError> {
+        let p = &self.plate_insert;
+        if p.l_steps.is_empty() {
+            return Ok(());
+        }
+        let fail = |key: &str, reason: String| SceneError::Value {
+            path: self.file.display().to_string(),
+            key: key.to_string(),
+            reason,
+        };
+        if self.solver.algorithm != ContactAlgorithm::Boussinesq {
+            return Err(fail(
+                "plate_insert.l_steps",
+                "needs solver.algorithm = \"boussinesq\" (the paper's algorithm steps in l)".into(),
+            ));
+        }
+        if p.steps != 1 {
+            return Err(fail("plate_insert.steps", "must be left at 1 with l_steps (one step per l)".into()));
+        }
+        if p.load != 0.0 {
+            return Err(fail(
+                "plate_insert.load",
+                "must be 0 with l_steps (the load of each step follows from l)".into(),
+            ));
+        }
+        let mut previous = 0.0;
+        for (i, &l) in p.l_steps.iter().enumerate() {
+            if !(l > previous && l < 1.0) {
+                return Err(fail(
+                    &format!("plate_insert.l_steps[{i}]"),
+                    format!("{l}: the contact ends must increase strictly within (0, 1)"),
+                ));
+            }
+            previous = l;
+        }
+        Ok(())
     }
 
     /// The flagship parameters with the mesh path resolved.
     pub fn plate_insert(&self) -> PlateInsert {
         let p = &self.plate_insert;
         PlateInsert {
-            mesh: self.base_dir.join(&p.mesh).display().to_string(),
+            mesh: self.mesh_path().display().to_string(),
             stiffness_ratio: p.stiffness_ratio,
             rigid_insert: p.rigid_insert,
             poissons_ratio: p.poissons_ratio,
@@ -280,6 +446,73 @@ impl Scene {
             placed_nodes: vec![],
         }
     }
+
+    /// Checks that `mesh` has the geometry the scene's `eps` describes: the hole edge on the
+    /// circle of radius 1 about the origin and the insert edge on the circle of radius 1 − ε
+    /// about (−ε, 0), each node within 1e-6 (the bundled meshes are exact to 1e-15). A
+    /// missing group is left to the run, which reports it.
+    ///
+    /// # Errors
+    /// [`SceneError::Value`] on `plate_insert.eps`, with the ε the mesh was made for.
+    pub fn check_mesh_geometry(&self, mesh: &contact2d_mesh::Mesh) -> Result<(), SceneError> {
+        let eps = self.plate_insert.eps;
+        let off_circle = |group: &str, centre: f64, radius: f64| {
+            mesh.group_nodes(group).ok().and_then(|nodes| {
+                nodes.iter().map(|v| mesh.points[v.0]).find(|x| ((x[0] - centre).hypot(x[1]) - radius).abs() > 1e-6)
+            })
+        };
+        if let Some(x) = off_circle("hole_edge", 0.0, 1.0) {
+            return Err(SceneError::Value {
+                path: self.file.display().to_string(),
+                key: "plate_insert.mesh".into(),
+                reason: format!(
+                    "the hole edge must be the circle of radius 1 about the origin; node ({}, {}) is not on it",
+                    x[0], x[1]
+                ),
+            });
+        }
+        if off_circle("insert_edge", -eps, 1.0 - eps).is_some() {
+            // The insert's rightmost point is at x1 = 1 − 2ε whatever ε (its leftmost at −1).
+            let right = mesh
+                .group_nodes("insert_edge")
+                .map(|nodes| nodes.iter().map(|v| mesh.points[v.0][0]).fold(f64::NEG_INFINITY, f64::max))
+                .unwrap_or(f64::NAN);
+            return Err(SceneError::Value {
+                path: self.file.display().to_string(),
+                key: "plate_insert.eps".into(),
+                reason: format!(
+                    "{eps} does not match the mesh {}: its insert edge is not the circle of radius 1 − ε about \
+                     (−ε, 0) (it reaches x1 = {right:.6}, which suggests eps = {:.6})",
+                    self.mesh_path().display(),
+                    (1.0 - right) / 2.0
+                ),
+            });
+        }
+        Ok(())
+    }
+
+    /// The mesh path resolved against the scene file's directory.
+    pub fn mesh_path(&self) -> PathBuf {
+        self.base_dir.join(&self.plate_insert.mesh)
+    }
+}
+
+/// The largest number of load steps a scene may ask for.
+pub const MAX_STEPS: usize = 100_000;
+
+/// "line L, column C: message" of a TOML error with a span.
+fn spanned_reason(text: &str, e: &toml::de::Error) -> String {
+    format!("{}{}", line_of(text, e), e.message())
+}
+
+/// "line L, column C: " of an error's span in `text` (empty without a span).
+fn line_of(text: &str, e: &toml::de::Error) -> String {
+    e.span().map_or(String::new(), |span| {
+        let before = text.get(..span.start).unwrap_or(text);
+        let line = before.matches('\n').count() + 1;
+        let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        format!("line {line}, column {column}: ")
+    })
 }
 
 /// Sets `a.b.c = value` in a TOML tree; the key must exist (unknown keys are errors).

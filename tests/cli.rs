@@ -72,3 +72,64 @@ fn unknown_scene_keys_and_overrides_are_clear_errors() {
     let (ok, _, stderr) = contact2d(&["run", "scenes/plate_insert_nogap_mu0.toml", "--set", "solver.algorithm=magic"]);
     assert!(!ok && stderr.contains("magic"), "{stderr}");
 }
+
+#[test]
+fn every_subcommand_has_help_with_examples() {
+    for args in [&["--help"][..], &["mesh", "--help"], &["run", "--help"], &["help", "run"]] {
+        let (ok, stdout, _) = contact2d(args);
+        assert!(ok, "{args:?}");
+        assert!(stdout.contains("Examples:") && stdout.contains("contact2d "), "{args:?}: {stdout}");
+    }
+    let (_, stdout, _) = contact2d(&["run", "--help"]);
+    assert!(stdout.contains("--set") && stdout.contains("scenes/"), "{stdout}");
+}
+
+#[test]
+fn a_malformed_command_line_exits_with_status_2() {
+    let out = Command::new(env!("CARGO_BIN_EXE_contact2d")).args(["run"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let out = Command::new(env!("CARGO_BIN_EXE_contact2d")).args(["frobnicate"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn bad_override_values_name_the_key_and_the_override() {
+    for (set, key) in [
+        ("plate_insert.load=abc", "plate_insert.load"),
+        ("plate_insert.poissons_ratio=0.5", "plate_insert.poissons_ratio"),
+        ("plate_insert.friction=-1", "plate_insert.friction"),
+        ("plate_insert.l_steps=[0.1]", "plate_insert.l_steps"),
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_contact2d"))
+            .args(["run", "scenes/plate_insert_nogap_mu0.toml", "--set", set])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{set}");
+        assert!(stderr.contains(key) && stderr.contains("plate_insert_nogap_mu0.toml"), "{set}: {stderr}");
+        assert!(!stderr.contains("panicked") && stderr.trim().lines().count() == 1, "{stderr}");
+    }
+    // A rigid insert on a scene that states stiffness_ratio = 1.0 is not a contradiction.
+    let out = Command::new(env!("CARGO_BIN_EXE_contact2d"))
+        .args(["run", "scenes/plate_insert_nogap_mu0.toml", "--set", "plate_insert.rigid_insert=true"])
+        .args(["--set", "plate_insert.mesh=\"../meshes/plate_insert/plate_insert_eps0_N16.msh\"", "--json"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+#[test]
+fn a_closed_stdout_ends_quietly_without_a_panic() {
+    // `contact2d mesh big.msh --json | head -1`: the reader goes away before the output is written.
+    use std::process::Stdio;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_contact2d"))
+        .args(["mesh", "meshes/plate_insert/plate_insert_eps0_N64.msh", "--json"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success() && !stderr.contains("panicked"), "{:?} {stderr}", out.status);
+}

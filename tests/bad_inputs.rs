@@ -1,0 +1,62 @@
+//! The bad-input corpus (`tests/bad_inputs/`): every malformed mesh and scene there fails through
+//! the command line with the error recorded in `tests/bad_inputs/expected.toml`: the expected
+//! exit status, one line on stderr naming the file and containing the recorded substrings
+//! (the line, byte or key at fault), and no panic.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use std::path::Path;
+use std::process::Command;
+
+use serde::Deserialize;
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct Expected {
+    command: String,
+    exit: i32,
+    stderr: Vec<String>,
+    #[allow(dead_code)]
+    why: String,
+}
+
+#[test]
+fn every_bad_input_fails_with_its_recorded_error() {
+    let dir = Path::new("tests/bad_inputs");
+    let text = std::fs::read_to_string(dir.join("expected.toml")).unwrap();
+    let expected: std::collections::BTreeMap<String, Expected> = toml::from_str(&text).unwrap();
+    // Every file of the corpus has an entry, and every entry a file.
+    let mut files: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|f| (f.ends_with(".msh") || f.ends_with(".toml")) && f != "expected.toml")
+        .collect();
+    files.sort();
+    assert_eq!(files, expected.keys().cloned().collect::<Vec<_>>(), "corpus and expected.toml differ");
+    let mut failures = vec![];
+    for (file, want) in &expected {
+        let path = dir.join(file);
+        let out = Command::new(env!("CARGO_BIN_EXE_contact2d")).arg(&want.command).arg(&path).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        let code = out.status.code();
+        let mut wrong = vec![];
+        if code != Some(want.exit) {
+            wrong.push(format!("exit {code:?}, expected {}", want.exit));
+        }
+        if stderr.contains("panicked") {
+            wrong.push("panicked".into());
+        }
+        if want.exit != 0 {
+            if stderr.trim().lines().count() != 1 {
+                wrong.push("not one line".into());
+            }
+            if !stderr.contains(&path.display().to_string()) {
+                wrong.push("does not name the file".into());
+            }
+            wrong.extend(want.stderr.iter().filter(|s| !stderr.contains(s.as_str())).map(|s| format!("lacks {s:?}")));
+        }
+        if !wrong.is_empty() {
+            failures.push(format!("{file}: {} — stderr: {}", wrong.join(", "), stderr.trim()));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
