@@ -241,10 +241,17 @@ fn print_report(out: &mut impl Write, r: &contact2d::run::RunReport) -> std::io:
     writeln!(out, "  sigma* = {:.4}   K = {:.3}", r.sigma_star, r.K)?;
     writeln!(
         out,
-        "  KKT: penetration {:.1e}, complementarity {:.1e}, cone {:.1e}, min dissipation {:.1e}",
-        r.kkt.max_penetration, r.kkt.max_complementarity, r.kkt.max_cone_violation, r.kkt.min_dissipation
+        "  KKT: penetration {:.1e}, complementarity {:.1e}, cone {:.1e}, slip inside cone {:.1e}, min dissipation {:.1e}",
+        r.kkt.max_penetration,
+        r.kkt.max_complementarity,
+        r.kkt.max_cone_violation,
+        r.kkt.max_slip_inside_cone,
+        r.kkt.min_dissipation
     )?;
     writeln!(out, "  time {:.3} s (contact solve {:.4} s)", r.time_s, r.solve_time_s)?;
+    for v in &r.violations {
+        writeln!(out, "  violated at step {}, pair {} (η = {:.4}): {}", v.step, v.pair, v.eta, v.condition)?;
+    }
     Ok(())
 }
 /// The iteration log of every step (`run -v`), on stderr so that `--json` stays parseable.

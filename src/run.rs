@@ -49,6 +49,8 @@ pub struct KktReport {
     pub max_cone_violation: f64,
     /// Smallest dissipation τ·Δslip over slipping pairs (0 without friction).
     pub min_dissipation: f64,
+    /// Friction complementarity (dimensionless): a pair inside the cone that slips.
+    pub max_slip_inside_cone: f64,
 }
 
 /// The summary of one run (the `--json` object).
@@ -106,6 +108,21 @@ pub struct RunReport {
     pub time_s: f64,
     /// Wall time of the contact algorithm alone, seconds.
     pub solve_time_s: f64,
+    /// Inequalities of (5.1) a step violates (status `inadmissible`); empty when admissible.
+    pub violations: Vec<ViolationReport>,
+}
+
+/// A violated contact inequality in the JSON output.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ViolationReport {
+    /// The step (from 1).
+    pub step: usize,
+    /// The pair's index.
+    pub pair: usize,
+    /// η = 1 − φ/π of the pair on the hole edge.
+    pub eta: f64,
+    /// The condition that fails.
+    pub condition: String,
 }
 
 /// One step of a history in the JSON output.
@@ -328,12 +345,32 @@ fn summarise(scene: &Scene, solved: &[SolvedStep], start: Instant) -> Result<Run
             max_penetration: solution.kkt.max_penetration,
             max_complementarity: solution.kkt.max_complementarity,
             max_cone_violation: solution.kkt.max_cone_violation,
+            max_slip_inside_cone: solution.kkt.max_slip_inside_cone,
             min_dissipation: solved.iter().map(|s| s.solution.kkt.min_dissipation).fold(f64::INFINITY, f64::min),
         },
         steps,
         time_s: start.elapsed().as_secs_f64(),
         solve_time_s: solved.iter().map(|s| s.solution.time.as_secs_f64()).sum(),
+        violations: violations(solved),
     })
+}
+
+/// Every violated inequality of every step, with the pair's η on the hole edge.
+fn violations(solved: &[SolvedStep]) -> Vec<ViolationReport> {
+    let mut all = vec![];
+    for (i, step) in solved.iter().enumerate() {
+        if step.solution.violations.is_empty() {
+            continue;
+        }
+        let eta = step.case.eta_hole();
+        all.extend(step.solution.violations.iter().map(|v| ViolationReport {
+            step: i + 1,
+            pair: v.pair,
+            eta: eta.get(v.pair).copied().unwrap_or(f64::NAN),
+            condition: v.condition.to_string(),
+        }));
+    }
+    all
 }
 
 /// The position in `order` of the pair whose η is nearest to `l`.
@@ -375,4 +412,5 @@ fn scale_solution(s: &mut ContactSolution, w: f64) {
     s.kkt.max_complementarity *= w * w;
     s.kkt.max_tension *= w;
     s.kkt.max_cone_violation *= w;
+    // max_slip_inside_cone is dimensionless (scale-free).
 }

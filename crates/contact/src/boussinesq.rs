@@ -224,6 +224,7 @@ pub fn finish_zones(
     if !violations.is_empty() {
         solution.status = ContactStatus::Inadmissible;
     }
+    solution.violations.clone_from(&violations);
     BoussinesqStep { solution, zones, violations }
 }
 

@@ -62,6 +62,9 @@ pub fn finish_from_displacement(
     let (lambda, tau) = (&raw.normal_force, &raw.tangential_force);
     let length_scale = gap.iter().chain(&displacement).fold(0.0f64, |a, g| a.max(g.abs())).max(f64::MIN_POSITIVE);
     let force_scale = force_scale(problem, w, lambda, tau, length_scale);
+    // Friction is judged against the contact forces themselves (the force scale F includes the
+    // stiffer body's k̄U, which dwarfs the contact forces of a soft insert).
+    let contact_scale = lambda.iter().fold(0.0f64, |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE);
     let mut state = Vec::with_capacity(gap.len());
     let mut kkt = KktResiduals { min_dissipation: f64::INFINITY, ..KktResiduals::default() };
     let mut dissipation = 0.0;
@@ -87,6 +90,10 @@ pub fn finish_from_displacement(
         kkt.max_penetration = kkt.max_penetration.max(-gap[k]);
         kkt.max_complementarity = kkt.max_complementarity.max((lambda[k] * gap[k]).abs());
         kkt.max_tension = kkt.max_tension.max(-lambda[k]);
+        if in_contact && problem.tangential[k] && mu > 0.0 {
+            let inside = slack.max(0.0) / contact_scale * slip_increment[k].abs() / length_scale;
+            kkt.max_slip_inside_cone = kkt.max_slip_inside_cone.max(inside);
+        }
         kkt.max_cone_violation = kkt.max_cone_violation.max(-slack);
         if slipping {
             kkt.min_dissipation = kkt.min_dissipation.min(-tau[k] * slip_increment[k]);
@@ -110,6 +117,7 @@ pub fn finish_from_displacement(
         iterations: raw.iterations,
         time: raw.time,
         trace: vec![],
+        violations: vec![],
     }
 }
 

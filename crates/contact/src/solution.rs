@@ -44,6 +44,12 @@ pub struct KktResiduals {
     pub min_dissipation: f64,
     /// max(−λ, 0) (tension in contact).
     pub max_tension: f64,
+    /// Friction complementarity, dimensionless: max over frictional contact pairs of
+    /// `(μλ − |τ|)⁺/λ_max · |Δs|/U` (λ_max: the largest contact force, U: the solution's length
+    /// scale). Zero when every
+    /// pair that slips is on the cone; a pair inside the cone that slips breaks Coulomb's law
+    /// although `max_cone_violation` is zero.
+    pub max_slip_inside_cone: f64,
 }
 
 /// The state at the start of a load step: the history a frictional step needs.
@@ -100,6 +106,10 @@ pub struct ContactSolution {
     pub time: Duration,
     /// One record per iteration (what changed and the residual), for logs.
     pub trace: Vec<IterationRecord>,
+    /// Inequalities of the contact conditions (5.1) that the answer violates, checked by
+    /// algorithms that assume a structure (the Boussinesq zones); empty otherwise. The status
+    /// is then [`ContactStatus::Inadmissible`].
+    pub violations: Vec<crate::boussinesq::Violation>,
 }
 
 /// One iteration of an algorithm, as logged by `contact2d run -v`.

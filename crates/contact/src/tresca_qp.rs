@@ -89,7 +89,25 @@ pub fn solve_frictional_qp(
     let raw = RawSolution { load_factor: w, normal_force, tangential_force, status, iterations, time: clock.elapsed() };
     let mut solution = finish_from_displacement(problem, &u_free, raw, start);
     solution.trace = trace;
+    // The fixed point settles on λ; whether Coulomb's law holds depends on the accuracy of the
+    // Tresca QPs (absolute tolerances on badly scaled data lose it at extreme stiffness ratios).
+    // A pair inside the cone that slips, or beyond it, makes the answer a numerical failure.
+    let cone = solution.kkt.max_cone_violation / force_scale_of(&solution).max(f64::MIN_POSITIVE);
+    if solution.status == ContactStatus::Converged
+        && (solution.kkt.max_slip_inside_cone > COULOMB_TOLERANCE || cone > COULOMB_TOLERANCE)
+    {
+        solution.status = ContactStatus::Numerical;
+    }
     solution
+}
+
+/// Largest Coulomb residual (dimensionless) a converged fixed point may leave: well above the
+/// QPs' accuracy on degenerate pairs (√1e-10 · √1e-10), well below a wrong stick/slip split.
+const COULOMB_TOLERANCE: f64 = 1e-7;
+
+/// The largest contact force of a solution (the scale of the cone violation).
+fn force_scale_of(s: &ContactSolution) -> f64 {
+    s.normal_force.iter().chain(&s.tangential_force).fold(0.0f64, |a, v| a.max(v.abs()))
 }
 
 /// Pairs in contact: the normalised force exceeds the normalised gap (an interior-point λ of a
