@@ -234,8 +234,14 @@ fn print_report(out: &mut impl Write, r: &contact2d::run::RunReport) -> std::io:
         r.steps.len()
     )?;
     writeln!(out, "  w      = {}   mu = {}", r.w, r.mu)?;
-    writeln!(out, "  l      = {}   (bracket {:?}, master's own {})", opt(r.l), r.l_bracket, opt(r.l_master))?;
-    writeln!(out, "  b      = {}   (bracket {:?})", opt(r.b), r.b_bracket)?;
+    // Where a zone end sits: a node placed there, or between two nodes (then interpolated).
+    let bracket = |b: Option<[f64; 2]>| match b {
+        Some([lo, hi]) if lo == hi => "node placed there".to_string(),
+        Some([lo, hi]) => format!("between nodes at {lo:.5} and {hi:.5}"),
+        None => "no transition".to_string(),
+    };
+    writeln!(out, "  l      = {}   ({}; master's own {})", opt(r.l), bracket(r.l_bracket), opt(r.l_master))?;
+    writeln!(out, "  b      = {}   ({})", opt(r.b), bracket(r.b_bracket))?;
     writeln!(out, "  P      = {:.5}   W = {:.6}", r.P, r.W)?;
     writeln!(out, "  Phi_E1 = {:.6}   Phi_E2 = {:.6}   Phi_f = {:.6}", r.Phi_E1, r.Phi_E2, r.Phi_f)?;
     writeln!(out, "  sigma* = {:.4}   K = {:.3}", r.sigma_star, r.K)?;
