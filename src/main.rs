@@ -255,6 +255,9 @@ fn print_report(out: &mut impl Write, r: &contact2d::run::RunReport) -> std::io:
         r.kkt.min_dissipation
     )?;
     writeln!(out, "  time {:.3} s (contact solve {:.4} s)", r.time_s, r.solve_time_s)?;
+    for note in &r.notes {
+        writeln!(out, "  note: {note}")?;
+    }
     for v in &r.violations {
         writeln!(out, "  violated at step {}, pair {} (η = {:.4}): {}", v.step, v.pair, v.eta, v.condition)?;
     }

@@ -96,7 +96,7 @@ pub struct RunReport {
     pub pairs: usize,
     /// Algorithm.
     pub algorithm: ContactAlgorithm,
-    /// Outcome.
+    /// Outcome: the first step's that did not converge, else `converged`.
     pub status: String,
     /// Iterations of the algorithm, summed over the steps.
     pub iterations: usize,
@@ -110,6 +110,9 @@ pub struct RunReport {
     pub solve_time_s: f64,
     /// Inequalities of (5.1) a step violates (status `inadmissible`); empty when admissible.
     pub violations: Vec<ViolationReport>,
+    /// What a user should know about how the numbers were obtained (e.g. a step whose zone ends
+    /// could not be placed).
+    pub notes: Vec<String>,
 }
 
 /// A violated contact inequality in the JSON output.
@@ -217,8 +220,20 @@ pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<Ru
         let placed = solve_placed_history(&scene.plate_insert(), &loadings, ZoneEndSearch::default(), &mut |s| {
             report_step(s.load)
         })?;
+        let notes = placed
+            .iter()
+            .enumerate()
+            .filter_map(|(i, (step, _))| step.placement_failure.as_ref().map(|why| (i, why)))
+            .map(|(i, why)| {
+                format!(
+                    "step {}: zone ends not placed ({why}); solved on the generated mesh, l and b interpolated",
+                    i + 1
+                )
+            })
+            .collect();
         let steps = placed_steps(placed, if scaled { p.load } else { 1.0 })?;
-        let report = summarise(scene, &steps, start)?;
+        let mut report = summarise(scene, &steps, start)?;
+        report.notes = notes;
         return Ok(RunOutcome { report, steps });
     }
     let case = Arc::new(scene.plate_insert().build()?);
@@ -283,6 +298,11 @@ fn placed_steps(placed: Vec<(PlacedStep, f64)>, scale: f64) -> Result<Vec<Solved
             }
             let case = Arc::new(step.case);
             let mut results = case.results(&solution)?;
+            if !step.contact_end_placed {
+                // The search failed and the step was solved on the generated mesh: the
+                // interpolated zone ends of `results` stand.
+                return Ok(SolvedStep { case, solution, results, dissipated: dissipated * scale * scale });
+            }
             results.contact_end = Some(step.contact_end_hole);
             results.contact_bracket = Some([step.contact_end_hole; 2]);
             results.contact_end_master = Some(step.contact_end);
@@ -339,7 +359,15 @@ fn summarise(scene: &Scene, solved: &[SolvedStep], start: Instant) -> Result<Run
         dofs: problem.system.dofs.num_free(),
         pairs: problem.num_pairs(),
         algorithm: scene.solver.algorithm,
-        status: status_name(solution.status).into(),
+        // A history is as good as its worst step: the first step that did not converge, if any.
+        status: status_name(
+            solved
+                .iter()
+                .map(|s| s.solution.status)
+                .find(|s| *s != ContactStatus::Converged)
+                .unwrap_or(solution.status),
+        )
+        .into(),
         iterations: solved.iter().map(|s| s.solution.iterations).sum(),
         kkt: KktReport {
             max_penetration: solution.kkt.max_penetration,
@@ -352,6 +380,7 @@ fn summarise(scene: &Scene, solved: &[SolvedStep], start: Instant) -> Result<Run
         time_s: start.elapsed().as_secs_f64(),
         solve_time_s: solved.iter().map(|s| s.solution.time.as_secs_f64()).sum(),
         violations: violations(solved),
+        notes: vec![],
     })
 }
 

@@ -65,6 +65,12 @@ pub struct PlacedStep {
     /// b* on the master's own coordinate (l* when nothing slips: the stick zone is the whole
     /// contact zone).
     pub stick_end: f64,
+    /// Whether a node was placed at l* (false when the search failed and the step was solved on
+    /// the generated mesh instead, see `placement_failure`).
+    pub contact_end_placed: bool,
+    /// Why the zone-end search failed, when it did: the step was then solved by the Boussinesq
+    /// algorithm on the generated mesh (zone ends at its nodes, l and b interpolated).
+    pub placement_failure: Option<String>,
     /// Whether a node was placed at b* (false when nothing slips, or when b* is closer to l*
     /// than two corners can be placed; b is then interpolated between the pairs like the slip).
     pub stick_end_placed: bool,
@@ -248,15 +254,31 @@ pub fn place_zone_ends(
     let clock = std::time::Instant::now();
     let template = PlateInsert { placed_nodes: vec![], ..template.clone() };
     let base = template.build_on(mesh.clone())?;
+    match search_placed(&template, mesh, &base, loading, history, search, clock) {
+        Ok(step) => Ok(step),
+        Err((e, evaluations)) => on_generated_mesh(base, loading, history, e.to_string(), evaluations, clock),
+    }
+}
+
+/// The zone-end search with its retries; on failure, the error and the meshes it solved.
+fn search_placed(
+    template: &PlateInsert,
+    mesh: &Mesh,
+    base: &PlateInsertProblem,
+    loading: PlacedLoading,
+    history: &ContourHistory,
+    search: ZoneEndSearch,
+    clock: std::time::Instant,
+) -> Result<PlacedStep, (ContactError, usize)> {
     let mut l_estimate = match loading {
         PlacedLoading::ContactEnd(l) => l,
-        PlacedLoading::Load(w) => estimate_contact_end(&base, w, history)?,
+        PlacedLoading::Load(w) => estimate_contact_end(base, w, history).map_err(|e| (e, 0))?,
     };
     let mut b_estimate = None;
     let mut run = Search {
-        template: &template,
+        template,
         mesh,
-        base: &base,
+        base,
         loading,
         history,
         l_corner: 0,
@@ -267,21 +289,72 @@ pub fn place_zone_ends(
     // A zone end beyond the range of the corner chosen for it moves the search to the corner
     // the root finder points at.
     for _attempt in 0..8 {
-        match search_zone_ends(&mut run, &base, l_estimate, b_estimate, search.tolerance) {
+        match search_zone_ends(&mut run, base, l_estimate, b_estimate, search.tolerance) {
             Ok((last, stick_end)) => {
                 let residual_cone = last.b_pair.map_or(0.0, |k| last.cone(k).abs() / last.pressure_scale());
-                return finish((run.evaluations, clock.elapsed()), last, stick_end, residual_cone, run.trace);
+                return finish((run.evaluations, clock.elapsed()), last, stick_end, residual_cone, run.trace)
+                    .map_err(|e| (e, run.evaluations));
             }
-            Err(Miss::Contact(e)) => return Err(e),
+            Err(Miss::Contact(e)) => return Err((e, run.evaluations)),
             Err(Miss::ContactEnd(towards)) => (l_estimate, b_estimate) = (towards, None),
             Err(Miss::StickEnd { towards, slip, contact_end }) => {
                 (l_estimate, b_estimate) = (contact_end, Some((towards, slip)));
             }
         }
     }
-    Err(ContactError::InvalidInput(format!(
+    let e = ContactError::InvalidInput(format!(
         "zone-end search: no corner holds the zone ends (last l ≈ {l_estimate:.5})"
-    )))
+    ));
+    Err((e, run.evaluations))
+}
+
+/// The step by the Boussinesq algorithm on the generated mesh, when the zone-end search failed
+/// (e.g. a singular problem A on a coarse mesh): zone ends at the nodes, l and b interpolated
+/// (the 3/2-power laws of contact::post), the failure kept in the step.
+fn on_generated_mesh(
+    base: PlateInsertProblem,
+    loading: PlacedLoading,
+    history: &ContourHistory,
+    failure: String,
+    evaluations: usize,
+    clock: std::time::Instant,
+) -> Result<PlacedStep, ContactError> {
+    let interface = Interface::new(&base.problem);
+    let start = history.start_for(&base);
+    let order = eta_order(&base);
+    let (eta, eta_hole) = (base.eta_master(), base.eta_hole());
+    let nodes = match loading {
+        PlacedLoading::Load(w) => BoussinesqLoading::Load(w),
+        PlacedLoading::ContactEnd(l) => {
+            let nearest =
+                (0..order.len()).min_by(|a, b| (eta[order[*a]] - l).abs().total_cmp(&(eta[order[*b]] - l).abs()));
+            BoussinesqLoading::ContactEnd(nearest.unwrap_or(0))
+        }
+    };
+    let mut step = solve_boussinesq_step(&base.problem, &interface, &order, nodes, &start, 4 * order.len());
+    step.solution.time = clock.elapsed();
+    let s = &step.solution;
+    let end = |eta: &[f64]| contact_end(eta, &s.gap, &s.state).map(|(l, _)| l);
+    let last = eta[order[step.zones.contact_end.min(order.len() - 1)]];
+    let (l, l_hole) = (end(&eta).unwrap_or(last), end(&eta_hole).unwrap_or(last));
+    let stick = |eta: &[f64], l: f64| stick_end(eta, &s.slip_increment, &s.state).map_or(l, |(b, _)| b);
+    let (b, b_hole) = (stick(&eta, l), stick(&eta_hole, l_hole));
+    Ok(PlacedStep {
+        contact_end: l,
+        stick_end: b,
+        stick_end_placed: false,
+        contact_end_placed: false,
+        placement_failure: Some(failure),
+        contact_end_hole: l_hole,
+        stick_end_hole: b_hole,
+        load: s.load_factor,
+        residual_pressure: 0.0,
+        residual_cone: 0.0,
+        evaluations: evaluations + 1,
+        start,
+        case: base,
+        step,
+    })
 }
 
 /// Why one pass of the zone-end search stopped.
@@ -532,6 +605,8 @@ fn finish(
         contact_end,
         stick_end: stick_master,
         stick_end_placed: matches!(stick_end, StickEnd::Placed(_)),
+        contact_end_placed: true,
+        placement_failure: None,
         contact_end_hole: eta_hole[e.l_pair],
         stick_end_hole: stick_hole,
         load: e.load,
