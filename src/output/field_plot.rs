@@ -16,7 +16,7 @@ use plotters::prelude::*;
 
 use super::OutputError;
 use super::chart::{FIGURE_SIZE, ImageFormat, register_bundled_font};
-use super::mesh_plot::{bounding_box, equal_aspect_ranges};
+use super::mesh_plot::{bounding_box, draw_plane_axes, equal_aspect_ranges};
 use crate::run::SolvedStep;
 
 /// Sub-cells per cell edge.
@@ -146,15 +146,7 @@ fn draw_on<DB: DrawingBackend>(
         .y_label_area_size(60)
         .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
         .map_err(|e| err(&e))?;
-    chart
-        .configure_mesh()
-        .disable_mesh()
-        .x_desc("x1 / R (non-dimensional)")
-        .y_desc("x2 / R")
-        .label_style(("sans-serif", 14))
-        .axis_desc_style(("sans-serif", 15))
-        .draw()
-        .map_err(|e| err(&e))?;
+    draw_plane_axes(&mut chart)?;
     chart
         .draw_series(cells.iter().map(|c| Polygon::new(c.corners.clone(), colour(c.value).filled())))
         .map_err(|e| err(&e))?;

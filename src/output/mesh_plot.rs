@@ -98,6 +98,25 @@ pub fn exaggeration(u: &[f64]) -> f64 {
     if max > 0.0 { 1.0 / max } else { 0.0 }
 }
 
+/// Draws the axes of a chart of the bodies in the plane (x1, x2 labelled, no grid).
+pub(crate) fn draw_plane_axes<DB: DrawingBackend>(
+    chart: &mut ChartContext<
+        '_,
+        DB,
+        Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+    >,
+) -> Result<(), String> {
+    chart
+        .configure_mesh()
+        .disable_mesh()
+        .x_desc("x1 / R (non-dimensional)")
+        .y_desc("x2 / R")
+        .label_style(("sans-serif", 14))
+        .axis_desc_style(("sans-serif", 15))
+        .draw()
+        .map_err(|e| e.to_string())
+}
+
 /// Draws the mesh figure of `step` to `path` (PNG or SVG by extension).
 ///
 /// # Errors
@@ -139,15 +158,7 @@ fn draw_on<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, title: &str, step:
             .y_label_area_size(60)
             .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
             .map_err(|e| err(&e))?;
-        chart
-            .configure_mesh()
-            .disable_mesh()
-            .x_desc("x1 / R (non-dimensional)")
-            .y_desc("x2 / R")
-            .label_style(("sans-serif", 14))
-            .axis_desc_style(("sans-serif", 15))
-            .draw()
-            .map_err(|e| err(&e))?;
+        draw_plane_axes(&mut chart)?;
         let edge_style = RGBColor(90, 90, 90).stroke_width(1);
         chart
             .draw_series(edge_polylines(step, x).into_iter().map(|line| PathElement::new(line, edge_style)))
