@@ -55,23 +55,10 @@ pub fn summarize_mesh(mesh: &Mesh) -> MeshSummary {
         })
         .collect();
     let (mut min_det_j, mut worst_quality) = (None::<f64>, None::<f64>);
-    for b in &mesh.blocks {
-        let Some(element) = element_type(b.kind) else { continue };
-        let rule = GaussRule::stiffness_rule(element);
-        for cell in b.cells() {
-            let coords: Vec<[f64; 2]> = cell.iter().map(|n| mesh.points[n.0]).collect();
-            let dets: Vec<f64> = rule
-                .points
-                .iter()
-                .chain(element.reference_nodes())
-                .filter_map(|xi| jacobian_determinant(element, &coords, *xi).ok())
-                .collect();
-            let lo = dets.iter().copied().fold(f64::INFINITY, f64::min);
-            let hi = dets.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-            min_det_j = Some(min_det_j.map_or(lo, |m| m.min(lo)));
-            let q = if hi > 0.0 { lo / hi } else { lo.min(0.0) };
-            worst_quality = Some(worst_quality.map_or(q, |w| w.min(q)));
-        }
+    for [lo, hi] in jacobian_extremes(mesh) {
+        min_det_j = Some(min_det_j.map_or(lo, |m| m.min(lo)));
+        let q = if hi > 0.0 { lo / hi } else { lo.min(0.0) };
+        worst_quality = Some(worst_quality.map_or(q, |w| w.min(q)));
     }
     MeshSummary {
         nodes: mesh.num_nodes(),
@@ -81,6 +68,23 @@ pub fn summarize_mesh(mesh: &Mesh) -> MeshSummary {
         min_det_j,
         worst_quality,
     }
+}
+
+/// `[min, max]` of det J over each cell with an element type (at the Gauss points of its
+/// stiffness rule and its reference nodes): min ≤ 0 for an inverted cell, min = max for an
+/// affine one.
+pub fn jacobian_extremes(mesh: &Mesh) -> impl Iterator<Item = [f64; 2]> + '_ {
+    mesh.blocks.iter().filter_map(|b| element_type(b.kind).map(|e| (b, e))).flat_map(move |(b, element)| {
+        let rule = GaussRule::stiffness_rule(element);
+        b.cells().map(move |cell| {
+            let coords: Vec<[f64; 2]> = cell.iter().map(|n| mesh.points[n.0]).collect();
+            rule.points
+                .iter()
+                .chain(element.reference_nodes())
+                .filter_map(|xi| jacobian_determinant(element, &coords, *xi).ok())
+                .fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], d| [lo.min(d), hi.max(d)])
+        })
+    })
 }
 
 impl std::fmt::Display for MeshSummary {

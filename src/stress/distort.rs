@@ -12,8 +12,6 @@
 //! min det J / max det J over the cells (sampled at the Gauss points and nodes); a value ≤ 0
 //! means an inverted cell.
 
-use contact2d_element::{GaussRule, jacobian_determinant};
-use contact2d_fem::element_type;
 use contact2d_mesh::Mesh;
 
 /// SplitMix64 (Steele, Lea, Flood 2014): a small, fixed-seed generator of uniform numbers.
@@ -76,24 +74,13 @@ pub fn distort_interior(mesh: &mut Mesh, amplitude: f64, seed: u64) {
 /// The smallest min det J / max det J over the 2D cells (Gauss points of the stiffness rule and
 /// the reference nodes); ≤ 0 for an inverted cell, 1 for affine cells. `None` without 2D cells.
 pub fn jacobian_quality(mesh: &Mesh) -> Option<f64> {
-    let mut worst: Option<f64> = None;
-    for block in mesh.blocks.iter().filter(|b| b.kind.dim() == 2) {
-        let Some(element) = element_type(block.kind) else { continue };
-        let rule = GaussRule::stiffness_rule(element);
-        for cell in block.cells() {
-            let coords: Vec<[f64; 2]> = cell.iter().map(|v| mesh.points[v.0]).collect();
-            let dets: Vec<f64> = rule
-                .points
-                .iter()
-                .chain(element.reference_nodes())
-                .filter_map(|xi| jacobian_determinant(element, &coords, *xi).ok())
-                .collect();
-            let (lo, hi) = dets.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), d| (l.min(*d), h.max(*d)));
-            let q = if hi > 0.0 { lo / hi } else { lo };
-            worst = Some(worst.map_or(q, |w: f64| w.min(q)));
-        }
+    let blocks_2d: Vec<_> = mesh.blocks.iter().filter(|b| b.kind.dim() == 2).collect();
+    if blocks_2d.is_empty() {
+        return None;
     }
-    worst
+    crate::mesh_summary::jacobian_extremes(mesh)
+        .map(|[lo, hi]| if hi > 0.0 { lo / hi } else { lo })
+        .fold(None, |worst: Option<f64>, q| Some(worst.map_or(q, |w| w.min(q))))
 }
 
 #[cfg(test)]
