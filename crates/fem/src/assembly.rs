@@ -8,7 +8,7 @@
 //! ```
 //!
 //! `K_ff` is assembled in place into its compressed-column pattern, built from the node graph
-//! ([`crate::pattern`], parallel over column blocks); the few cells with a constrained DOF are
+//! (the `pattern` module, parallel over column blocks); the few cells with a constrained DOF are
 //! scattered into triplets for `K_fc` and `K_cc`. Only the lower triangle of `K_ff` is stored:
 //! the Cholesky factorisation reads that side. `K_fc` and `K_cc` are kept so that the right-hand side and the
 //! reactions can be formed for any prescribed values without assembling again.
