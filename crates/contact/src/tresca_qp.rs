@@ -101,9 +101,11 @@ pub fn solve_frictional_qp(
     solution
 }
 
-/// Largest Coulomb residual (dimensionless) a converged fixed point may leave: well above the
-/// QPs' accuracy on degenerate pairs (√1e-10 · √1e-10), well below a wrong stick/slip split.
-const COULOMB_TOLERANCE: f64 = 1e-7;
+/// Largest Coulomb residual (dimensionless) a converged fixed point may leave. On a degenerate
+/// pair (stuck exactly on the cone) an interior point with tolerance 1e-10 resolves the slip and
+/// the slack each to about √1e-10 = 1e-5 of their scales, so their product to 1e-10: two decades
+/// above that; a wrong stick/slip split leaves 1e-7 and more (docs/stability.md).
+const COULOMB_TOLERANCE: f64 = 1e-8;
 
 /// The largest contact force of a solution (the scale of the cone violation).
 fn force_scale_of(s: &ContactSolution) -> f64 {
