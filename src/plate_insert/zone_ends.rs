@@ -240,10 +240,13 @@ fn eta_order(case: &PlateInsertProblem) -> Vec<usize> {
 /// `mesh` is the generated mesh of `template` (read once by the caller); `template`'s own
 /// `placed_nodes` are ignored.
 ///
+/// A search that cannot place the zone ends (an estimate without a contact end, a zone end no
+/// corner can reach, a singular problem A, no convergence within `search.max_evaluations`) is
+/// not an error: the step is then solved by the Boussinesq algorithm on the generated mesh, with
+/// l and b interpolated, and [`PlacedStep::placement_failure`] says why.
+///
 /// # Errors
-/// Set-up failures; an estimate without a contact end (nothing, or everything, in contact); a
-/// zone end outside the range its corner can move in; no convergence within the evaluation
-/// limit.
+/// Set-up failures (model, pairing, factorisation) on the generated mesh.
 pub fn place_zone_ends(
     template: &PlateInsert,
     mesh: &Mesh,
