@@ -17,6 +17,8 @@ use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, read_msh};
 
 mod contour_history;
+mod corners;
+mod generated_mesh;
 pub mod published;
 mod results;
 mod roots;

@@ -22,12 +22,14 @@
 
 use contact2d_contact::{BoussinesqLoading, ContactProblem};
 use contact2d_contact::{
-    BoussinesqStep, ContactError, ContactStatus, Interface, IterationRecord, PairState, StepStart, Zones, contact_end,
-    finish_zones, solve_boussinesq_step, solve_frictional_active_set, solve_given_zones, stick_end,
+    BoussinesqStep, ContactError, ContactStatus, Interface, IterationRecord, PairState, StepStart, Zones, finish_zones,
+    solve_boussinesq_step, solve_given_zones, stick_end,
 };
 use contact2d_mesh::Mesh;
 
 use super::contour_history::ContourHistory;
+use super::corners::{above, assign_corners, below, placement_limits};
+use super::generated_mesh::{estimate_contact_end, on_generated_mesh};
 use super::roots::find_root;
 use super::{NodePlacement, PlateInsert, PlateInsertProblem};
 
@@ -228,7 +230,7 @@ fn singular(l: f64) -> ContactError {
 }
 
 /// Pair indices sorted by η on the master coordinate.
-fn eta_order(case: &PlateInsertProblem) -> Vec<usize> {
+pub(super) fn eta_order(case: &PlateInsertProblem) -> Vec<usize> {
     let eta = case.eta_master();
     let mut order: Vec<usize> = (0..eta.len()).collect();
     order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
@@ -309,55 +311,6 @@ fn search_placed(
         "zone-end search: no corner holds the zone ends (last l ≈ {l_estimate:.5})"
     ));
     Err((e, run.evaluations))
-}
-
-/// The step by the Boussinesq algorithm on the generated mesh, when the zone-end search failed
-/// (e.g. a singular problem A on a coarse mesh): zone ends at the nodes, l and b interpolated
-/// (the 3/2-power laws of contact::post), the failure kept in the step.
-fn on_generated_mesh(
-    base: PlateInsertProblem,
-    loading: PlacedLoading,
-    history: &ContourHistory,
-    failure: String,
-    evaluations: usize,
-    clock: std::time::Instant,
-) -> Result<PlacedStep, ContactError> {
-    let interface = Interface::new(&base.problem);
-    let start = history.start_for(&base);
-    let order = eta_order(&base);
-    let (eta, eta_hole) = (base.eta_master(), base.eta_hole());
-    let nodes = match loading {
-        PlacedLoading::Load(w) => BoussinesqLoading::Load(w),
-        PlacedLoading::ContactEnd(l) => {
-            let nearest =
-                (0..order.len()).min_by(|a, b| (eta[order[*a]] - l).abs().total_cmp(&(eta[order[*b]] - l).abs()));
-            BoussinesqLoading::ContactEnd(nearest.unwrap_or(0))
-        }
-    };
-    let mut step = solve_boussinesq_step(&base.problem, &interface, &order, nodes, &start, 4 * order.len());
-    step.solution.time = clock.elapsed();
-    let s = &step.solution;
-    let end = |eta: &[f64]| contact_end(eta, &s.gap, &s.state).map(|(l, _)| l);
-    let last = eta[order[step.zones.contact_end.min(order.len() - 1)]];
-    let (l, l_hole) = (end(&eta).unwrap_or(last), end(&eta_hole).unwrap_or(last));
-    let stick = |eta: &[f64], l: f64| stick_end(eta, &s.slip_increment, &s.state).map_or(l, |(b, _)| b);
-    let (b, b_hole) = (stick(&eta, l), stick(&eta_hole, l_hole));
-    Ok(PlacedStep {
-        contact_end: l,
-        stick_end: b,
-        stick_end_placed: false,
-        contact_end_placed: false,
-        placement_failure: Some(failure),
-        contact_end_hole: l_hole,
-        stick_end_hole: b_hole,
-        load: s.load_factor,
-        residual_pressure: 0.0,
-        residual_cone: 0.0,
-        evaluations: evaluations + 1,
-        start,
-        case: base,
-        step,
-    })
 }
 
 /// Why one pass of the zone-end search stopped.
@@ -524,19 +477,6 @@ fn run_cone(run: &mut Search<'_>, l: f64, b: (f64, usize, PairState)) -> Result<
     Ok(r)
 }
 
-/// The contact end of the active-set solution at load `w` on the generated mesh.
-fn estimate_contact_end(base: &PlateInsertProblem, w: f64, history: &ContourHistory) -> Result<f64, ContactError> {
-    let interface = Interface::new(&base.problem);
-    let start = history.start_for(base);
-    let s = solve_frictional_active_set(&base.problem, &interface, w, &start, None, 500);
-    if s.status != ContactStatus::Converged {
-        return Err(ContactError::InvalidInput(format!("estimate of the zones at w = {w}: {:?}", s.status)));
-    }
-    contact_end(&base.eta_master(), &s.gap, &s.state).map(|(l, _)| l).ok_or_else(|| {
-        ContactError::InvalidInput(format!("at w = {w} nothing or everything is in contact: no contact end to place"))
-    })
-}
-
 /// b₀ and the slip direction from an evaluation with the node-based b iteration; `None` when
 /// nothing slips.
 fn stick_estimate(e: &Evaluation) -> Option<(f64, PairState)> {
@@ -620,50 +560,6 @@ fn finish(
         case: e.case,
         step,
     })
-}
-
-/// The corners to place at l and b: each within its range and keeping 6 % of the corner
-/// spacing from its neighbours (placed or not), the b corner before the l corner along η; of the
-/// candidates, the pair that keeps `keep_l` for l if it can and moves the corners least.
-fn assign_corners(base: &PlateInsertProblem, l: f64, b: f64, keep_l: usize) -> Option<(usize, usize)> {
-    let eta = base.master_node_eta();
-    let corners: Vec<usize> = (1..eta.len().saturating_sub(1) / 2).map(|c| 2 * c).collect();
-    let mut best: Option<(f64, usize, usize)> = None;
-    for &cl in &corners {
-        for &cb in corners.iter().filter(|c| eta[**c] < eta[cl]) {
-            let fits = |c: usize, x: f64, limits: fn([f64; 2], f64) -> [f64; 2], other: f64| {
-                base.corner_range(c)
-                    .map(|r| limits(placement_limits(r), other))
-                    .is_some_and(|[lo, hi]| x > lo && x < hi)
-            };
-            if fits(cl, l, above, b) && fits(cb, b, below, l) {
-                // Keeping the corner l was found on avoids a new l search (and a cycle of them).
-                let moved = if cl == keep_l { 0.0 } else { 1.0 };
-                let cost = moved + (eta[cl] - l).abs() + (eta[cb] - b).abs();
-                if best.is_none_or(|(c, _, _)| cost < c) {
-                    best = Some((cost, cl, cb));
-                }
-            }
-        }
-    }
-    best.map(|(_, cl, cb)| (cl, cb))
-}
-
-/// Where a corner with neighbour range `[lo, hi]` (two corner spacings) may go: 6 % of the
-/// spacing from each neighbour (thinner elements are still valid, the interior being relaxed).
-fn placement_limits([lo, hi]: [f64; 2]) -> [f64; 2] {
-    let d = 0.03 * (hi - lo);
-    [lo + d, hi - d]
-}
-
-/// Limits of the l node above a b node at `b` (about 6 % of the corner spacing clear).
-fn above([lo, hi]: [f64; 2], b: f64) -> [f64; 2] {
-    [lo.max(b + 0.03 * (hi - lo)), hi]
-}
-
-/// Limits of the b node below an l node at `l`.
-fn below([lo, hi]: [f64; 2], l: f64) -> [f64; 2] {
-    [lo, hi.min(l - 0.03 * (hi - lo))]
 }
 
 /// A loading history with zone ends placed at every step, the slips carried over on the
