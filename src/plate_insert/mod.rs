@@ -166,12 +166,13 @@ impl PlateInsert {
         previous: Option<&ContactProblem>,
     ) -> Result<PlateInsertProblem, ContactError> {
         if !self.placed_nodes.is_empty() {
-            let (_, hole, insert) = self.model(mesh.clone())?;
-            let master = match self.variant {
-                PairingVariant::HoleMaster => &hole,
-                PairingVariant::InsertMaster => &insert,
+            // The master contour is read off the mesh; no model is needed to move its nodes.
+            let group = match self.variant {
+                PairingVariant::HoleMaster => "hole_edge",
+                PairingVariant::InsertMaster => "insert_edge",
             };
-            let targets = self.placement_targets(&mesh, master)?;
+            let master = Contour::from_group(&mesh, group)?;
+            let targets = self.placement_targets(&mesh, &master)?;
             move_nodes(&mut mesh, &targets, 2)?;
         }
         if self.pairs == PairDiscretisation::NodeToNode {
