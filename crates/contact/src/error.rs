@@ -25,6 +25,21 @@ pub enum ContactError {
         /// What went wrong.
         reason: String,
     },
+    /// A body held only by contact that the contact does not hold under the load: no pair
+    /// closes against some of its rigid motions (it would fly away or spin).
+    #[error(
+        "body \"{body}\" is held by no Dirichlet condition and its contact does not hold it under the load at \
+         step {step}: free {}; fix these motions (a [[fix]] on a group of the body) or make sure a contact closes",
+        modes.join(", ")
+    )]
+    BodyNotHeld {
+        /// The body.
+        body: String,
+        /// The free rigid motions the contact does not take up.
+        modes: Vec<String>,
+        /// The load step (from 1).
+        step: usize,
+    },
     /// A parameter outside its admissible range.
     #[error("invalid contact input: {0}")]
     InvalidInput(String),

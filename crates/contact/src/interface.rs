@@ -134,6 +134,16 @@ impl Interface {
         }
     }
 
+    /// Recomputes the load terms `u0` and `h` after the problem's load changed
+    /// ([`ContactProblem::apply_load`]): one solve; the compliances are kept.
+    pub fn update_load(&mut self, problem: &ContactProblem) {
+        self.u0 = problem.solver.solve(&problem.pattern_rhs);
+        let h =
+            |rows: &[PairRow]| rows.iter().map(|r| r.dot(&self.u0, &problem.pattern_prescribed)).collect::<Vec<_>>();
+        self.h_normal = h(&problem.normal_rows);
+        self.h_tangent = h(&problem.tangent_rows);
+    }
+
     /// Free displacements `w u0 + K⁻¹ (B_Nᵀ λ + B_Tᵀ τ)` (one solve; `τ` is ignored without
     /// friction).
     pub fn free_displacement(&self, w: f64, lambda: &[f64], tau: &[f64]) -> Vec<f64> {

@@ -11,16 +11,19 @@
 
 pub mod active_set;
 pub mod boussinesq;
+pub mod builder;
 pub mod error;
 pub mod friction;
 pub mod history;
 pub mod interface;
+pub mod loading;
 pub mod pairing;
 pub mod post;
 pub mod problem;
 pub mod qp;
 pub mod report;
 pub mod solution;
+pub mod solve;
 mod state_equations;
 pub mod tresca_qp;
 
@@ -29,14 +32,20 @@ pub use boussinesq::{
     BoussinesqLoading, BoussinesqStep, Violation, ZoneForces, Zones, finish_zones, solve_boussinesq_history,
     solve_boussinesq_step, solve_given_zones,
 };
+pub use builder::{
+    BodyDescription, BuiltProblem, ContactDescription, EdgeLoadKind, FixDescription, GapDescription, InterfaceInfo,
+    LoadDescription, Pairing, ProblemDescription,
+};
 pub use error::ContactError;
 pub use friction::solve_frictional_active_set;
 pub use history::{HistoryStep, StepAlgorithm, equal_steps, solve_history, solve_history_with};
 pub use interface::Interface;
+pub use loading::LoadSchedule;
 pub use pairing::{ContactPair, node_to_node_targets, pair_contours, tributary_weights};
 pub use post::{contact_end, contact_end_from_pressure, pair_tractions, stick_end};
-pub use problem::{ContactProblem, PairRow};
+pub use problem::{ContactProblem, LoadPattern, PairRow};
 pub use qp::solve_frictionless_qp;
 pub use report::{RawSolution, fem_solution, finish_from_displacement, finish_from_forces};
 pub use solution::{ContactSolution, ContactStatus, IterationRecord, KktResiduals, PairState, StepStart};
+pub use solve::{ContactAlgorithm, History, SolvedStep, SolverSettings, solve, solve_with};
 pub use tresca_qp::solve_frictional_qp;

@@ -57,14 +57,18 @@ pub struct ContactProblem {
     /// (e.g. at a symmetry end point, where the tangent lies along a Dirichlet direction and a
     /// tangential condition would duplicate it; spec §8).
     pub tangential: Vec<bool>,
-    /// Right-hand side of the unit load pattern, `r = f_f − K_fc u_c` with the model's values.
+    /// Right-hand side of the load the algorithms scale by `w`, `r = f_f − K_fc u_c`: the
+    /// model's own values, or the combination of [`ContactProblem::patterns`] set by
+    /// [`ContactProblem::apply_load`].
     pub pattern_rhs: Vec<f64>,
-    /// Constrained values of the unit load pattern (the model's prescribed values).
+    /// Constrained values of that load (the model's prescribed values, or the combination).
     pub pattern_prescribed: Vec<f64>,
+    /// The named load patterns (at least one; by default `main`, the model's own values).
+    patterns: Vec<LoadPattern>,
     /// The largest diagonal entry of `K_ff`: a stiffness scale for judging round-off forces.
     pub stiffness_scale: f64,
-    /// Whether the slave contour deforms or is a rigid obstacle.
-    slave: SlaveKind,
+    /// Per pair: whether its slave side deforms or is a rigid obstacle.
+    slave: Vec<SlaveKind>,
     /// Number of free DOFs ordered last in the factorisation (the contact DOFs).
     interface_dofs: usize,
 }
@@ -75,7 +79,31 @@ impl ContactProblem {
     /// # Errors
     /// From assembly/factorisation, or a pair whose nodes have no DOFs.
     pub fn new(model: Model, pairs: Vec<ContactPair>) -> Result<ContactProblem, ContactError> {
-        ContactProblem::build(model, pairs, SlaveKind::Deformable)
+        let slave = vec![SlaveKind::Deformable; pairs.len()];
+        ContactProblem::build(model, pairs, slave)
+    }
+
+    /// Like [`ContactProblem::new`], with a rigid slave (a fixed obstacle whose nodes belong to
+    /// no body) for the pairs where `rigid_slave[k]` is true: pairs of several interfaces, some
+    /// against deformable bodies and some against obstacles.
+    ///
+    /// # Errors
+    /// As [`ContactProblem::new`], a length mismatch, or a rigid slave node that belongs to a
+    /// body.
+    pub fn with_slave_kinds(
+        model: Model,
+        pairs: Vec<ContactPair>,
+        rigid_slave: &[bool],
+    ) -> Result<ContactProblem, ContactError> {
+        if rigid_slave.len() != pairs.len() {
+            return Err(ContactError::InvalidInput(format!(
+                "{} slave kinds given for {} pairs",
+                rigid_slave.len(),
+                pairs.len()
+            )));
+        }
+        let slave = rigid_slave.iter().map(|r| if *r { SlaveKind::Rigid } else { SlaveKind::Deformable }).collect();
+        ContactProblem::build(model, pairs, slave)
     }
 
     /// Like [`ContactProblem::new`], with the slave contour a rigid, fixed obstacle: its nodes
@@ -84,12 +112,13 @@ impl ContactProblem {
     /// # Errors
     /// As [`ContactProblem::new`], or a slave node that belongs to a body.
     pub fn with_rigid_slave(model: Model, pairs: Vec<ContactPair>) -> Result<ContactProblem, ContactError> {
-        ContactProblem::build(model, pairs, SlaveKind::Rigid)
+        let slave = vec![SlaveKind::Rigid; pairs.len()];
+        ContactProblem::build(model, pairs, slave)
     }
 
-    fn build(model: Model, pairs: Vec<ContactPair>, slave: SlaveKind) -> Result<ContactProblem, ContactError> {
+    fn build(model: Model, pairs: Vec<ContactPair>, slave: Vec<SlaveKind>) -> Result<ContactProblem, ContactError> {
         let system = assemble(&model)?;
-        let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, slave)?;
+        let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, &slave)?;
         // The contact DOFs are ordered last: the trailing block of the factor is then the Schur
         // complement on them, which condenses the bodies onto the contact (crate::interface).
         let last = interface_dofs(&system, &normal_rows, &tangent_rows);
@@ -131,7 +160,12 @@ impl ContactProblem {
         }
         let mut solver = self.solver.clone();
         solver.refactor(&system.stiffness)?;
-        let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, self.slave)?;
+        let slave = if pairs.len() == self.slave.len() {
+            self.slave.clone()
+        } else {
+            vec![self.slave.first().copied().unwrap_or(SlaveKind::Deformable); pairs.len()]
+        };
+        let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, &slave)?;
         let friction = if pairs.len() == self.friction.len() { self.friction.clone() } else { vec![0.0; pairs.len()] };
         Ok(ContactProblem::assemble_parts(
             model,
@@ -141,7 +175,7 @@ impl ContactProblem {
             normal_rows,
             tangent_rows,
             friction,
-            self.slave,
+            slave,
             self.interface_dofs,
         ))
     }
@@ -155,10 +189,11 @@ impl ContactProblem {
         normal_rows: Vec<PairRow>,
         tangent_rows: Vec<PairRow>,
         friction: Vec<f64>,
-        slave: SlaveKind,
+        slave: Vec<SlaveKind>,
         interface_dofs: usize,
     ) -> ContactProblem {
         let pattern_prescribed = system.dofs.prescribed_values().to_vec();
+        let nodal = system.load.clone();
         let pattern_rhs = system.rhs(&pattern_prescribed);
         let k = system.stiffness.as_ref();
         let stiffness_scale = (0..k.ncols())
@@ -185,6 +220,12 @@ impl ContactProblem {
             gap,
             friction,
             tangential,
+            patterns: vec![LoadPattern {
+                name: "main".into(),
+                rhs: pattern_rhs.clone(),
+                prescribed: pattern_prescribed.clone(),
+                nodal,
+            }],
             pattern_rhs,
             pattern_prescribed,
             stiffness_scale,
@@ -221,6 +262,112 @@ impl ContactProblem {
         Ok(())
     }
 
+    /// The named load patterns.
+    pub fn patterns(&self) -> &[LoadPattern] {
+        &self.patterns
+    }
+
+    /// Replaces the load patterns (every pattern's vectors sized for this problem's free and
+    /// constrained DOFs) and applies the first one with factor 1.
+    ///
+    /// # Errors
+    /// No pattern, a wrong length, a non-finite value, or a repeated name.
+    pub fn set_patterns(&mut self, patterns: Vec<LoadPattern>) -> Result<(), ContactError> {
+        let (nf, nc) = (self.system.dofs.num_free(), self.system.dofs.num_constrained());
+        if patterns.is_empty() {
+            return Err(ContactError::InvalidInput("a problem needs at least one load pattern".into()));
+        }
+        for (i, p) in patterns.iter().enumerate() {
+            if p.rhs.len() != nf || p.prescribed.len() != nc {
+                return Err(ContactError::InvalidInput(format!(
+                    "load pattern \"{}\": {} + {} values for {nf} free and {nc} constrained DOFs",
+                    p.name,
+                    p.rhs.len(),
+                    p.prescribed.len()
+                )));
+            }
+            if p.rhs.iter().chain(&p.prescribed).any(|v| !v.is_finite()) {
+                return Err(ContactError::InvalidInput(format!("load pattern \"{}\" is not finite", p.name)));
+            }
+            if patterns[..i].iter().any(|q| q.name == p.name) {
+                return Err(ContactError::InvalidInput(format!("load pattern \"{}\" given twice", p.name)));
+            }
+        }
+        self.patterns = patterns;
+        let mut first = vec![0.0; self.patterns.len()];
+        first[0] = 1.0;
+        self.apply_load(&first, None)
+    }
+
+    /// Sets the load the algorithms scale by `w` to `Σ_p factors[p] · pattern_p`, plus
+    /// `extra_rhs` (free DOFs; e.g. the springs' force of a floating body's proximal step):
+    ///
+    /// ```text
+    /// r = Σ_p f_p r_p + r_extra,   u_c = Σ_p f_p u_c,p
+    /// ```
+    ///
+    /// # Errors
+    /// A factor count that differs from the number of patterns, non-finite factors, or an
+    /// `extra_rhs` of the wrong length.
+    pub fn apply_load(&mut self, factors: &[f64], extra_rhs: Option<&[f64]>) -> Result<(), ContactError> {
+        if factors.len() != self.patterns.len() || factors.iter().any(|f| !f.is_finite()) {
+            return Err(ContactError::InvalidInput(format!(
+                "{} finite load factors needed (one per pattern), got {:?}",
+                self.patterns.len(),
+                factors
+            )));
+        }
+        let mut rhs = vec![0.0; self.system.dofs.num_free()];
+        let mut prescribed = vec![0.0; self.system.dofs.num_constrained()];
+        for (p, f) in self.patterns.iter().zip(factors) {
+            if *f == 0.0 {
+                continue;
+            }
+            rhs.iter_mut().zip(&p.rhs).for_each(|(r, v)| *r += f * v);
+            prescribed.iter_mut().zip(&p.prescribed).for_each(|(r, v)| *r += f * v);
+        }
+        if let Some(extra) = extra_rhs {
+            if extra.len() != rhs.len() {
+                return Err(ContactError::InvalidInput("extra right-hand side of the wrong length".into()));
+            }
+            rhs.iter_mut().zip(extra).for_each(|(r, v)| *r += v);
+        }
+        self.pattern_rhs = rhs;
+        self.pattern_prescribed = prescribed;
+        Ok(())
+    }
+
+    /// The prescribed values `Σ_p f_p u_c,p` of the load with pattern factors `factors`.
+    pub fn prescribed_for(&self, factors: &[f64]) -> Vec<f64> {
+        let mut out = vec![0.0; self.system.dofs.num_constrained()];
+        for (p, f) in self.patterns.iter().zip(factors) {
+            out.iter_mut().zip(&p.prescribed).for_each(|(o, v)| *o += f * v);
+        }
+        out
+    }
+
+    /// Reactions at the constrained DOFs (per constrained index) of a displacement field `u`
+    /// (global DOF order) under the load with pattern factors `factors`:
+    ///
+    /// ```text
+    /// r_c = K_cf u_f + K_cc u_c − Σ_p f_p f_c,p
+    /// ```
+    pub fn reactions(&self, displacement: &[f64], factors: &[f64]) -> Vec<f64> {
+        let dofs = &self.system.dofs;
+        let u_free = dofs.restrict_free(displacement);
+        let u_c: Vec<f64> = dofs.constrained_dofs().iter().map(|d| displacement[d.0]).collect();
+        // LinearSystem::reactions subtracts the model's own loads; add them back and subtract
+        // the patterns' instead.
+        let mut r = self.system.reactions(&u_free, &u_c);
+        for (j, d) in dofs.constrained_dofs().iter().enumerate() {
+            r[j] += self.system.load[d.0];
+            for (p, f) in self.patterns.iter().zip(factors) {
+                r[j] -= f * p.nodal[d.0];
+            }
+        }
+        r
+    }
+
     /// Whether any pair has friction.
     pub fn is_frictional(&self) -> bool {
         self.friction.iter().any(|mu| *mu > 0.0)
@@ -251,17 +398,34 @@ impl ContactProblem {
 /// (docs/benchmarks.md, "Contact solves").
 const ORDERING: Ordering = Ordering::Amd;
 
+/// One named load pattern: its right-hand side over free DOFs and its prescribed values.
+///
+/// ```text
+/// r_p = f_p − K_fc u_c,p      (f_p: the pattern's nodal loads, u_c,p: its prescribed values)
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadPattern {
+    /// Name (scene files call the default pattern `main`).
+    pub name: String,
+    /// `r_p` over free DOFs.
+    pub rhs: Vec<f64>,
+    /// `u_c,p` per constrained index.
+    pub prescribed: Vec<f64>,
+    /// `f_p`: the pattern's nodal loads in global DOF order (for reactions).
+    pub nodal: Vec<f64>,
+}
+
 /// The normal and tangential rows of `pairs`.
 fn pair_rows(
     system: &LinearSystem,
     pairs: &[ContactPair],
-    slave: SlaveKind,
+    slave: &[SlaveKind],
 ) -> Result<(Vec<PairRow>, Vec<PairRow>), ContactError> {
     let mut normal_rows = Vec::with_capacity(pairs.len());
     let mut tangent_rows = Vec::with_capacity(pairs.len());
-    for p in pairs {
-        normal_rows.push(pair_row(system, p, p.normal, slave)?);
-        tangent_rows.push(pair_row(system, p, p.tangent, slave)?);
+    for (p, slave) in pairs.iter().zip(slave) {
+        normal_rows.push(pair_row(system, p, p.normal, *slave)?);
+        tangent_rows.push(pair_row(system, p, p.tangent, *slave)?);
     }
     Ok((normal_rows, tangent_rows))
 }

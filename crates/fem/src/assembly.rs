@@ -20,12 +20,12 @@ use contact2d_mesh::{CellKind, NodeId};
 use faer::sparse::{SparseColMat, Triplet};
 use rayon::prelude::*;
 
-use crate::dof::{DofKind, DofMap};
+use crate::dof::{Component, Dof, DofKind, DofMap};
 use crate::error::FemError;
 use crate::model::{EdgeLoad, Model};
 use crate::ordering::NodeGraph;
 use crate::pattern::assemble_free_free;
-use crate::rigid::check_rigid_modes;
+use crate::rigid::{FloatingPiece, check_rigid_modes, floating_pieces};
 
 /// Compressed sparse column matrix of f64 with usize indices.
 pub type Csc = SparseColMat<usize, f64>;
@@ -43,7 +43,25 @@ pub struct LinearSystem {
     pub constrained: Csc,
     /// External nodal loads in global DOF order.
     pub load: Vec<f64>,
+    /// The body pieces held by no Dirichlet condition (only with [`Model::allow_floating`]).
+    pub floating: Vec<FloatingPiece>,
+    /// `(free index, k)`: the springs to ground added to the diagonal of `K_ff` on the DOFs of
+    /// the floating pieces, so that `K_ff + D` is positive definite:
+    ///
+    /// ```text
+    /// k = FLOATING_SPRING · mean diag(K_ff) over the piece's free DOFs
+    /// ```
+    ///
+    /// A contact solve removes their effect exactly by the proximal iteration
+    /// `(K + D) u_{i+1} = f + Bᵀλ + D u_i` (at its fixed point `K u = f + Bᵀλ`).
+    pub stabilisation: Vec<(usize, f64)>,
 }
+
+/// The relative stiffness of the springs that stabilise a floating piece (see
+/// [`LinearSystem::stabilisation`]): small enough that one proximal iteration reduces the
+/// spring force by about this factor against the body's elastic stiffness, large enough that
+/// the condensed contact compliance stays well conditioned (about 1/FLOATING_SPRING).
+pub const FLOATING_SPRING: f64 = 1e-6;
 
 #[derive(Default)]
 struct Triplets {
@@ -66,7 +84,12 @@ impl Triplets {
 /// construction failure.
 pub fn assemble(model: &Model) -> Result<LinearSystem, FemError> {
     let dofs = model.dof_map()?;
-    check_rigid_modes(model, &dofs)?;
+    let floating = if model.allow_floating {
+        floating_pieces(model, &dofs)
+    } else {
+        check_rigid_modes(model, &dofs)?;
+        vec![]
+    };
     let cells: Vec<(usize, usize)> =
         model.bodies.iter().enumerate().flat_map(|(b, body)| (0..body.num_cells()).map(move |i| (b, i))).collect();
     let triplets = cells
@@ -85,13 +108,52 @@ pub fn assemble(model: &Model) -> Result<LinearSystem, FemError> {
         Csc::try_new_from_triplets(n, m, t).map_err(|e| FemError::Factorization(format!("sparse assembly: {e:?}")))
     };
     let graph = NodeGraph::of_model(model);
+    let mut stiffness = assemble_free_free(model, &dofs, &graph)?;
+    let stabilisation = stabilise(&mut stiffness, &dofs, &floating);
     Ok(LinearSystem {
-        stiffness: assemble_free_free(model, &dofs, &graph)?,
+        stiffness,
         coupling: build(nf, nc, &triplets.fc)?,
         constrained: build(nc, nc, &triplets.cc)?,
-        load: assemble_edge_loads(model)?,
+        load: assemble_edge_loads(model, &model.edge_loads)?,
         dofs,
+        floating,
+        stabilisation,
     })
+}
+
+/// Adds the springs of [`LinearSystem::stabilisation`] to the diagonal of `K_ff` (lower
+/// triangle, sorted rows: the diagonal is the first entry of its column).
+fn stabilise(stiffness: &mut Csc, dofs: &DofMap, floating: &[FloatingPiece]) -> Vec<(usize, f64)> {
+    let mut springs = vec![];
+    for piece in floating {
+        let free: Vec<usize> = piece
+            .nodes
+            .iter()
+            .flat_map(|&n| [Dof::of(n, Component::X), Dof::of(n, Component::Y)])
+            .filter_map(|d| match dofs.kind(d) {
+                DofKind::Free(i) => Some(i),
+                _ => None,
+            })
+            .collect();
+        let diagonal = |k: &Csc, i: usize| {
+            let k = k.as_ref();
+            k.row_idx_of_col(i).zip(k.val_of_col(i)).find(|(r, _)| *r == i).map_or(0.0, |(_, v)| *v)
+        };
+        let mean = free.iter().map(|&i| diagonal(stiffness, i)).sum::<f64>() / free.len().max(1) as f64;
+        let k = FLOATING_SPRING * mean;
+        springs.extend(free.iter().map(|&i| (i, k)));
+    }
+    if springs.is_empty() {
+        return springs;
+    }
+    let (col_ptr, row_idx) = (stiffness.symbolic().col_ptr().to_vec(), stiffness.symbolic().row_idx().to_vec());
+    let values = stiffness.val_mut();
+    for &(i, k) in &springs {
+        if let Some(at) = (col_ptr[i]..col_ptr[i + 1]).find(|&at| row_idx[at] == i) {
+            values[at] += k;
+        }
+    }
+    springs
 }
 
 fn scatter_cell(model: &Model, dofs: &DofMap, b: usize, i: usize, t: &mut Triplets) -> Result<(), FemError> {
@@ -117,15 +179,18 @@ fn scatter_cell(model: &Model, dofs: &DofMap, b: usize, i: usize, t: &mut Triple
     Ok(())
 }
 
-/// Consistent nodal forces of all edge loads, in global DOF order: the traction (per unit
-/// length and thickness) times the thickness of the body that owns the edge.
-fn assemble_edge_loads(model: &Model) -> Result<Vec<f64>, FemError> {
+/// Consistent nodal forces of `loads` (edge loads on `model`'s mesh), in global DOF order: the
+/// traction (per unit length and thickness) times the thickness of the body that owns the edge.
+///
+/// # Errors
+/// An unknown group, or an edge that bounds no body.
+pub fn assemble_edge_loads(model: &Model, loads: &[EdgeLoad]) -> Result<Vec<f64>, FemError> {
     let mut f = vec![0.0; 2 * model.mesh.num_nodes()];
-    if model.edge_loads.is_empty() {
+    if loads.is_empty() {
         return Ok(f);
     }
     let owners = edge_owners(model);
-    for load in &model.edge_loads {
+    for load in loads {
         let (group, traction, pressure) = match load {
             EdgeLoad::Traction { group, traction } => (group, *traction, 0.0),
             EdgeLoad::Pressure { group, pressure } => (group, [0.0; 2], *pressure),
@@ -188,7 +253,13 @@ fn outward_sign(cell: &[[f64; 2]], edge: &[[f64; 2]]) -> f64 {
 impl LinearSystem {
     /// The right-hand side `f_f - K_fc u_c` for prescribed values `u_c` (per constrained index).
     pub fn rhs(&self, prescribed: &[f64]) -> Vec<f64> {
-        let mut rhs: Vec<f64> = self.dofs.free_dofs().iter().map(|d| self.load[d.0]).collect();
+        self.rhs_with(&self.load, prescribed)
+    }
+
+    /// The right-hand side `f_f - K_fc u_c` for nodal loads `load` (global DOF order, e.g. one
+    /// load pattern's from [`assemble_edge_loads`]) and prescribed values `u_c`.
+    pub fn rhs_with(&self, load: &[f64], prescribed: &[f64]) -> Vec<f64> {
+        let mut rhs: Vec<f64> = self.dofs.free_dofs().iter().map(|d| load[d.0]).collect();
         for (j, &uc) in prescribed.iter().enumerate() {
             if uc == 0.0 {
                 continue;

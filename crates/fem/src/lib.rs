@@ -22,12 +22,12 @@ pub mod rigid;
 pub mod solution;
 pub mod solve;
 
-pub use assembly::{Csc, LinearSystem, assemble};
+pub use assembly::{Csc, FLOATING_SPRING, LinearSystem, assemble, assemble_edge_loads};
 pub use dof::{Component, Dof, DofKind, DofMap};
 pub use error::FemError;
 pub use model::{Body, BodyId, Dirichlet, EdgeLoad, Model, element_type};
 pub use ordering::{Ordering, fill_reducing_permutation};
 pub use recovery::{CurveSample, StressRecovery, nodal_stresses, stresses_along_curve};
-pub use rigid::check_rigid_modes;
+pub use rigid::{FloatingPiece, check_rigid_modes, floating_pieces};
 pub use solution::{Solution, solve_linear, strain_energy};
 pub use solve::CholeskySolver;

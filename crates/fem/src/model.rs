@@ -97,6 +97,11 @@ pub struct Model {
     pub dirichlet: Vec<Dirichlet>,
     /// Edge loads.
     pub edge_loads: Vec<EdgeLoad>,
+    /// Whether a body piece that the Dirichlet conditions leave free to move rigidly is
+    /// accepted (held by contact; assembly then adds a vanishing stabilisation that the contact
+    /// solve removes, see [`crate::assembly::LinearSystem::stabilisation`]) instead of rejected
+    /// with [`FemError::UnconstrainedBody`].
+    pub allow_floating: bool,
 }
 
 /// The element type of a 2D cell kind.
@@ -114,7 +119,7 @@ pub fn element_type(kind: CellKind) -> Option<ElementType> {
 impl Model {
     /// An empty model on `mesh`.
     pub fn new(mesh: Mesh) -> Model {
-        Model { mesh, bodies: vec![], dirichlet: vec![], edge_loads: vec![] }
+        Model { mesh, bodies: vec![], dirichlet: vec![], edge_loads: vec![], allow_floating: false }
     }
 
     /// Adds the 2D physical group `region` as a body of `material` and `thickness`, checking every

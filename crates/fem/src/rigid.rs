@@ -16,6 +16,80 @@ use crate::dof::{Component, Dof, DofKind, DofMap};
 use crate::error::FemError;
 use crate::model::Model;
 
+/// A connected piece of a body that the Dirichlet conditions leave free to move rigidly: a body
+/// held only by contact (a pin pushed by a force, a roller pressed on a block).
+///
+/// ```text
+/// rigid motion u(x) = (a − θ (x2 − c2)/L, b + θ (x1 − c1)/L)   (c: the piece's centroid, L: its radius)
+/// free modes: a basis of the (a, b, θ) that no constrained DOF of the piece sees
+/// ```
+#[derive(Debug, Clone, PartialEq)]
+pub struct FloatingPiece {
+    /// The body's name.
+    pub body: String,
+    /// The piece's nodes.
+    pub nodes: Vec<usize>,
+    /// Unit vectors `(a, b, θ)` spanning the free rigid motions, in the centred and scaled
+    /// coordinates above.
+    pub free_modes: Vec<[f64; 3]>,
+    /// The centroid `c` and radius `L` that scale the modes.
+    pub centre: [f64; 2],
+    /// The radius `L`.
+    pub scale: f64,
+}
+
+impl FloatingPiece {
+    /// Names of the free modes for people: "u1 translation", "u2 translation", "rotation", or
+    /// a mixture written as its components.
+    pub fn mode_names(&self) -> Vec<String> {
+        self.free_modes
+            .iter()
+            .map(|m| {
+                let largest = m.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+                let pure =
+                    |k: usize| m[k].abs() > (1.0 - 1e-9) * largest && m.iter().filter(|v| v.abs() > 1e-6).count() == 1;
+                match (0..3).find(|&k| pure(k)) {
+                    Some(0) => "u1 translation".to_string(),
+                    Some(1) => "u2 translation".to_string(),
+                    Some(_) => "rotation".to_string(),
+                    None => format!("rigid motion (a, b, θ) = ({:.3}, {:.3}, {:.3})", m[0], m[1], m[2]),
+                }
+            })
+            .collect()
+    }
+}
+
+/// Every connected piece of every body that the Dirichlet conditions do not hold against all
+/// three rigid modes, with its free modes.
+pub fn floating_pieces(model: &Model, dofs: &DofMap) -> Vec<FloatingPiece> {
+    let mut out = vec![];
+    for body in &model.bodies {
+        for piece in connected_pieces(body) {
+            let (normal, centre, scale) = constraint_normal_matrix(model, dofs, &piece);
+            let eig = normal.symmetric_eigen();
+            let largest = eig.eigenvalues.iter().fold(0.0f64, |a, e| a.max(*e)).max(f64::MIN_POSITIVE);
+            let mut order: Vec<usize> = (0..3).collect();
+            order.sort_by(|a, b| eig.eigenvalues[*a].total_cmp(&eig.eigenvalues[*b]));
+            let free_modes: Vec<[f64; 3]> = order
+                .into_iter()
+                .filter(|&k| !(eig.eigenvalues[k] > 1e-10 * largest && eig.eigenvalues[k] > 1e-14))
+                .map(|k| {
+                    let v = eig.eigenvectors.column(k);
+                    // A sign convention for bit-reproducible output: the largest component positive.
+                    let big = (0..3).max_by(|a, b| v[*a].abs().total_cmp(&v[*b].abs())).unwrap_or(0);
+                    let s = if v[big] < 0.0 { -1.0 } else { 1.0 };
+                    let snap = |x: f64| if x.abs() < 1e-12 { 0.0 } else { s * x };
+                    [snap(v[0]), snap(v[1]), snap(v[2])]
+                })
+                .collect();
+            if !free_modes.is_empty() {
+                out.push(FloatingPiece { body: body.name.clone(), nodes: piece, free_modes, centre, scale });
+            }
+        }
+    }
+    out
+}
+
 /// Checks that every connected piece of every body is held against all three rigid modes.
 ///
 /// # Errors
@@ -38,6 +112,15 @@ pub fn check_rigid_modes(model: &Model, dofs: &DofMap) -> Result<(), FemError> {
 }
 
 fn constraint_rank(model: &Model, dofs: &DofMap, nodes: &[usize]) -> usize {
+    let (normal, _, _) = constraint_normal_matrix(model, dofs, nodes);
+    let eig = normal.symmetric_eigenvalues();
+    let largest = eig.max().max(f64::MIN_POSITIVE);
+    eig.iter().filter(|&&e| e > 1e-10 * largest && e > 1e-14).count()
+}
+
+/// `Σ r rᵀ` over the constraint rows `r` of the piece's constrained DOFs, in centred and scaled
+/// coordinates, with the centre and scale.
+fn constraint_normal_matrix(model: &Model, dofs: &DofMap, nodes: &[usize]) -> (Matrix3<f64>, [f64; 2], f64) {
     let pts: Vec<[f64; 2]> = nodes.iter().map(|&n| model.mesh.points[n]).collect();
     let count = pts.len().max(1) as f64;
     let centre = [pts.iter().map(|p| p[0]).sum::<f64>() / count, pts.iter().map(|p| p[1]).sum::<f64>() / count];
@@ -53,9 +136,7 @@ fn constraint_rank(model: &Model, dofs: &DofMap, nodes: &[usize]) -> usize {
             }
         }
     }
-    let eig = normal.symmetric_eigenvalues();
-    let largest = eig.max().max(f64::MIN_POSITIVE);
-    eig.iter().filter(|&&e| e > 1e-10 * largest && e > 1e-14).count()
+    (normal, centre, scale)
 }
 
 /// Connected pieces of a body (nodes linked by sharing a cell), by union-find over a dense

@@ -1,0 +1,484 @@
+//! From a description of the problem to a [`ContactProblem`]: bodies by region, Dirichlet
+//! conditions and edge loads by group, each in a named load pattern, and contact interfaces
+//! between named curves.
+//!
+//! ```text
+//! ProblemDescription { mesh, bodies, fixes, loads, contacts }
+//!   → Model (bodies, every fix; floating bodies allowed)
+//!   → pairs per interface (node-to-segment, or node-to-node after sliding the slave nodes)
+//!   → ContactProblem (friction and gaps per interface, set before anything is condensed)
+//!   → load patterns:  r_p = f_p − K_fc u_c,p
+//! force F on a group of length L:  traction t = F / L (uniform; per unit thickness)
+//! ```
+//!
+//! The slave side of an interface is found from the mesh: the body whose cells own its edges,
+//! or, with `rigid_slave`, the meshed 2D region of a fixed obstacle that is no body.
+
+use std::ops::Range;
+
+use contact2d_element::{Material, PlaneCondition};
+use contact2d_fem::{Component, DofKind, EdgeLoad, Model, assemble_edge_loads};
+use contact2d_mesh::morph::move_nodes;
+use contact2d_mesh::{CellKind, Contour, Mesh};
+
+use crate::error::ContactError;
+use crate::pairing::{ContactPair, node_to_node_targets, pair_contours};
+use crate::problem::{ContactProblem, LoadPattern};
+
+/// The pattern of values and loads that name none.
+pub const DEFAULT_PATTERN: &str = "main";
+
+/// One elastic body: a 2D physical group with its material.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyDescription {
+    /// The 2D physical group.
+    pub region: String,
+    /// Young's modulus E.
+    pub youngs_modulus: f64,
+    /// Poisson's ratio ν.
+    pub poissons_ratio: f64,
+    /// Plane stress or strain.
+    pub plane: PlaneCondition,
+    /// Out-of-plane thickness.
+    pub thickness: f64,
+}
+
+/// A prescribed displacement component on every node of a group.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FixDescription {
+    /// A 1D or 0D physical group.
+    pub group: String,
+    /// The component.
+    pub component: Component,
+    /// Its value (0: a support, in no pattern).
+    pub value: f64,
+    /// The load pattern a non-zero value belongs to.
+    pub pattern: String,
+}
+
+/// How an edge load is given.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum EdgeLoadKind {
+    /// The total force `[F1, F2]` on the group per unit thickness, spread as a uniform
+    /// traction `F / L` over its length `L`.
+    Force([f64; 2]),
+    /// A traction vector (force per unit length and thickness).
+    Traction([f64; 2]),
+    /// A pressure, positive against the body.
+    Pressure(f64),
+}
+
+/// An edge load on a 1D group.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadDescription {
+    /// The 1D physical group.
+    pub group: String,
+    /// What is applied.
+    pub kind: EdgeLoadKind,
+    /// The load pattern it belongs to.
+    pub pattern: String,
+}
+
+/// How an interface's pairs are made.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Pairing {
+    /// Each master node against the closest point of the slave curve (the mesh as given).
+    NodeToSegment,
+    /// The slave nodes slid along their curve onto the paired points first (mesh morphing,
+    /// topology unchanged), so that every pair is node-to-node; needs as many slave nodes as
+    /// master nodes facing each other.
+    NodeToNode,
+}
+
+/// The initial gap of an interface's pairs.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum GapDescription {
+    /// The geometric distance of the paired points along the normal.
+    Geometric,
+    /// The same given gap for every pair (negative: an interference).
+    Given(f64),
+}
+
+/// A contact interface between two curves.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactDescription {
+    /// Its name (outputs are keyed by it).
+    pub name: String,
+    /// The master curve (1D group): its nodes are paired.
+    pub master: String,
+    /// The slave curve (1D group).
+    pub slave: String,
+    /// Whether the slave curve is a fixed, rigid obstacle (its region is no body).
+    pub rigid_slave: bool,
+    /// How pairs are made.
+    pub pairing: Pairing,
+    /// The initial gap.
+    pub gap: GapDescription,
+    /// Coulomb's friction coefficient μ.
+    pub friction: f64,
+}
+
+/// A whole problem.
+#[derive(Debug, Clone)]
+pub struct ProblemDescription {
+    /// The mesh.
+    pub mesh: Mesh,
+    /// The bodies.
+    pub bodies: Vec<BodyDescription>,
+    /// Prescribed displacements.
+    pub fixes: Vec<FixDescription>,
+    /// Edge loads.
+    pub loads: Vec<LoadDescription>,
+    /// Contact interfaces.
+    pub contacts: Vec<ContactDescription>,
+}
+
+/// Where an interface's pairs sit in the built problem.
+#[derive(Debug, Clone, PartialEq)]
+pub struct InterfaceInfo {
+    /// The interface's name.
+    pub name: String,
+    /// Its pairs: `problem.pairs[pairs]`, in order along the master curve.
+    pub pairs: Range<usize>,
+    /// The master curve's group.
+    pub master: String,
+    /// The slave curve's group.
+    pub slave: String,
+    /// The region (body) that owns the master curve.
+    pub master_region: String,
+    /// The region that owns the slave curve (a body, or the obstacle's region).
+    pub slave_region: String,
+    /// Whether the slave is a rigid obstacle.
+    pub rigid_slave: bool,
+    /// The master curve (arc length `s` from its first node).
+    pub master_contour: Contour,
+    /// Its friction coefficient.
+    pub friction: f64,
+}
+
+/// A built problem with what its outputs need.
+#[derive(Debug, Clone)]
+pub struct BuiltProblem {
+    /// The contact problem, its load patterns set.
+    pub problem: ContactProblem,
+    /// The interfaces, in the order given.
+    pub interfaces: Vec<InterfaceInfo>,
+}
+
+impl ProblemDescription {
+    /// Builds the contact problem (see the module docs).
+    ///
+    /// # Errors
+    /// Invalid values (non-positive moduli or thickness, ν out of range, non-finite values,
+    /// μ < 0), unknown or misdimensioned groups, a curve no region owns, a rigid slave that is a
+    /// body, a deformable slave that is none, a value prescribed twice in two patterns, and
+    /// every error of the model, pairing and factorisation.
+    pub fn build(&self) -> Result<BuiltProblem, ContactError> {
+        self.check_values()?;
+        let mut mesh = self.mesh.clone();
+        if self.contacts.iter().any(|c| c.pairing == Pairing::NodeToNode) {
+            let model = self.model(mesh.clone())?;
+            for c in self.contacts.iter().filter(|c| c.pairing == Pairing::NodeToNode) {
+                let (pairs, slave, _) = self.pair(&model, c)?;
+                let targets = node_to_node_targets(&pairs, &slave)?;
+                move_nodes(&mut mesh, &targets, 2).map_err(|e| ContactError::Pairing {
+                    master: c.master.clone(),
+                    slave: c.slave.clone(),
+                    reason: format!("node-to-node pairing of contact \"{}\": {e}", c.name),
+                })?;
+            }
+        }
+        let model = self.model(mesh)?;
+        let mut pairs = vec![];
+        let mut rigid = vec![];
+        let mut interfaces = vec![];
+        let mut gaps = vec![];
+        let mut friction = vec![];
+        for c in &self.contacts {
+            let (mut p, _, slave_region) = self.pair(&model, c)?;
+            let master_contour = Contour::from_group(&model.mesh, &c.master)?;
+            let start = pairs.len();
+            gaps.extend(p.iter().map(|pair| match c.gap {
+                GapDescription::Geometric => pair.gap,
+                GapDescription::Given(g) => g,
+            }));
+            friction.extend(std::iter::repeat_n(c.friction, p.len()));
+            rigid.extend(std::iter::repeat_n(c.rigid_slave, p.len()));
+            pairs.append(&mut p);
+            interfaces.push(InterfaceInfo {
+                name: c.name.clone(),
+                pairs: start..pairs.len(),
+                master: c.master.clone(),
+                slave: c.slave.clone(),
+                master_region: owning_region(&model.mesh, &c.master, &self.regions())?,
+                slave_region,
+                rigid_slave: c.rigid_slave,
+                master_contour,
+                friction: c.friction,
+            });
+        }
+        let patterns = self.pattern_names();
+        let mut problem = ContactProblem::with_slave_kinds(model, pairs, &rigid)?;
+        problem.set_gaps(gaps)?;
+        problem.friction = friction;
+        let load_patterns = self.load_patterns(&problem, &patterns)?;
+        problem.set_patterns(load_patterns)?;
+        Ok(BuiltProblem { problem, interfaces })
+    }
+
+    /// The bodies' regions.
+    fn regions(&self) -> Vec<&str> {
+        self.bodies.iter().map(|b| b.region.as_str()).collect()
+    }
+
+    /// Values that no later stage would catch with a clear message.
+    fn check_values(&self) -> Result<(), ContactError> {
+        let fail = |what: String| Err(ContactError::InvalidInput(what));
+        if self.bodies.is_empty() {
+            return fail("no body: give at least one [[body]] region".into());
+        }
+        for b in &self.bodies {
+            if !(b.thickness.is_finite() && b.thickness > 0.0) {
+                return fail(format!("body \"{}\": thickness {} must be finite and > 0", b.region, b.thickness));
+            }
+        }
+        for (i, c) in self.contacts.iter().enumerate() {
+            if !(c.friction.is_finite() && c.friction >= 0.0) {
+                return fail(format!("contact \"{}\": friction {} must be finite and ≥ 0", c.name, c.friction));
+            }
+            if let GapDescription::Given(g) = c.gap
+                && !g.is_finite()
+            {
+                return fail(format!("contact \"{}\": gap {g} is not finite", c.name));
+            }
+            if c.master == c.slave {
+                return fail(format!("contact \"{}\": master and slave are the same curve \"{}\"", c.name, c.master));
+            }
+            if self.contacts[..i].iter().any(|d| d.name == c.name) {
+                return fail(format!("contact \"{}\" named twice", c.name));
+            }
+        }
+        Ok(())
+    }
+
+    /// The model: every body, every fix; floating bodies allowed.
+    fn model(&self, mesh: Mesh) -> Result<Model, ContactError> {
+        let mut model = Model::new(mesh);
+        model.allow_floating = true;
+        for b in &self.bodies {
+            let material = Material::new(b.youngs_modulus, b.poissons_ratio, b.plane)
+                .map_err(|e| ContactError::InvalidInput(format!("body \"{}\": {e}", b.region)))?;
+            model.add_body(&b.region, material, b.thickness)?;
+        }
+        for f in &self.fixes {
+            model.fix(&f.group, f.component, f.value)?;
+        }
+        Ok(model)
+    }
+
+    /// Pairs of one interface on `model`, with the slave contour and the slave's region.
+    fn pair(&self, model: &Model, c: &ContactDescription) -> Result<(Vec<ContactPair>, Contour, String), ContactError> {
+        let master = Contour::from_group(&model.mesh, &c.master)?;
+        let slave = Contour::from_group(&model.mesh, &c.slave)?;
+        let region = owning_region(&model.mesh, &c.slave, &self.regions())?;
+        let is_body = model.body(&region).is_some();
+        let err = |reason: String| ContactError::Pairing { master: c.master.clone(), slave: c.slave.clone(), reason };
+        match (c.rigid_slave, is_body) {
+            (true, true) => {
+                return Err(err(format!(
+                    "contact \"{}\": rigid = true, but the slave curve bounds the body \"{region}\" (a rigid obstacle \
+                     must be a meshed region that is no [[body]])",
+                    c.name
+                )));
+            }
+            (false, false) => {
+                return Err(err(format!(
+                    "contact \"{}\": the slave curve bounds region \"{region}\", which is no [[body]] (add the body, \
+                     or set rigid = true for a fixed obstacle)",
+                    c.name
+                )));
+            }
+            _ => {}
+        }
+        let master_region = owning_region(&model.mesh, &c.master, &self.regions())?;
+        if model.body(&master_region).is_none() {
+            return Err(err(format!(
+                "contact \"{}\": the master curve bounds region \"{master_region}\", which is no [[body]]",
+                c.name
+            )));
+        }
+        let pairs = pair_contours(model, &master, &slave, &region)?;
+        Ok((pairs, slave, region))
+    }
+
+    /// The pattern names: `main` first when anything uses it, then in order of appearance.
+    fn pattern_names(&self) -> Vec<String> {
+        let used = self
+            .fixes
+            .iter()
+            .filter(|f| f.value != 0.0)
+            .map(|f| &f.pattern)
+            .chain(self.loads.iter().map(|l| &l.pattern));
+        let mut names: Vec<String> = vec![];
+        for name in used {
+            if !names.contains(name) {
+                names.push(name.clone());
+            }
+        }
+        if let Some(at) = names.iter().position(|n| n == DEFAULT_PATTERN) {
+            let main = names.remove(at);
+            names.insert(0, main);
+        }
+        if names.is_empty() {
+            names.push(DEFAULT_PATTERN.to_string());
+        }
+        names
+    }
+
+    /// Every pattern's right-hand side and prescribed values on the built problem.
+    fn load_patterns(&self, problem: &ContactProblem, names: &[String]) -> Result<Vec<LoadPattern>, ContactError> {
+        let model = &problem.model;
+        let dofs = &problem.system.dofs;
+        let mut owner: Vec<Option<usize>> = vec![None; dofs.num_constrained()];
+        let mut prescribed = vec![vec![0.0; dofs.num_constrained()]; names.len()];
+        for f in self.fixes.iter().filter(|f| f.value != 0.0) {
+            let p = names.iter().position(|n| *n == f.pattern).unwrap_or(0);
+            for node in model.mesh.group_nodes(&f.group)? {
+                if let DofKind::Constrained(j) = dofs.kind(contact2d_fem::Dof::of(node.0, f.component)) {
+                    if owner[j].is_some_and(|q| q != p) {
+                        return Err(ContactError::InvalidInput(format!(
+                            "group \"{}\": {} at node {} is prescribed in two load patterns (\"{}\" and \"{}\")",
+                            f.group,
+                            f.component.name(),
+                            model.mesh.node_tags.get(node.0).copied().unwrap_or(node.0 as u64),
+                            names[owner[j].unwrap_or(0)],
+                            names[p]
+                        )));
+                    }
+                    owner[j] = Some(p);
+                    prescribed[p][j] = f.value;
+                }
+            }
+        }
+        let mut patterns = Vec::with_capacity(names.len());
+        for (p, name) in names.iter().enumerate() {
+            let loads: Vec<EdgeLoad> = self
+                .loads
+                .iter()
+                .filter(|l| l.pattern == *name)
+                .map(|l| edge_load(&model.mesh, l))
+                .collect::<Result<_, _>>()?;
+            let nodal = assemble_edge_loads(model, &loads)?;
+            let rhs = problem.system.rhs_with(&nodal, &prescribed[p]);
+            patterns.push(LoadPattern { name: name.clone(), rhs, prescribed: prescribed[p].clone(), nodal });
+        }
+        Ok(patterns)
+    }
+}
+
+/// The fem edge load of a description (a total force becomes a uniform traction).
+fn edge_load(mesh: &Mesh, load: &LoadDescription) -> Result<EdgeLoad, ContactError> {
+    let group = load.group.clone();
+    let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
+    let bad = || ContactError::InvalidInput(format!("load on \"{}\" is not finite", load.group));
+    Ok(match load.kind {
+        EdgeLoadKind::Force(f) => {
+            if !finite(&f) {
+                return Err(bad());
+            }
+            let length = group_length(mesh, &load.group)?;
+            if !(length > 0.0) {
+                return Err(ContactError::InvalidInput(format!(
+                    "force on \"{}\": the group has no length",
+                    load.group
+                )));
+            }
+            EdgeLoad::Traction { group, traction: [f[0] / length, f[1] / length] }
+        }
+        EdgeLoadKind::Traction(t) => {
+            if !finite(&t) {
+                return Err(bad());
+            }
+            EdgeLoad::Traction { group, traction: t }
+        }
+        EdgeLoadKind::Pressure(p) => {
+            if !p.is_finite() {
+                return Err(bad());
+            }
+            EdgeLoad::Pressure { group, pressure: p }
+        }
+    })
+}
+
+/// The length of a 1D group: every line cell's arc length (5-point Gauss on the isoparametric
+/// edge; exact for straight and parabolic edges up to round-off).
+///
+/// # Errors
+/// An unknown group, or one that is not 1D.
+pub fn group_length(mesh: &Mesh, group: &str) -> Result<f64, ContactError> {
+    const GAUSS5: [(f64, f64); 5] = [
+        (-0.906_179_845_938_664, 0.236_926_885_056_189),
+        (-0.538_469_310_105_683, 0.478_628_670_499_366),
+        (0.0, 0.568_888_888_888_889),
+        (0.538_469_310_105_683, 0.478_628_670_499_366),
+        (0.906_179_845_938_664, 0.236_926_885_056_189),
+    ];
+    if mesh.group(group)?.dim != 1 {
+        return Err(ContactError::InvalidInput(format!("\"{group}\" is not a 1D group (a curve)")));
+    }
+    let mut length = 0.0;
+    for block in mesh.blocks_in_group(group)? {
+        for cell in block.cells() {
+            let p: Vec<[f64; 2]> = cell.iter().map(|n| mesh.points[n.0]).collect();
+            length += match (block.kind, p.as_slice()) {
+                (CellKind::Line2, [a, b, ..]) => (b[0] - a[0]).hypot(b[1] - a[1]),
+                (CellKind::Line3, [a, b, m, ..]) => GAUSS5
+                    .iter()
+                    .map(|(xi, w)| {
+                        // dN/dξ of (ξ(ξ−1)/2, ξ(ξ+1)/2, 1 − ξ²).
+                        let d = [xi - 0.5, xi + 0.5, -2.0 * xi];
+                        let dx = d[0] * a[0] + d[1] * b[0] + d[2] * m[0];
+                        let dy = d[0] * a[1] + d[1] * b[1] + d[2] * m[1];
+                        w * dx.hypot(dy)
+                    })
+                    .sum::<f64>(),
+                _ => 0.0,
+            };
+        }
+    }
+    Ok(length)
+}
+
+/// The 2D physical group whose cells hold every node of the curve `group` (the body or
+/// obstacle the curve bounds): the first of `preferred` (e.g. the bodies' regions) that does,
+/// else the first other 2D group by name.
+///
+/// # Errors
+/// No 2D group holds the whole curve.
+pub fn owning_region(mesh: &Mesh, group: &str, preferred: &[&str]) -> Result<String, ContactError> {
+    let nodes = mesh.group_nodes(group)?;
+    let mut others: Vec<&str> = mesh
+        .groups
+        .iter()
+        .filter(|g| g.dim == 2 && !preferred.contains(&g.name.as_str()))
+        .map(|g| g.name.as_str())
+        .collect();
+    others.sort_unstable();
+    let candidates = preferred.iter().copied().filter(|n| mesh.group(n).is_ok_and(|g| g.dim == 2)).chain(others);
+    for name in candidates {
+        let mut inside = vec![false; mesh.num_nodes()];
+        for block in mesh.blocks_in_group(name)? {
+            for cell in block.cells() {
+                for n in cell {
+                    inside[n.0] = true;
+                }
+            }
+        }
+        if nodes.iter().all(|n| inside[n.0]) {
+            return Ok(name.to_string());
+        }
+    }
+    Err(ContactError::InvalidInput(format!(
+        "curve \"{group}\" bounds no 2D physical group (no body or obstacle owns it)"
+    )))
+}

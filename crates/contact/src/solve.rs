@@ -1,0 +1,414 @@
+//! One entry point for solving: `solve(&problem, &settings, &schedule) -> History`.
+//!
+//! ```text
+//! for each step i of the schedule (factors F_i of the load patterns):
+//!     load_i = Σ_p F_i[p] pattern_p
+//!     solve the step from StepStart(s_{i−1}, τ_{i−1}) with the chosen algorithm
+//!     Φ_f += dissipation_i
+//! ```
+//!
+//! Shortcut: without any initial gap and with proportional loading that only grows
+//! (`F_i = t_i d`, `0 < t_1 < t_2 < ...`), the solution is linear in `t` (the zones form at the
+//! first instant and never change: spec §5.2, for friction too), so it is solved once at `d` and
+//! scaled: `u_i = t_i u(d)`, `Φ_f,i = t_i² Φ_f(d)`. This is exact, not an approximation.
+//!
+//! Floating bodies (held only by contact): assembly adds springs `D` of relative stiffness
+//! [`contact2d_fem::FLOATING_SPRING`] to their DOFs, and each step is solved by the proximal
+//! iteration
+//!
+//! ```text
+//! (K + D) u_{j+1} = f + Bᵀλ_{j+1} + D u_j          (a contact solve with the extra load D u_j)
+//! ```
+//!
+//! whose fixed point is `K u = f + Bᵀλ` exactly: the springs carry no force in the answer. The
+//! residual `‖D (u_{j+1} − u_j)‖∞`, the force the springs still carry, is the equilibrium error;
+//! the iteration stops when it is below [`SolverSettings::floating_tolerance`] times the force
+//! scale, and reports it. A body the contact does not hold keeps moving by `D⁻¹ f` per iteration:
+//! the residual does not fall, and the step fails with [`ContactError::BodyNotHeld`] naming the
+//! body and its free rigid motions.
+
+use crate::boussinesq::{BoussinesqLoading, solve_boussinesq_step};
+use crate::error::ContactError;
+use crate::friction::solve_frictional_active_set;
+use crate::interface::Interface;
+use crate::loading::LoadSchedule;
+use crate::problem::ContactProblem;
+use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
+use crate::tresca_qp::solve_frictional_qp;
+
+/// Which algorithm solves each step. Adding an algorithm is one file plus one variant here.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum ContactAlgorithm {
+    /// Primal-dual active set on the condensed interface (frictional or not).
+    ActiveSet,
+    /// Clarabel: frictionless QP, or Tresca QPs to the Coulomb fixed point (the independent
+    /// check).
+    Clarabel,
+    /// The paper's paired-node Boussinesq algorithm: one contact zone growing from the end of
+    /// the master curve where the initial gap is smallest, stick inside slip. Loads must grow.
+    Boussinesq,
+}
+
+/// Validated solver settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolverSettings {
+    algorithm: ContactAlgorithm,
+    max_iterations: usize,
+    floating_tolerance: f64,
+    max_floating_iterations: usize,
+}
+
+impl SolverSettings {
+    /// The defaults for `algorithm`: 100 iterations, floating tolerance 1e-10, 60 proximal
+    /// iterations.
+    pub fn new(algorithm: ContactAlgorithm) -> SolverSettings {
+        SolverSettings { algorithm, max_iterations: 100, floating_tolerance: 1e-10, max_floating_iterations: 60 }
+    }
+
+    /// Sets the iteration limit of the algorithm per step.
+    ///
+    /// # Errors
+    /// Zero, or more than 1 000 000.
+    pub fn with_max_iterations(mut self, max_iterations: usize) -> Result<SolverSettings, ContactError> {
+        if !(1..=1_000_000).contains(&max_iterations) {
+            return Err(ContactError::InvalidInput(format!(
+                "max_iterations = {max_iterations} must lie in 1 ..= 1000000"
+            )));
+        }
+        self.max_iterations = max_iterations;
+        Ok(self)
+    }
+
+    /// Sets the relative equilibrium tolerance of floating bodies' proximal iteration.
+    ///
+    /// # Errors
+    /// Outside `[1e-15, 1e-3]`.
+    pub fn with_floating_tolerance(mut self, tolerance: f64) -> Result<SolverSettings, ContactError> {
+        if !(1e-15..=1e-3).contains(&tolerance) {
+            return Err(ContactError::InvalidInput(format!(
+                "floating tolerance {tolerance} must lie in [1e-15, 1e-3]"
+            )));
+        }
+        self.floating_tolerance = tolerance;
+        Ok(self)
+    }
+
+    /// The algorithm.
+    pub fn algorithm(&self) -> ContactAlgorithm {
+        self.algorithm
+    }
+
+    /// The iteration limit per step.
+    pub fn max_iterations(&self) -> usize {
+        self.max_iterations
+    }
+
+    /// The floating bodies' relative equilibrium tolerance.
+    pub fn floating_tolerance(&self) -> f64 {
+        self.floating_tolerance
+    }
+}
+
+/// One solved step of a schedule.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SolvedStep {
+    /// The factors of the problem's load patterns (in [`ContactProblem::patterns`] order).
+    pub factors: Vec<f64>,
+    /// The solution (its `load_factor` is 1: the load is the factors' combination).
+    pub solution: ContactSolution,
+    /// Φ_f accumulated up to and including this step.
+    pub dissipated: f64,
+    /// Proximal iterations of floating bodies (0 without floating bodies).
+    pub floating_iterations: usize,
+    /// The force the stabilising springs still carry, `‖D (u_{j+1} − u_j)‖∞` (0 without floating
+    /// bodies): the equilibrium error of the answer.
+    pub floating_residual: f64,
+}
+
+/// A solved schedule.
+#[derive(Debug, Clone, PartialEq)]
+pub struct History {
+    /// The steps in order; the history stops after the first step that does not converge.
+    pub steps: Vec<SolvedStep>,
+    /// Whether the schedule was solved once and scaled (no gap, proportional growing loads).
+    pub scaled: bool,
+}
+
+/// Solves `schedule` on `problem` with `settings` (see the module docs).
+///
+/// # Errors
+/// A schedule naming a pattern the problem does not have, unloading with the Boussinesq
+/// algorithm, or a floating body that its contact does not hold.
+pub fn solve(
+    problem: &ContactProblem,
+    settings: &SolverSettings,
+    schedule: &LoadSchedule,
+) -> Result<History, ContactError> {
+    solve_with(problem, settings, schedule, &mut |_, _| {})
+}
+
+/// [`solve`], calling `on_step(i, step)` after each solved step (progress reporting).
+///
+/// # Errors
+/// As [`solve`].
+pub fn solve_with(
+    problem: &ContactProblem,
+    settings: &SolverSettings,
+    schedule: &LoadSchedule,
+    on_step: &mut dyn FnMut(usize, &SolvedStep),
+) -> Result<History, ContactError> {
+    let names: Vec<&str> = problem.patterns().iter().map(|p| p.name.as_str()).collect();
+    let factors: Vec<Vec<f64>> =
+        (0..schedule.steps().len()).map(|i| schedule.factors_for(i, &names)).collect::<Result<_, _>>()?;
+    let steady = LoadSchedule::new(names.iter().map(|n| n.to_string()).collect(), factors.clone())?;
+    if settings.algorithm == ContactAlgorithm::Boussinesq && steady.proportional().is_none() {
+        return Err(ContactError::InvalidInput(
+            "the Boussinesq algorithm needs proportional loads that only grow (its contact zone grows from one \
+             point); use the active set or Clarabel for other schedules"
+                .into(),
+        ));
+    }
+    let mut loaded = problem.clone();
+    let scaled = problem.is_gapless().then(|| steady.proportional()).flatten();
+    let targets: Vec<Vec<f64>> = match &scaled {
+        Some((direction, _)) => vec![direction.clone()],
+        None => factors.clone(),
+    };
+    loaded.apply_load(&targets[0], None)?;
+    let mut interface = Interface::new(&loaded);
+    let order = boussinesq_order(problem);
+    let mut start = StepStart::initial(problem.num_pairs());
+    let mut guess: Option<Vec<PairState>> = None;
+    let mut previous_free = vec![0.0; problem.system.dofs.num_free()];
+    let mut dissipated = 0.0;
+    let mut solved = Vec::with_capacity(targets.len());
+    for (i, target) in targets.iter().enumerate() {
+        let context = StepContext { order: &order, start: &start, guess: guess.as_deref(), step: i + 1 };
+        let (solution, floating_iterations, floating_residual) =
+            solve_floating_step(&mut loaded, &mut interface, settings, target, &context, &mut previous_free)?;
+        dissipated += solution.dissipation;
+        start = StepStart::after(&solution);
+        guess = Some(solution.state.clone());
+        let converged = solution.status == ContactStatus::Converged;
+        let step = SolvedStep { factors: target.clone(), solution, dissipated, floating_iterations, floating_residual };
+        if scaled.is_none() {
+            on_step(i, &step);
+        }
+        solved.push(step);
+        if !converged {
+            break;
+        }
+    }
+    let is_scaled = scaled.is_some();
+    let steps = match scaled {
+        Some((_, multipliers)) => scale_steps(&solved, &multipliers, on_step),
+        None => solved,
+    };
+    Ok(History { steps, scaled: is_scaled })
+}
+
+/// The one solution at the direction, scaled to every multiplier.
+fn scale_steps(
+    solved: &[SolvedStep],
+    multipliers: &[f64],
+    on_step: &mut dyn FnMut(usize, &SolvedStep),
+) -> Vec<SolvedStep> {
+    let Some(unit) = solved.first() else { return vec![] };
+    multipliers
+        .iter()
+        .enumerate()
+        .map(|(i, &t)| {
+            let mut solution = unit.solution.clone();
+            let before = if i == 0 { 0.0 } else { multipliers[i - 1] };
+            scale_solution(&mut solution, t, before);
+            let step = SolvedStep {
+                factors: unit.factors.iter().map(|f| f * t).collect(),
+                dissipated: unit.dissipated * t * t,
+                solution,
+                floating_iterations: unit.floating_iterations,
+                floating_residual: unit.floating_residual * t,
+            };
+            on_step(i, &step);
+            step
+        })
+        .collect()
+}
+
+/// Scales a solution of a problem that is linear in the load (no gap, proportional loading) to
+/// `t`, the step having started at `t_before`: forces, displacements, gaps and slips linearly;
+/// the slip increment as `(t − t_before)/t` of the slip; the step's dissipation as
+/// `t² − t_before²` (the trapezoid rule of a linear path); the load factor stays 1 (the factors
+/// carry the load).
+pub fn scale_solution(s: &mut ContactSolution, t: f64, t_before: f64) {
+    for v in s
+        .displacement
+        .iter_mut()
+        .chain(&mut s.normal_force)
+        .chain(&mut s.tangential_force)
+        .chain(&mut s.gap)
+        .chain(&mut s.slip)
+    {
+        *v *= t;
+    }
+    for (d, total) in s.slip_increment.iter_mut().zip(&s.slip) {
+        *d = if t != 0.0 { total * (t - t_before) / t } else { 0.0 };
+    }
+    s.dissipation *= t * t - t_before * t_before;
+    s.kkt.max_penetration *= t;
+    s.kkt.max_complementarity *= t * t;
+    s.kkt.max_tension *= t;
+    s.kkt.max_cone_violation *= t;
+    s.kkt.min_dissipation *= t * (t - t_before);
+}
+
+/// What a step needs besides the load.
+struct StepContext<'a> {
+    order: &'a [usize],
+    start: &'a StepStart,
+    guess: Option<&'a [PairState]>,
+    step: usize,
+}
+
+/// One step at `factors`; with floating bodies by the proximal iteration of the module docs.
+/// Returns the solution, the proximal iterations and the springs' residual force.
+fn solve_floating_step(
+    loaded: &mut ContactProblem,
+    interface: &mut Interface,
+    settings: &SolverSettings,
+    factors: &[f64],
+    context: &StepContext,
+    previous_free: &mut Vec<f64>,
+) -> Result<(ContactSolution, usize, f64), ContactError> {
+    let springs = loaded.system.stabilisation.clone();
+    if springs.is_empty() {
+        loaded.apply_load(factors, None)?;
+        interface.update_load(loaded);
+        return Ok((solve_step(loaded, interface, settings, context), 0, 0.0));
+    }
+    let mut residuals: Vec<f64> = vec![];
+    for iteration in 1..=settings.max_floating_iterations {
+        let mut extra = vec![0.0; previous_free.len()];
+        for &(i, k) in &springs {
+            extra[i] = k * previous_free[i];
+        }
+        loaded.apply_load(factors, Some(&extra))?;
+        interface.update_load(loaded);
+        let solution = solve_step(loaded, interface, settings, context);
+        let free = loaded.system.dofs.restrict_free(&solution.displacement);
+        let residual = springs.iter().fold(0.0f64, |a, &(i, k)| a.max((k * (free[i] - previous_free[i])).abs()));
+        let scale = force_scale(loaded, &solution);
+        let moved: Vec<f64> = free.iter().zip(previous_free.iter()).map(|(a, b)| a - b).collect();
+        *previous_free = free;
+        if !residual.is_finite() || solution.status != ContactStatus::Converged {
+            return Ok((solution, iteration, residual));
+        }
+        if residual <= settings.floating_tolerance * scale {
+            return Ok((solution, iteration, residual));
+        }
+        residuals.push(residual / scale);
+        if stalled(&residuals) {
+            return Err(not_held(loaded, &moved, context.step));
+        }
+    }
+    Err(not_held(loaded, &vec![1.0; previous_free.len()], context.step))
+}
+
+/// The proximal iteration has stalled when the springs' relative force has not halved over
+/// three iterations (a held body's falls by about FLOATING_SPRING against its elastic stiffness
+/// per iteration; an unheld one's stays constant).
+fn stalled(residuals: &[f64]) -> bool {
+    residuals.len() >= 4 && residuals[residuals.len() - 1] > 0.5 * residuals[residuals.len() - 4]
+}
+
+/// The force scale of a step: the largest of the load's nodal forces and the contact forces.
+fn force_scale(problem: &ContactProblem, solution: &ContactSolution) -> f64 {
+    let load = problem.pattern_rhs.iter().fold(0.0f64, |a, r| a.max(r.abs()));
+    solution
+        .normal_force
+        .iter()
+        .chain(&solution.tangential_force)
+        .fold(load, |a, l| a.max(l.abs()))
+        .max(f64::MIN_POSITIVE)
+}
+
+/// The error for the floating piece whose rigid motion dominates the last increment `moved`
+/// (free DOF values), naming its free modes that move.
+fn not_held(problem: &ContactProblem, moved: &[f64], step: usize) -> ContactError {
+    let dofs = &problem.system.dofs;
+    let full = dofs.expand(moved, &vec![0.0; dofs.num_constrained()]);
+    let mut worst: Option<(f64, String, Vec<String>)> = None;
+    for piece in &problem.system.floating {
+        let names = piece.mode_names();
+        let mut moving = vec![];
+        let mut total = 0.0f64;
+        for (mode, name) in piece.free_modes.iter().zip(names) {
+            // Least-squares amplitude of the rigid mode in the increment.
+            let (mut num, mut den) = (0.0, 0.0);
+            for &n in &piece.nodes {
+                let x = problem.model.mesh.points[n];
+                let (dx, dy) = ((x[0] - piece.centre[0]) / piece.scale, (x[1] - piece.centre[1]) / piece.scale);
+                let r = [mode[0] - mode[2] * dy, mode[1] + mode[2] * dx];
+                num += r[0] * full[2 * n] + r[1] * full[2 * n + 1];
+                den += r[0] * r[0] + r[1] * r[1];
+            }
+            let amplitude = if den > 0.0 { (num / den).abs() } else { 0.0 };
+            total = total.max(amplitude);
+            moving.push((amplitude, name));
+        }
+        let largest = moving.iter().fold(0.0f64, |a, m| a.max(m.0));
+        let modes: Vec<String> = moving.into_iter().filter(|m| m.0 >= 1e-3 * largest).map(|m| m.1).collect();
+        if worst.as_ref().is_none_or(|w| total > w.0) {
+            worst = Some((total, piece.body.clone(), modes));
+        }
+    }
+    match worst {
+        Some((_, body, modes)) => ContactError::BodyNotHeld { body, modes, step },
+        None => ContactError::InvalidInput("the proximal iteration stalled without a floating body".into()),
+    }
+}
+
+/// One step of the chosen algorithm at the problem's current load (`w` = 1).
+fn solve_step(
+    problem: &ContactProblem,
+    interface: &Interface,
+    settings: &SolverSettings,
+    context: &StepContext,
+) -> ContactSolution {
+    let max = settings.max_iterations;
+    match settings.algorithm {
+        ContactAlgorithm::ActiveSet => {
+            solve_frictional_active_set(problem, interface, 1.0, context.start, context.guess, max)
+        }
+        ContactAlgorithm::Clarabel => solve_frictional_qp(problem, 1.0, context.start, max),
+        ContactAlgorithm::Boussinesq => {
+            // The contact-end search moves one pair per iteration.
+            let max = max.max(2 * context.order.len());
+            let mut step = solve_boussinesq_step(
+                problem,
+                interface,
+                context.order,
+                BoussinesqLoading::Load(1.0),
+                context.start,
+                max,
+            );
+            step.solution.violations = step.violations;
+            step.solution
+        }
+    }
+}
+
+/// The pairs in the order the Boussinesq algorithm grows its zone: by arc length along the
+/// master curve, from the end whose initial gap is smaller.
+fn boussinesq_order(problem: &ContactProblem) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..problem.num_pairs()).collect();
+    order.sort_by(|a, b| {
+        problem.pairs[*a].master_arc_length.total_cmp(&problem.pairs[*b].master_arc_length).then(a.cmp(b))
+    });
+    if let (Some(&first), Some(&last)) = (order.first(), order.last())
+        && problem.gap[last] < problem.gap[first]
+    {
+        order.reverse();
+    }
+    order
+}
