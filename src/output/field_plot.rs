@@ -17,7 +17,7 @@ use plotters::prelude::*;
 use super::OutputError;
 use super::chart::{FIGURE_SIZE, ImageFormat, register_bundled_font};
 use super::mesh_plot::{bounding_box, draw_plane_axes, equal_aspect_ranges};
-use crate::run::SolvedStep;
+use super::step_view::StepView;
 
 /// Sub-cells per cell edge.
 pub const SUBDIVISION: usize = 3;
@@ -35,8 +35,8 @@ pub struct SubCell {
 ///
 /// # Errors
 /// [`OutputError::Element`] where an element map or stress cannot be evaluated.
-pub fn von_mises_cells(step: &SolvedStep) -> Result<Vec<SubCell>, OutputError> {
-    let model = &step.case.problem.model;
+pub fn von_mises_cells(step: &StepView) -> Result<Vec<SubCell>, OutputError> {
+    let model = &step.problem.model;
     let u = &step.solution.displacement;
     let mut cells = vec![];
     for body in &model.bodies {
@@ -90,11 +90,11 @@ fn reference_subcells(element: ElementType) -> Vec<Vec<[f64; 2]>> {
 /// # Errors
 /// As [`von_mises_cells`], plus [`OutputError::UnsupportedFormat`], [`OutputError::Font`],
 /// [`OutputError::Draw`].
-pub fn draw_von_mises(path: &Path, title: &str, step: &SolvedStep) -> Result<(), OutputError> {
+pub fn draw_von_mises(path: &Path, title: &str, step: &StepView) -> Result<(), OutputError> {
     let format = ImageFormat::from_path(path)?;
     register_bundled_font()?;
     let cells = von_mises_cells(step)?;
-    let size = figure_size(bounding_box(step.case.problem.model.mesh.points.iter()));
+    let size = figure_size(bounding_box(step.problem.model.mesh.points.iter()));
     let result = match format {
         ImageFormat::Png => draw_on(&BitMapBackend::new(path, size).into_drawing_area(), title, step, &cells, true),
         ImageFormat::Svg => draw_on(&SVGBackend::new(path, size).into_drawing_area(), title, step, &cells, false),
@@ -114,7 +114,7 @@ fn figure_size(bounds: [[f64; 2]; 2]) -> (u32, u32) {
 fn draw_on<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     title: &str,
-    step: &SolvedStep,
+    step: &StepView,
     cells: &[SubCell],
     outlines: bool,
 ) -> Result<(), String> {
@@ -132,11 +132,11 @@ fn draw_on<DB: DrawingBackend>(
     let colour = |v: f64| ViridisRGB::get_color_normalized(v, lo, hi);
 
     root.fill(&WHITE).map_err(|e| err(&e))?;
-    let title = format!("{title}, σ_vM / E1 in [{lo:.4}, {hi:.4}]");
+    let title = format!("{title}, {} in [{lo:.4}, {hi:.4}]", step.stress_label);
     let root = root.titled(&title, ("sans-serif", 22)).map_err(|e| err(&e))?;
     let (field, bar) = root.split_horizontally(root.dim_in_pixel().0 - 150);
 
-    let mesh = &step.case.problem.model.mesh;
+    let mesh = &step.problem.model.mesh;
     let bounds = bounding_box(mesh.points.iter());
     let (fw, fh) = field.dim_in_pixel();
     let (xr, yr) = equal_aspect_ranges(bounds, (fw as f64 - 60.0 - 20.0, fh as f64 - 40.0 - 20.0));
@@ -146,7 +146,7 @@ fn draw_on<DB: DrawingBackend>(
         .y_label_area_size(60)
         .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
         .map_err(|e| err(&e))?;
-    draw_plane_axes(&mut chart)?;
+    draw_plane_axes(&mut chart, &step.axes)?;
     chart
         .draw_series(cells.iter().map(|c| Polygon::new(c.corners.clone(), colour(c.value).filled())))
         .map_err(|e| err(&e))?;

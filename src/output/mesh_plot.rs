@@ -17,7 +17,7 @@ use plotters::prelude::*;
 
 use super::OutputError;
 use super::chart::{FIGURE_SIZE, ImageFormat, register_bundled_font};
-use crate::run::SolvedStep;
+use super::step_view::StepView;
 
 /// Points per drawn element edge.
 pub const EDGE_SAMPLES: usize = 7;
@@ -26,11 +26,13 @@ pub const EDGE_SAMPLES: usize = 7;
 const STICK: RGBColor = RGBColor(31, 119, 180);
 const SLIP: RGBColor = RGBColor(214, 39, 40);
 const FREE: RGBColor = RGBColor(150, 150, 150);
+/// Colour of frictionless pairs in contact.
+const CONTACT: RGBColor = RGBColor(44, 160, 44);
 
 /// The polylines of every element edge of every body (each shared edge once) and, for a rigid
 /// insert (no body), of the insert contour, at positions `x` (one per mesh node).
-pub(crate) fn edge_polylines(step: &SolvedStep, x: &[[f64; 2]]) -> Vec<Vec<(f64, f64)>> {
-    let model = &step.case.problem.model;
+pub(crate) fn edge_polylines(step: &StepView, x: &[[f64; 2]]) -> Vec<Vec<(f64, f64)>> {
+    let model = &step.problem.model;
     let mut seen = HashSet::new();
     let mut lines = vec![];
     for body in &model.bodies {
@@ -47,8 +49,8 @@ pub(crate) fn edge_polylines(step: &SolvedStep, x: &[[f64; 2]]) -> Vec<Vec<(f64,
             }
         }
     }
-    if model.body("insert").is_none() {
-        for e in &step.case.insert.edges {
+    for obstacle in &step.obstacles {
+        for e in &obstacle.edges {
             lines.push(curve(x, e.nodes[0].0, e.nodes[1].0, e.quadratic.then_some(e.nodes[2].0)));
         }
     }
@@ -105,12 +107,13 @@ pub(crate) fn draw_plane_axes<DB: DrawingBackend>(
         DB,
         Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
     >,
+    axes: &[String; 2],
 ) -> Result<(), String> {
     chart
         .configure_mesh()
         .disable_mesh()
-        .x_desc("x1 / R (non-dimensional)")
-        .y_desc("x2 / R")
+        .x_desc(axes[0].as_str())
+        .y_desc(axes[1].as_str())
         .label_style(("sans-serif", 14))
         .axis_desc_style(("sans-serif", 15))
         .draw()
@@ -121,7 +124,7 @@ pub(crate) fn draw_plane_axes<DB: DrawingBackend>(
 ///
 /// # Errors
 /// [`OutputError::UnsupportedFormat`], [`OutputError::Font`] or [`OutputError::Draw`].
-pub fn draw_mesh(path: &Path, title: &str, step: &SolvedStep) -> Result<(), OutputError> {
+pub fn draw_mesh(path: &Path, title: &str, step: &StepView) -> Result<(), OutputError> {
     let format = ImageFormat::from_path(path)?;
     register_bundled_font()?;
     let result = match format {
@@ -131,9 +134,9 @@ pub fn draw_mesh(path: &Path, title: &str, step: &SolvedStep) -> Result<(), Outp
     result.map_err(|reason| OutputError::draw(path, reason))
 }
 
-fn draw_on<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, title: &str, step: &SolvedStep) -> Result<(), String> {
+fn draw_on<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, title: &str, step: &StepView) -> Result<(), String> {
     let err = |e: &dyn std::fmt::Display| e.to_string();
-    let mesh = &step.case.problem.model.mesh;
+    let mesh = &step.problem.model.mesh;
     let u = &step.solution.displacement;
     let beta = exaggeration(u);
     let undeformed = mesh.points.clone();
@@ -158,7 +161,7 @@ fn draw_on<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, title: &str, step:
             .y_label_area_size(60)
             .build_cartesian_2d(xr.0..xr.1, yr.0..yr.1)
             .map_err(|e| err(&e))?;
-        draw_plane_axes(&mut chart)?;
+        draw_plane_axes(&mut chart, &step.axes)?;
         let edge_style = RGBColor(90, 90, 90).stroke_width(1);
         chart
             .draw_series(edge_polylines(step, x).into_iter().map(|line| PathElement::new(line, edge_style)))
@@ -183,21 +186,27 @@ fn draw_pairs<DB: DrawingBackend>(
         DB,
         Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
     >,
-    step: &SolvedStep,
+    step: &StepView,
     x: &[[f64; 2]],
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
-    let pairs = &step.case.problem.pairs;
+    let pairs = &step.problem.pairs;
     let states = &step.solution.state;
-    let group = |s: &PairState| match s {
+    let friction = &step.problem.friction;
+    // A frictionless pair in contact is "contact", not "stick".
+    let group = |s: &PairState, mu: f64| match s {
+        PairState::Stick if mu == 0.0 => 3,
         PairState::Stick => 0,
         PairState::SlipPositive | PairState::SlipNegative => 1,
         PairState::Free => 2,
     };
-    for (g, (name, colour)) in [("stick", STICK), ("slip", SLIP), ("free", FREE)].into_iter().enumerate() {
+    let legend = [("stick", STICK), ("slip", SLIP), ("free", FREE), ("contact", CONTACT)];
+    for (g, (name, colour)) in legend.into_iter().enumerate() {
         let points: Vec<(f64, f64)> = pairs
             .iter()
             .zip(states)
-            .filter(|(_, s)| group(s) == g)
+            .zip(friction)
+            .filter(|((_, s), mu)| group(s, **mu) == g)
+            .map(|((p, s), _)| (p, s))
             .map(|(p, _)| (x[p.master.0][0], x[p.master.0][1]))
             .collect();
         if points.is_empty() {

@@ -22,6 +22,7 @@ pub mod figures;
 pub mod mesh_plot;
 pub mod profiles;
 pub mod readme;
+pub mod step_view;
 pub mod vtu;
 
 use std::path::{Path, PathBuf};
@@ -62,10 +63,11 @@ pub fn write_outputs(dir: &Path, scene: &Scene, outcome: &RunOutcome) -> Result<
         .last()
         .ok_or_else(|| OutputError::MissingData { path: dir.to_path_buf(), reason: "no contour profile".into() })?;
     let elastic_insert = last.case.problem.model.body("insert").is_some();
+    let last_view = profiles::flagship_view(last, final_profiles);
 
     for ext in FIGURE_EXTENSIONS {
         let path = dir.join(format!("mesh.{ext}"));
-        mesh_plot::draw_mesh(&path, &title("mesh"), last)?;
+        mesh_plot::draw_mesh(&path, &title("mesh"), &last_view)?;
         written.push(path);
         let path = dir.join(format!("hole_edge.{ext}"));
         let ends: Vec<(&str, f64)> = [("l", last.results.contact_end), ("b", last.results.stick_end)]
@@ -80,7 +82,7 @@ pub fn write_outputs(dir: &Path, scene: &Scene, outcome: &RunOutcome) -> Result<
             written.push(path);
         }
         let path = dir.join(format!("von_mises.{ext}"));
-        field_plot::draw_von_mises(&path, &title("von Mises stress"), last)?;
+        field_plot::draw_von_mises(&path, &title("von Mises stress"), &last_view)?;
         written.push(path);
         if n > 1 {
             let path = dir.join(format!("history.{ext}"));
@@ -104,7 +106,7 @@ pub fn write_outputs(dir: &Path, scene: &Scene, outcome: &RunOutcome) -> Result<
     for (k, (step, p)) in outcome.steps.iter().zip(&profiles).enumerate() {
         let name = step_file_name(k);
         let path = dir.join(&name);
-        vtu::write_step_vtu(&path, step, p)?;
+        vtu::write_step_vtu(&path, &profiles::flagship_view(step, p))?;
         written.push(path);
         collection.push((step.solution.load_factor, name));
     }

@@ -23,6 +23,7 @@ use contact2d_fem::{BodyId, StressRecovery, stresses_along_curve};
 use contact2d_mesh::{Contour, NodeId};
 
 use super::OutputError;
+use super::step_view::{NodeValues, StepView};
 use crate::plate_insert::{PairingVariant, PlateInsertProblem};
 use crate::run::SolvedStep;
 
@@ -84,13 +85,27 @@ pub fn state_name(state: PairState) -> &'static str {
     }
 }
 
-/// An integer code of a pair state (VTU files): 0 free, 1 stick, 2 slip+, 3 slip−.
-pub fn state_code(state: PairState) -> i32 {
-    match state {
-        PairState::Free => 0,
-        PairState::Stick => 1,
-        PairState::SlipPositive => 2,
-        PairState::SlipNegative => 3,
+pub use super::step_view::state_code;
+
+/// The writers' view of a flagship step: its problem and solution, the rigid insert's edge as
+/// an obstacle, the contact values of its profiles, and the non-dimensional labels.
+pub fn flagship_view<'a>(step: &'a SolvedStep, profiles: &Profiles) -> StepView<'a> {
+    let problem = &step.case.problem;
+    let mut node_contact = vec![None; problem.model.mesh.num_nodes()];
+    for row in profiles.hole.iter().chain(&profiles.insert) {
+        if let Some(c) = row.contact {
+            node_contact[row.node.0] =
+                Some(NodeValues { pressure: c.pressure, shear: c.shear, state: state_code(c.state) });
+        }
+    }
+    let rigid_insert = problem.model.body("insert").is_none();
+    StepView {
+        problem,
+        solution: &step.solution,
+        obstacles: if rigid_insert { vec![&step.case.insert] } else { vec![] },
+        node_contact,
+        axes: ["x1 / R (non-dimensional)".into(), "x2 / R".into()],
+        stress_label: "σ_vM / E1".into(),
     }
 }
 

@@ -24,8 +24,7 @@ use vtkio::model::{
 };
 
 use super::OutputError;
-use super::profiles::{Profiles, state_code};
-use crate::run::SolvedStep;
+use super::step_view::StepView;
 
 /// The VTK cell type of an element type.
 ///
@@ -51,8 +50,8 @@ pub fn vtk_cell_type(element: ElementType, path: &Path) -> Result<CellType, Outp
 ///
 /// # Errors
 /// [`OutputError::Fem`] if stresses cannot be recovered, [`OutputError::Serialize`] if vtkio fails.
-pub fn write_step_vtu(path: &Path, step: &SolvedStep, profiles: &Profiles) -> Result<(), OutputError> {
-    let model = &step.case.problem.model;
+pub fn write_step_vtu(path: &Path, step: &StepView) -> Result<(), OutputError> {
+    let model = &step.problem.model;
     let mesh = &model.mesh;
     let n = mesh.num_nodes();
     let u = &step.solution.displacement;
@@ -88,17 +87,17 @@ pub fn write_step_vtu(path: &Path, step: &SolvedStep, profiles: &Profiles) -> Re
     let mut pressure = vec![f64::NAN; n];
     let mut shear = vec![f64::NAN; n];
     let mut state = vec![-1i32; n];
-    for row in profiles.hole.iter().chain(&profiles.insert) {
-        if let Some(c) = row.contact {
-            pressure[row.node.0] = c.pressure;
-            shear[row.node.0] = c.shear;
-            state[row.node.0] = state_code(c.state);
+    for (i, c) in step.node_contact.iter().enumerate().take(n) {
+        if let Some(c) = c {
+            pressure[i] = c.pressure;
+            shear[i] = c.shear;
+            state[i] = c.state;
         }
     }
 
     let vtk = Vtk {
         version: Version::new_xml(1, 0),
-        title: format!("contact2d step, w = {}", step.solution.load_factor),
+        title: "contact2d step".to_string(),
         byte_order: ByteOrder::LittleEndian,
         file_path: None,
         data: DataSet::inline(UnstructuredGridPiece {
