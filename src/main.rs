@@ -139,6 +139,9 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             }
         }
         Command::Run { scene, set, json, out, quiet, verbose } => {
+            if std::fs::read_to_string(&scene).is_ok_and(|t| contact2d::generic::scene::is_generic(&t)) {
+                return run_generic(&scene, &set, json, out.as_deref(), quiet, verbose);
+            }
             let scene = contact2d::scene::Scene::load(&scene, &set)?;
             // A mesh that cannot be read is reported by the run below, with the scene.
             if let Ok(mesh) = contact2d::mesh::read_msh(scene.mesh_path()) {
@@ -176,6 +179,95 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         Command::Sweep { scene, vary, set, plot, out, quiet } => sweep(&scene, &vary, &set, &plot, out, quiet)?,
         Command::Bench(args) => writeln!(std::io::stdout().lock(), "{}", contact2d::bench::run_command(&args)?)?,
         Command::Stress(args) => writeln!(std::io::stdout().lock(), "{}", contact2d::stress::run_command(&args)?)?,
+    }
+    Ok(())
+}
+
+/// `run` on a generic scene: solve, print the summary (text or JSON), write the outputs.
+fn run_generic(
+    path: &std::path::Path,
+    set: &[String],
+    json: bool,
+    out: Option<&std::path::Path>,
+    quiet: bool,
+    verbose: bool,
+) -> anyhow::Result<()> {
+    let scene = contact2d::generic::load_scene(path, set)?;
+    let mut bar = StepBar::new(quiet || json);
+    let outcome = contact2d::generic::solve_generic(&scene, &mut |done, total| {
+        use contact2d::run::Progress;
+        bar.step_done(done, total, done as f64);
+    })?;
+    bar.finish();
+    if verbose {
+        for (i, step) in outcome.history.steps.iter().enumerate() {
+            let s = &step.solution;
+            eprintln!("step {}: factors {:?}, {:?} after {} iterations", i + 1, step.factors, s.status, s.iterations);
+        }
+    }
+    let report = &outcome.report;
+    let mut stdout = std::io::stdout().lock();
+    if json {
+        writeln!(stdout, "{}", serde_json::to_string_pretty(report)?)?;
+    } else {
+        print_generic(&mut stdout, report)?;
+    }
+    if let Some(dir) = out {
+        let written = contact2d::generic::outputs::write_generic_outputs(dir, &outcome)?;
+        let lines: Vec<String> = written.iter().map(|p| format!("  {}", p.display())).collect();
+        let text = format!("wrote {} files:\n{}", written.len(), lines.join("\n"));
+        if json {
+            eprintln!("{text}");
+        } else {
+            writeln!(stdout, "{text}")?;
+        }
+    }
+    Ok(())
+}
+
+fn print_generic(out: &mut impl Write, r: &contact2d::generic::GenericReport) -> std::io::Result<()> {
+    writeln!(
+        out,
+        "scene {}  ({} DOFs, {} pairs, {:?}, {} after {} iterations in {} step(s))",
+        r.scene,
+        r.dofs,
+        r.pairs,
+        r.algorithm,
+        r.status,
+        r.iterations,
+        r.steps.len()
+    )?;
+    for (name, c) in &r.contacts {
+        writeln!(
+            out,
+            "  contact {name}: normal force {:.6e}, tangential force {:.6e}, contact length {:.6e}, stick length {:.6e}, \
+             max pressure {:.6e}, dissipation {:.3e}",
+            c.normal_force, c.tangential_force, c.contact_length, c.stick_length, c.max_pressure, c.dissipation
+        )?;
+    }
+    for (group, f) in &r.reactions {
+        writeln!(out, "  reaction {group}: [{:.6e}, {:.6e}]", f[0], f[1])?;
+    }
+    for (body, e) in &r.energies {
+        writeln!(out, "  energy {body}: {e:.6e}")?;
+    }
+    for f in &r.floating_bodies {
+        writeln!(out, "  body {} held by contact only (free: {})", f.body, f.free_modes.join(", "))?;
+    }
+    let k = &r.kkt;
+    writeln!(
+        out,
+        "  KKT: penetration {:.1e}, complementarity {:.1e}, cone {:.1e}, floating residual {:.1e}",
+        k.max_penetration, k.max_complementarity, k.max_cone_violation, k.floating_residual
+    )?;
+    let t = &r.time_s;
+    writeln!(
+        out,
+        "  time {:.3} s (read {:.3}, assemble {:.3}, factor {:.3}, condense {:.3}, solve {:.3}, post {:.3})",
+        t.total, t.read, t.assemble, t.factor, t.condense, t.solve, t.post
+    )?;
+    for note in &r.notes {
+        writeln!(out, "  note: {note}")?;
     }
     Ok(())
 }

@@ -501,12 +501,12 @@ impl Scene {
 pub const MAX_STEPS: usize = 100_000;
 
 /// "line L, column C: message" of a TOML error with a span.
-fn spanned_reason(text: &str, e: &toml::de::Error) -> String {
+pub(crate) fn spanned_reason(text: &str, e: &toml::de::Error) -> String {
     format!("{}{}", line_of(text, e), e.message())
 }
 
 /// "line L, column C: " of an error's span in `text` (empty without a span).
-fn line_of(text: &str, e: &toml::de::Error) -> String {
+pub(crate) fn line_of(text: &str, e: &toml::de::Error) -> String {
     e.span().map_or(String::new(), |span| {
         let before = text.get(..span.start).unwrap_or(text);
         let line = before.matches('\n').count() + 1;
@@ -515,8 +515,10 @@ fn line_of(text: &str, e: &toml::de::Error) -> String {
     })
 }
 
-/// Sets `a.b.c = value` in a TOML tree; the key must exist (unknown keys are errors).
-fn apply_override(root: &mut toml::Value, assignment: &str) -> Result<(), SceneError> {
+/// Sets `a.b.c = value` in a TOML tree; the key must exist (unknown keys are errors). An array
+/// of tables (`[[contact]]`) is entered by index (`contact.0.friction`) or by the entry's
+/// `name`, `region` or `group` (`contact.hertz.friction`, `body.block.youngs_modulus`).
+pub(crate) fn apply_override(root: &mut toml::Value, assignment: &str) -> Result<(), SceneError> {
     let err = |reason: String| SceneError::Override { assignment: assignment.to_string(), reason };
     let (key, raw) = assignment.split_once('=').ok_or_else(|| err("expected key.path=value".into()))?;
     let parsed = toml::from_str::<toml::Table>(&format!("v = {raw}"))
@@ -526,6 +528,25 @@ fn apply_override(root: &mut toml::Value, assignment: &str) -> Result<(), SceneE
     let mut node = root;
     let parts: Vec<&str> = key.trim().split('.').collect();
     for (i, part) in parts.iter().enumerate() {
+        if let Some(array) = node.as_array() {
+            let here = parts[..i].join(".");
+            let len = array.len();
+            let at = match part.parse::<usize>() {
+                Ok(k) if k < len => k,
+                Ok(k) => return Err(err(format!("\"{here}\" has {len} entries; index {k} is past its end"))),
+                Err(_) => array
+                    .iter()
+                    .position(|entry| {
+                        ["name", "region", "group"].iter().any(|k| entry.get(k).and_then(|v| v.as_str()) == Some(part))
+                    })
+                    .ok_or_else(|| err(format!("no entry of \"{here}\" has the name, region or group \"{part}\"")))?,
+            };
+            if i + 1 == parts.len() {
+                return Err(err(format!("\"{here}.{part}\" is a whole entry; set one of its keys")));
+            }
+            node = node.get_mut(at).ok_or_else(|| err(format!("\"{here}\" has no entry {at}")))?;
+            continue;
+        }
         let table = node.as_table_mut().ok_or_else(|| err(format!("\"{}\" is not a table", parts[..i].join("."))))?;
         if i + 1 == parts.len() {
             // A key the file leaves at its default may be set; whether it exists at all is

@@ -152,6 +152,8 @@ pub struct InterfaceInfo {
     pub rigid_slave: bool,
     /// The master curve (arc length `s` from its first node).
     pub master_contour: Contour,
+    /// The slave curve.
+    pub slave_contour: Contour,
     /// Its friction coefficient.
     pub friction: f64,
 }
@@ -195,7 +197,7 @@ impl ProblemDescription {
         let mut gaps = vec![];
         let mut friction = vec![];
         for c in &self.contacts {
-            let (mut p, _, slave_region) = self.pair(&model, c)?;
+            let (mut p, slave_contour, slave_region) = self.pair(&model, c)?;
             let master_contour = Contour::from_group(&model.mesh, &c.master)?;
             let start = pairs.len();
             gaps.extend(p.iter().map(|pair| match c.gap {
@@ -214,6 +216,7 @@ impl ProblemDescription {
                 slave_region,
                 rigid_slave: c.rigid_slave,
                 master_contour,
+                slave_contour,
                 friction: c.friction,
             });
         }

@@ -43,7 +43,7 @@ pub use interface::Interface;
 pub use loading::LoadSchedule;
 pub use pairing::{ContactPair, node_to_node_targets, pair_contours, tributary_weights};
 pub use post::{contact_end, contact_end_from_pressure, pair_tractions, stick_end};
-pub use problem::{ContactProblem, LoadPattern, PairRow};
+pub use problem::{BuildTimes, ContactProblem, LoadPattern, PairRow};
 pub use qp::solve_frictionless_qp;
 pub use report::{RawSolution, fem_solution, finish_from_displacement, finish_from_forces};
 pub use solution::{ContactSolution, ContactStatus, IterationRecord, KktResiduals, PairState, StepStart};

@@ -71,6 +71,17 @@ pub struct ContactProblem {
     slave: Vec<SlaveKind>,
     /// Number of free DOFs ordered last in the factorisation (the contact DOFs).
     interface_dofs: usize,
+    /// Wall time of assembly (with pairing rows) and of ordering plus factorisation, when built.
+    pub build_times: BuildTimes,
+}
+
+/// Where a problem's set-up time went.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct BuildTimes {
+    /// Assembly of the stiffness and loads, and the pair rows.
+    pub assemble: std::time::Duration,
+    /// Fill-reducing ordering and Cholesky factorisation.
+    pub factor: std::time::Duration,
 }
 
 impl ContactProblem {
@@ -117,15 +128,17 @@ impl ContactProblem {
     }
 
     fn build(model: Model, pairs: Vec<ContactPair>, slave: Vec<SlaveKind>) -> Result<ContactProblem, ContactError> {
+        let clock = std::time::Instant::now();
         let system = assemble(&model)?;
         let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, &slave)?;
+        let assembled = clock.elapsed();
         // The contact DOFs are ordered last: the trailing block of the factor is then the Schur
         // complement on them, which condenses the bodies onto the contact (crate::interface).
         let last = interface_dofs(&system, &normal_rows, &tangent_rows);
         let forward = fill_reducing_permutation(&model, &system.dofs, &system.stiffness, ORDERING, &last)?;
         let solver = CholeskySolver::factor_with_permutation(&system.stiffness, &forward)?;
         let friction = vec![0.0; pairs.len()];
-        Ok(ContactProblem::assemble_parts(
+        let mut problem = ContactProblem::assemble_parts(
             model,
             system,
             solver,
@@ -135,7 +148,9 @@ impl ContactProblem {
             friction,
             slave,
             last.len(),
-        ))
+        );
+        problem.build_times = BuildTimes { assemble: assembled, factor: clock.elapsed() - assembled };
+        Ok(problem)
     }
 
     /// The same problem on a moved mesh with the same topology: `model` must have the same DOF
@@ -231,6 +246,7 @@ impl ContactProblem {
             stiffness_scale,
             slave,
             interface_dofs,
+            build_times: BuildTimes::default(),
         }
     }
 

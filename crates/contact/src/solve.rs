@@ -133,6 +133,8 @@ pub struct History {
     pub steps: Vec<SolvedStep>,
     /// Whether the schedule was solved once and scaled (no gap, proportional growing loads).
     pub scaled: bool,
+    /// Wall time of the condensation onto the interface.
+    pub condense_time: std::time::Duration,
 }
 
 /// Solves `schedule` on `problem` with `settings` (see the module docs).
@@ -176,7 +178,9 @@ pub fn solve_with(
         None => factors.clone(),
     };
     loaded.apply_load(&targets[0], None)?;
+    let clock = std::time::Instant::now();
     let mut interface = Interface::new(&loaded);
+    let condense_time = clock.elapsed();
     let order = boussinesq_order(problem);
     let mut start = StepStart::initial(problem.num_pairs());
     let mut guess: Option<Vec<PairState>> = None;
@@ -205,7 +209,7 @@ pub fn solve_with(
         Some((_, multipliers)) => scale_steps(&solved, &multipliers, on_step),
         None => solved,
     };
-    Ok(History { steps, scaled: is_scaled })
+    Ok(History { steps, scaled: is_scaled, condense_time })
 }
 
 /// The one solution at the direction, scaled to every multiplier.

@@ -1,0 +1,286 @@
+//! Generic scenes: any geometry, read from a Gmsh mesh and a TOML scene, solved through the one
+//! entry point, reported as one JSON contract and written as generic outputs.
+//!
+//! ```text
+//! scene (TOML) → GenericScene → ProblemDescription → BuiltProblem
+//!   → solve(&problem, &settings, &schedule) → History → GenericReport (JSON) → outputs
+//! ```
+
+pub mod outputs;
+pub mod results;
+pub mod scene;
+
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::time::Instant;
+
+use serde::Serialize;
+
+use contact2d_contact::{BuiltProblem, ContactError, ContactStatus, History, builder::group_length, solve_with};
+use contact2d_mesh::read_msh;
+
+pub use results::{ContactResult, Kkt, Profile, StepResult};
+pub use scene::GenericScene;
+
+use crate::scene::SceneError;
+
+/// Errors of a generic run.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum GenericError {
+    /// The scene file.
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    /// The mesh could not be read.
+    #[error("scene {scene}: mesh {mesh}: {source}")]
+    Mesh {
+        /// The scene file.
+        scene: String,
+        /// The mesh file.
+        mesh: String,
+        /// Why.
+        source: contact2d_mesh::MeshError,
+    },
+    /// Building or solving the problem.
+    #[error("scene {scene}, mesh {mesh}: {source}")]
+    Contact {
+        /// The scene file.
+        scene: String,
+        /// The mesh file.
+        mesh: String,
+        /// Why.
+        source: ContactError,
+    },
+    /// Evaluating results.
+    #[error("scene {scene}: {source}")]
+    Fem {
+        /// The scene file.
+        scene: String,
+        /// Why.
+        source: contact2d_fem::FemError,
+    },
+}
+
+/// Where a run's time went, seconds.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Default)]
+pub struct Times {
+    /// The whole run (reading to results).
+    pub total: f64,
+    /// Reading the mesh.
+    pub read: f64,
+    /// Assembly, pairing and rows.
+    pub assemble: f64,
+    /// Ordering and factorisation.
+    pub factor: f64,
+    /// Condensation onto the interface.
+    pub condense: f64,
+    /// The contact algorithm over every step.
+    pub solve: f64,
+    /// Results: resultants, reactions, energies, profiles.
+    pub post: f64,
+}
+
+/// A group the scene uses: its length (1D) and bounding box, so that a swapped name shows.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GroupReport {
+    /// The group's dimension.
+    pub dim: usize,
+    /// Its length (1D groups; 0 otherwise).
+    pub length: f64,
+    /// `[[x_min, y_min], [x_max, y_max]]` of its nodes.
+    pub bbox: [[f64; 2]; 2],
+}
+
+/// A body held only by contact.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FloatingReport {
+    /// The body.
+    pub body: String,
+    /// Its rigid motions that no Dirichlet condition holds.
+    pub free_modes: Vec<String>,
+}
+
+/// The JSON summary of a generic run (`contact2d run --json`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GenericReport {
+    /// The scene's name.
+    pub scene: String,
+    /// The worst step's status (`converged` when every step converged).
+    pub status: &'static str,
+    /// The algorithm.
+    pub algorithm: scene::AlgorithmKey,
+    /// Free DOFs.
+    pub dofs: usize,
+    /// Contact pairs.
+    pub pairs: usize,
+    /// Iterations summed over the steps.
+    pub iterations: usize,
+    /// Whether the schedule was solved once and scaled (no gap, proportional loads).
+    pub scaled: bool,
+    /// Every step, without profiles.
+    pub steps: Vec<StepResult>,
+    /// The last step's interfaces, with profiles.
+    pub contacts: BTreeMap<String, ContactResult>,
+    /// The last step's reactions per fixed group.
+    pub reactions: BTreeMap<String, [f64; 2]>,
+    /// The last step's strain energy per body.
+    pub energies: BTreeMap<String, f64>,
+    /// The last step's KKT residuals.
+    pub kkt: Kkt,
+    /// Bodies held only by contact.
+    pub floating_bodies: Vec<FloatingReport>,
+    /// Every group the scene names.
+    pub groups: BTreeMap<String, GroupReport>,
+    /// Where the time went.
+    pub time_s: Times,
+    /// What a user should know about how the numbers were obtained.
+    pub notes: Vec<String>,
+}
+
+/// A solved generic scene: the summary and what the outputs need.
+#[derive(Debug, Clone)]
+pub struct GenericOutcome {
+    /// The scene.
+    pub scene: GenericScene,
+    /// The built problem.
+    pub built: BuiltProblem,
+    /// The solved steps.
+    pub history: History,
+    /// The summary.
+    pub report: GenericReport,
+}
+
+/// Reads a generic scene file (see [`GenericScene::from_toml_str`]).
+///
+/// # Errors
+/// [`SceneError`] naming the file and what is wrong.
+pub fn load_scene(path: &Path, overrides: &[String]) -> Result<GenericScene, SceneError> {
+    let shown = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io { path: shown, source })?;
+    GenericScene::from_toml_str(&text, path, overrides)
+}
+
+/// Solves a generic scene, calling `on_step(done, total)` after each step.
+///
+/// # Errors
+/// [`GenericError`] naming the scene and mesh.
+pub fn solve_generic(
+    scene: &GenericScene,
+    on_step: &mut dyn FnMut(usize, usize),
+) -> Result<GenericOutcome, GenericError> {
+    let clock = Instant::now();
+    let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
+    let contact_error = |source| GenericError::Contact { scene: scene_name.clone(), mesh: mesh_name.clone(), source };
+    let mesh = read_msh(scene.mesh_path()).map_err(|source| GenericError::Mesh {
+        scene: scene_name.clone(),
+        mesh: mesh_name.clone(),
+        source,
+    })?;
+    let read = clock.elapsed().as_secs_f64();
+    let groups = group_reports(scene, &mesh).map_err(contact_error)?;
+    let built = scene.description(mesh).build().map_err(contact_error)?;
+    let schedule = scene.schedule()?;
+    let settings = scene.settings()?;
+    let total = schedule.steps().len();
+    let history =
+        solve_with(&built.problem, &settings, &schedule, &mut |i, _| on_step(i + 1, total)).map_err(contact_error)?;
+    let post_clock = Instant::now();
+    let fixed: Vec<String> = unique(scene.fix.iter().map(|f| f.group.clone()));
+    let mut steps = results::step_results(&built, &history, &fixed)
+        .map_err(|source| GenericError::Fem { scene: scene_name.clone(), source })?;
+    let last = steps.pop().ok_or_else(|| contact_error(ContactError::InvalidInput("no load step solved".into())))?;
+    let mut summary_steps: Vec<StepResult> = steps;
+    summary_steps.push(without_profiles(&last));
+    let status = history
+        .steps
+        .iter()
+        .map(|s| s.solution.status)
+        .find(|s| *s != ContactStatus::Converged)
+        .map_or("converged", results::status_name);
+    let floating_bodies = built
+        .problem
+        .system
+        .floating
+        .iter()
+        .map(|p| FloatingReport { body: p.body.clone(), free_modes: p.mode_names() })
+        .collect();
+    let times = Times {
+        read,
+        assemble: built.problem.build_times.assemble.as_secs_f64(),
+        factor: built.problem.build_times.factor.as_secs_f64(),
+        condense: history.condense_time.as_secs_f64(),
+        solve: history.steps.iter().map(|s| s.solution.time.as_secs_f64()).sum(),
+        post: post_clock.elapsed().as_secs_f64(),
+        total: clock.elapsed().as_secs_f64(),
+    };
+    let mut notes = vec![];
+    if history.steps.len() < total {
+        notes.push(format!(
+            "the history stopped after step {} of {total}: it did not converge ({status})",
+            history.steps.len()
+        ));
+    }
+    let report = GenericReport {
+        scene: scene.name.clone(),
+        status,
+        algorithm: scene.solver.algorithm,
+        dofs: built.problem.system.dofs.num_free(),
+        pairs: built.problem.num_pairs(),
+        iterations: history.steps.iter().map(|s| s.solution.iterations).sum(),
+        scaled: history.scaled,
+        steps: summary_steps,
+        contacts: last.contacts,
+        reactions: last.reactions,
+        energies: last.energies,
+        kkt: last.kkt,
+        floating_bodies,
+        groups,
+        time_s: times,
+        notes,
+    };
+    Ok(GenericOutcome { scene: scene.clone(), built, history, report })
+}
+
+fn without_profiles(step: &StepResult) -> StepResult {
+    let mut s = step.clone();
+    for c in s.contacts.values_mut() {
+        c.profile = None;
+    }
+    s
+}
+
+fn unique(items: impl Iterator<Item = String>) -> Vec<String> {
+    let mut out: Vec<String> = vec![];
+    for i in items {
+        if !out.contains(&i) {
+            out.push(i);
+        }
+    }
+    out
+}
+
+/// The length and bounding box of every group the scene names.
+fn group_reports(
+    scene: &GenericScene,
+    mesh: &contact2d_mesh::Mesh,
+) -> Result<BTreeMap<String, GroupReport>, ContactError> {
+    let names = scene
+        .body
+        .iter()
+        .map(|b| b.region.clone())
+        .chain(scene.fix.iter().map(|f| f.group.clone()))
+        .chain(scene.load.iter().map(|l| l.group.clone()))
+        .chain(scene.contact.iter().flat_map(|c| [c.master.clone(), c.slave.clone()]));
+    let mut out = BTreeMap::new();
+    for name in unique(names) {
+        let group = mesh.group(&name)?;
+        let nodes = mesh.group_nodes(&name)?;
+        let bbox =
+            nodes.iter().map(|n| mesh.points[n.0]).fold([[f64::INFINITY; 2], [f64::NEG_INFINITY; 2]], |[lo, hi], p| {
+                [[lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])]]
+            });
+        let length = if group.dim == 1 { group_length(mesh, &name)? } else { 0.0 };
+        out.insert(name, GroupReport { dim: group.dim, length, bbox });
+    }
+    Ok(out)
+}

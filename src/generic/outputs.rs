@@ -1,0 +1,216 @@
+//! The outputs of a generic run, from (problem, solution) alone:
+//!
+//! ```text
+//! summary.json                      the --json object
+//! mesh.png/.svg                     undeformed and deformed mesh with the pair states (last step)
+//! contact_<name>.png/.svg           pressure and shear along the master curve (last step)
+//! von_mises.png/.svg                the von Mises field (last step)
+//! history.png/.svg                  normal and tangential force of every interface over the steps
+//! contact_<name>.csv                the profile of each interface (last step)
+//! steps.csv                         one row per step: factors, status, resultants per interface
+//! step_000.vtu ... steps.pvd        one VTK file per step and their collection (time = step number)
+//! ```
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use contact2d_contact::ContactSolution;
+
+use super::GenericOutcome;
+use crate::output::chart::{Axes, Series, line_chart};
+use crate::output::step_view::{NodeValues, StepView, state_code};
+use crate::output::{FIGURE_EXTENSIONS, OutputError, field_plot, mesh_plot, step_file_name, vtu};
+
+/// Writes every output of `outcome` into `dir` and returns the paths written.
+///
+/// # Errors
+/// [`OutputError`] naming the first file that could not be written.
+pub fn write_generic_outputs(dir: &Path, outcome: &GenericOutcome) -> Result<Vec<PathBuf>, OutputError> {
+    std::fs::create_dir_all(dir).map_err(|e| OutputError::io(dir, e))?;
+    let mut written = vec![];
+    let name = &outcome.scene.name;
+    let Some(last) = outcome.history.steps.last() else {
+        return Err(OutputError::MissingData { path: dir.to_path_buf(), reason: "no solved step".into() });
+    };
+    let n = outcome.history.steps.len();
+    let view = step_view(outcome, &last.solution);
+    for ext in FIGURE_EXTENSIONS {
+        let path = dir.join(format!("mesh.{ext}"));
+        mesh_plot::draw_mesh(&path, &format!("{name}: mesh (step {n}/{n})"), &view)?;
+        written.push(path);
+        for (iface, result) in &outcome.report.contacts {
+            let path = dir.join(format!("contact_{}.{ext}", file_safe(iface)));
+            draw_profile(&path, &format!("{name}: contact \"{iface}\" (step {n}/{n})"), result)?;
+            written.push(path);
+        }
+        let path = dir.join(format!("von_mises.{ext}"));
+        field_plot::draw_von_mises(&path, &format!("{name}: von Mises stress (step {n}/{n})"), &view)?;
+        written.push(path);
+        if n > 1 {
+            let path = dir.join(format!("history.{ext}"));
+            draw_history(&path, &format!("{name}: contact forces over the steps"), outcome)?;
+            written.push(path);
+        }
+    }
+    for (iface, result) in &outcome.report.contacts {
+        let path = dir.join(format!("contact_{}.csv", file_safe(iface)));
+        write_text(&path, &profile_csv(result))?;
+        written.push(path);
+    }
+    let path = dir.join("steps.csv");
+    write_text(&path, &steps_csv(outcome))?;
+    written.push(path);
+    let mut collection = vec![];
+    for (k, step) in outcome.history.steps.iter().enumerate() {
+        let file = step_file_name(k);
+        let path = dir.join(&file);
+        vtu::write_step_vtu(&path, &step_view(outcome, &step.solution))?;
+        written.push(path);
+        collection.push(((k + 1) as f64, file));
+    }
+    let path = dir.join("steps.pvd");
+    vtu::write_pvd(&path, &collection)?;
+    written.push(path);
+    let path = dir.join("summary.json");
+    let text = serde_json::to_string_pretty(&outcome.report)
+        .map_err(|e| OutputError::Serialize { path: path.clone(), reason: e.to_string() })?;
+    write_text(&path, &(text + "\n"))?;
+    written.push(path);
+    Ok(written)
+}
+
+/// A name usable in a file name: letters, digits, `-` and `_` kept, anything else `_`.
+fn file_safe(name: &str) -> String {
+    name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' || c == '_' { c } else { '_' }).collect()
+}
+
+/// Writes `text` to a temporary name beside `path` and renames it (whole or absent).
+fn write_text(path: &Path, text: &str) -> Result<(), OutputError> {
+    let tmp = path.with_extension("tmp-contact2d");
+    std::fs::write(&tmp, text).map_err(|e| OutputError::io(&tmp, e))?;
+    std::fs::rename(&tmp, path).map_err(|e| OutputError::io(path, e))
+}
+
+/// The writers' view of one step: master-side pressures on the master nodes.
+pub fn step_view<'a>(outcome: &'a GenericOutcome, solution: &'a ContactSolution) -> StepView<'a> {
+    let problem = &outcome.built.problem;
+    let mut node_contact = vec![None; problem.model.mesh.num_nodes()];
+    for iface in &outcome.built.interfaces {
+        let thickness = problem.model.body(&iface.master_region).map_or(1.0, |(_, b)| b.thickness);
+        for k in iface.pairs.clone() {
+            let pair = &problem.pairs[k];
+            let area = pair.weight * thickness;
+            node_contact[pair.master.0] = Some(NodeValues {
+                pressure: solution.normal_force[k] / area,
+                shear: solution.tangential_force[k] / area,
+                state: state_code(solution.state[k]),
+            });
+        }
+    }
+    StepView {
+        problem,
+        solution,
+        obstacles: outcome.built.interfaces.iter().filter(|i| i.rigid_slave).map(|i| &i.slave_contour).collect(),
+        node_contact,
+        axes: ["x1".into(), "x2".into()],
+        stress_label: "σ_vM".into(),
+    }
+}
+
+fn draw_profile(path: &Path, title: &str, result: &super::ContactResult) -> Result<(), OutputError> {
+    let Some(p) = &result.profile else { return Ok(()) };
+    let series = [
+        Series {
+            label: "pressure (≥ 0 in compression)".into(),
+            points: p.s.iter().copied().zip(p.pressure.iter().copied()).collect(),
+            markers: true,
+        },
+        Series {
+            label: "shear".into(),
+            points: p.s.iter().copied().zip(p.shear.iter().copied()).collect(),
+            markers: true,
+        },
+    ];
+    let axes = Axes {
+        title: title.into(),
+        x_label: "s, arc length along the master curve".into(),
+        y_label: "contact traction (force / area)".into(),
+        ..Axes::default()
+    };
+    line_chart(path, &axes, &series)
+}
+
+fn draw_history(path: &Path, title: &str, outcome: &GenericOutcome) -> Result<(), OutputError> {
+    let mut series = vec![];
+    for iface in &outcome.built.interfaces {
+        let at = |f: fn(&super::ContactResult) -> f64| -> Vec<(f64, f64)> {
+            outcome
+                .report
+                .steps
+                .iter()
+                .enumerate()
+                .filter_map(|(i, s)| s.contacts.get(&iface.name).map(|c| ((i + 1) as f64, f(c))))
+                .collect()
+        };
+        series.push(Series {
+            label: format!("{}: normal force", iface.name),
+            points: at(|c| c.normal_force),
+            markers: true,
+        });
+        series.push(Series {
+            label: format!("{}: tangential force", iface.name),
+            points: at(|c| c.tangential_force),
+            markers: true,
+        });
+    }
+    let axes = Axes { title: title.into(), x_label: "load step".into(), y_label: "force".into(), ..Axes::default() };
+    line_chart(path, &axes, &series)
+}
+
+fn profile_csv(result: &super::ContactResult) -> String {
+    let mut out = String::from("s,x,y,pressure,shear,gap,slip,state\n");
+    if let Some(p) = &result.profile {
+        for i in 0..p.s.len() {
+            let _ = writeln!(
+                out,
+                "{:e},{:e},{:e},{:e},{:e},{:e},{:e},{}",
+                p.s[i], p.x[i], p.y[i], p.pressure[i], p.shear[i], p.gap[i], p.slip[i], p.state[i]
+            );
+        }
+    }
+    out
+}
+
+fn steps_csv(outcome: &GenericOutcome) -> String {
+    let patterns: Vec<String> = outcome.built.problem.patterns().iter().map(|p| p.name.clone()).collect();
+    let mut header = vec!["step".to_string()];
+    header.extend(patterns.iter().map(|p| format!("factor_{p}")));
+    header.extend(["status".into(), "iterations".into()]);
+    for i in &outcome.built.interfaces {
+        for q in ["normal_force", "tangential_force", "contact_length", "stick_length", "max_pressure", "dissipation"] {
+            header.push(format!("{}_{q}", i.name));
+        }
+    }
+    let mut out = header.join(",") + "\n";
+    for (k, s) in outcome.report.steps.iter().enumerate() {
+        let mut row = vec![(k + 1).to_string()];
+        row.extend(patterns.iter().map(|p| format!("{:e}", s.factors.get(p).copied().unwrap_or(0.0))));
+        row.extend([s.status.to_string(), s.iterations.to_string()]);
+        for i in &outcome.built.interfaces {
+            if let Some(c) = s.contacts.get(&i.name) {
+                for v in [
+                    c.normal_force,
+                    c.tangential_force,
+                    c.contact_length,
+                    c.stick_length,
+                    c.max_pressure,
+                    c.dissipation,
+                ] {
+                    row.push(format!("{v:e}"));
+                }
+            }
+        }
+        out += &(row.join(",") + "\n");
+    }
+    out
+}

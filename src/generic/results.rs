@@ -1,0 +1,292 @@
+//! Generic results of a solved scene: per interface the resultants, zone lengths and the profile
+//! along the master curve; reactions per fixed group; strain energy per body; KKT residuals.
+//!
+//! ```text
+//! pressure_k = λ_k / (w_k t)     shear_k = τ_k / (w_k t)        (stresses; ≥ 0 in compression)
+//!     w_k: tributary length of master node k, t: thickness of the master body
+//! normal_force = Σ λ_k,  tangential_force = Σ τ_k                (forces; per unit thickness
+//!                                                                 where the thickness is 1)
+//! contact_length: along the master, from where contact starts to where it ends; each end
+//!     between the last pair in contact and the next free one, where the gap opens like
+//!     (s − end)^{3/2}: gap^{2/3} is interpolated linearly over the next two free pairs
+//! stick_length: likewise for the stick zone, with |Δs|^{2/3} of the next slipping pairs
+//!     (0 without friction)
+//! dissipation = Σ_steps Σ_k −½(τ_k,start + τ_k) Δs_k over the interface's slipping pairs
+//! ```
+
+use std::collections::BTreeMap;
+
+use serde::Serialize;
+
+use contact2d_contact::{BuiltProblem, ContactSolution, History, InterfaceInfo, PairState};
+use contact2d_fem::{BodyId, strain_energy};
+
+use crate::output::step_view::state_label;
+
+/// The profile of one interface along its master curve, pair by pair in order of `s`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Profile {
+    /// Arc length along the master curve.
+    pub s: Vec<f64>,
+    /// Master node x.
+    pub x: Vec<f64>,
+    /// Master node y.
+    pub y: Vec<f64>,
+    /// Contact pressure (stress, ≥ 0 in compression).
+    pub pressure: Vec<f64>,
+    /// Shear traction (stress, along the pair tangent).
+    pub shear: Vec<f64>,
+    /// Gap.
+    pub gap: Vec<f64>,
+    /// Relative tangential displacement.
+    pub slip: Vec<f64>,
+    /// `free`, `contact` (frictionless), `stick`, `slip+`, `slip-`.
+    pub state: Vec<&'static str>,
+}
+
+/// One interface's results at one step.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ContactResult {
+    /// Σ λ (force).
+    pub normal_force: f64,
+    /// Σ τ (force).
+    pub tangential_force: f64,
+    /// Length in contact along the master curve.
+    pub contact_length: f64,
+    /// Length of the stick zone (0 without friction).
+    pub stick_length: f64,
+    /// The largest pressure.
+    pub max_pressure: f64,
+    /// Friction dissipation accumulated up to this step.
+    pub dissipation: f64,
+    /// The profile (top level only; omitted in the per-step entries).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub profile: Option<Profile>,
+}
+
+/// KKT residuals of a step.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Kkt {
+    /// max(−gap, 0).
+    pub max_penetration: f64,
+    /// max |λ gap|.
+    pub max_complementarity: f64,
+    /// max(|τ| − μλ, 0).
+    pub max_cone_violation: f64,
+    /// Smallest −τ Δs over slipping pairs (≥ 0 when friction dissipates).
+    pub min_dissipation: f64,
+    /// A slipping pair inside the cone (dimensionless).
+    pub max_slip_inside_cone: f64,
+    /// The force the floating bodies' stabilising springs still carry (0 without floating bodies).
+    pub floating_residual: f64,
+}
+
+/// One step's results.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StepResult {
+    /// Factor of each load pattern.
+    pub factors: BTreeMap<String, f64>,
+    /// The step's status.
+    pub status: &'static str,
+    /// Iterations of the algorithm (summed over a floating body's proximal iterations).
+    pub iterations: usize,
+    /// Per interface.
+    pub contacts: BTreeMap<String, ContactResult>,
+    /// Per fixed group: `[f1, f2]`.
+    pub reactions: BTreeMap<String, [f64; 2]>,
+    /// Per body: strain energy.
+    pub energies: BTreeMap<String, f64>,
+    /// KKT residuals.
+    pub kkt: Kkt,
+}
+
+/// The name of a contact status.
+pub fn status_name(status: contact2d_contact::ContactStatus) -> &'static str {
+    use contact2d_contact::ContactStatus as S;
+    match status {
+        S::Converged => "converged",
+        S::MaxIterations => "max_iterations",
+        S::Infeasible => "infeasible",
+        S::Numerical => "numerical",
+        S::Inadmissible => "inadmissible",
+    }
+}
+
+/// The results of every step of `history`, the profile kept at the last.
+///
+/// # Errors
+/// A strain energy that cannot be evaluated (an element failure).
+pub fn step_results(
+    built: &BuiltProblem,
+    history: &History,
+    fixed_groups: &[String],
+) -> Result<Vec<StepResult>, contact2d_fem::FemError> {
+    let problem = &built.problem;
+    let names: Vec<String> = problem.patterns().iter().map(|p| p.name.clone()).collect();
+    let mut dissipated = vec![0.0; built.interfaces.len()];
+    let mut previous: Option<&ContactSolution> = None;
+    let mut out = Vec::with_capacity(history.steps.len());
+    for (i, step) in history.steps.iter().enumerate() {
+        let s = &step.solution;
+        let last = i + 1 == history.steps.len();
+        let mut contacts = BTreeMap::new();
+        for (k, iface) in built.interfaces.iter().enumerate() {
+            dissipated[k] += interface_dissipation(iface, s, previous);
+            contacts.insert(iface.name.clone(), contact_result(built, iface, s, dissipated[k], last));
+        }
+        let mut energies = BTreeMap::new();
+        for (b, body) in problem.model.bodies.iter().enumerate() {
+            energies.insert(body.name.clone(), strain_energy(&problem.model, BodyId(b), &s.displacement)?);
+        }
+        out.push(StepResult {
+            factors: names.iter().cloned().zip(step.factors.iter().copied()).collect(),
+            status: status_name(s.status),
+            iterations: s.iterations,
+            contacts,
+            reactions: reactions(built, s, &step.factors, fixed_groups),
+            energies,
+            kkt: Kkt {
+                max_penetration: s.kkt.max_penetration,
+                max_complementarity: s.kkt.max_complementarity,
+                max_cone_violation: s.kkt.max_cone_violation,
+                min_dissipation: s.kkt.min_dissipation,
+                max_slip_inside_cone: s.kkt.max_slip_inside_cone,
+                floating_residual: step.floating_residual,
+            },
+        });
+        previous = Some(s);
+    }
+    Ok(out)
+}
+
+/// `[f1, f2]` summed over the constrained DOFs of each group's nodes.
+fn reactions(
+    built: &BuiltProblem,
+    s: &ContactSolution,
+    factors: &[f64],
+    groups: &[String],
+) -> BTreeMap<String, [f64; 2]> {
+    let problem = &built.problem;
+    let dofs = &problem.system.dofs;
+    let r = problem.reactions(&s.displacement, factors);
+    let mut at_dof = vec![0.0; dofs.num_global()];
+    for (j, d) in dofs.constrained_dofs().iter().enumerate() {
+        at_dof[d.0] = r[j];
+    }
+    groups
+        .iter()
+        .filter_map(|g| {
+            let nodes = problem.model.mesh.group_nodes(g).ok()?;
+            let sum = nodes.iter().fold([0.0, 0.0], |a, n| [a[0] + at_dof[2 * n.0], a[1] + at_dof[2 * n.0 + 1]]);
+            Some((g.clone(), sum))
+        })
+        .collect()
+}
+
+/// The interface's pairs sorted by arc length along the master.
+fn sorted_pairs(built: &BuiltProblem, iface: &InterfaceInfo) -> Vec<usize> {
+    let pairs = &built.problem.pairs;
+    let mut order: Vec<usize> = iface.pairs.clone().collect();
+    order.sort_by(|a, b| pairs[*a].master_arc_length.total_cmp(&pairs[*b].master_arc_length).then(a.cmp(b)));
+    order
+}
+
+fn contact_result(
+    built: &BuiltProblem,
+    iface: &InterfaceInfo,
+    s: &ContactSolution,
+    dissipation: f64,
+    with_profile: bool,
+) -> ContactResult {
+    let problem = &built.problem;
+    let order = sorted_pairs(built, iface);
+    let thickness = problem.model.body(&iface.master_region).map_or(1.0, |(_, b)| b.thickness);
+    let area = |k: usize| problem.pairs[k].weight * thickness;
+    let arc: Vec<f64> = order.iter().map(|&k| problem.pairs[k].master_arc_length).collect();
+    let in_contact: Vec<bool> = order.iter().map(|&k| s.state[k] != PairState::Free).collect();
+    let sticks: Vec<bool> = order.iter().map(|&k| s.state[k] == PairState::Stick).collect();
+    let gap: Vec<f64> = order.iter().map(|&k| s.gap[k].max(0.0)).collect();
+    let slip: Vec<f64> = order.iter().map(|&k| s.slip_increment[k].abs()).collect();
+    let contact_length = zone_length(&arc, &in_contact, &gap, &in_contact);
+    let stick_length = if iface.friction > 0.0 { zone_length(&arc, &sticks, &slip, &in_contact) } else { 0.0 };
+    let profile = with_profile.then(|| Profile {
+        s: arc.clone(),
+        x: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][0]).collect(),
+        y: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][1]).collect(),
+        pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).collect(),
+        shear: order.iter().map(|&k| s.tangential_force[k] / area(k)).collect(),
+        gap: order.iter().map(|&k| s.gap[k]).collect(),
+        slip: order.iter().map(|&k| s.slip[k]).collect(),
+        state: order.iter().map(|&k| state_label(s.state[k], problem.friction[k])).collect(),
+    });
+    ContactResult {
+        normal_force: order.iter().map(|&k| s.normal_force[k]).sum(),
+        tangential_force: order.iter().map(|&k| s.tangential_force[k]).sum(),
+        contact_length,
+        stick_length,
+        max_pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).fold(0.0, f64::max),
+        dissipation,
+        profile,
+    }
+}
+
+/// The length of the zone of pairs where `inside` holds (first to last such pair along `arc`),
+/// each end moved into the neighbouring interval where the quantity `opening` of the next two
+/// outside pairs opens like the 3/2 power; an end whose neighbour is outside the contact
+/// (`in_contact` false while measuring a stick zone) or missing stays at the last inside pair.
+fn zone_length(arc: &[f64], inside: &[bool], opening: &[f64], in_contact: &[bool]) -> f64 {
+    let (Some(first), Some(last)) = (inside.iter().position(|v| *v), inside.iter().rposition(|v| *v)) else {
+        return 0.0;
+    };
+    let end = |at: usize, next: Option<usize>, after: Option<usize>| -> f64 {
+        let (Some(f), Some(f2)) = (next, after) else { return arc[at] };
+        if inside[f] || inside[f2] || (!in_contact[f] && in_contact[at] && opening_is_slip(in_contact, inside)) {
+            return arc[at];
+        }
+        let (d1, d2) = (opening[f].powf(2.0 / 3.0), opening[f2].powf(2.0 / 3.0));
+        let e = if d2 > d1 { arc[f] - d1 * (arc[f2] - arc[f]) / (d2 - d1) } else { arc[f] };
+        let (lo, hi) = if arc[at] < arc[f] { (arc[at], arc[f]) } else { (arc[f], arc[at]) };
+        e.clamp(lo, hi)
+    };
+    let n = arc.len();
+    let hi = end(last, (last + 1 < n).then_some(last + 1), (last + 2 < n).then_some(last + 2));
+    let lo = end(first, first.checked_sub(1), first.checked_sub(2));
+    (hi - lo).abs()
+}
+
+/// Whether `inside` is a strict part of the contact zone (a stick zone), so that a free
+/// neighbour ends it at the contact end rather than by interpolating a slip.
+fn opening_is_slip(in_contact: &[bool], inside: &[bool]) -> bool {
+    inside != in_contact
+}
+
+/// The friction work of the interface's slipping pairs in one step (trapezoid rule).
+fn interface_dissipation(iface: &InterfaceInfo, s: &ContactSolution, previous: Option<&ContactSolution>) -> f64 {
+    iface
+        .pairs
+        .clone()
+        .filter(|&k| matches!(s.state[k], PairState::SlipPositive | PairState::SlipNegative))
+        .map(|k| {
+            let start = previous.map_or(0.0, |p| p.tangential_force[k]);
+            -0.5 * (start + s.tangential_force[k]) * s.slip_increment[k]
+        })
+        .sum()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_zone_from_the_start_ends_where_the_gap_opens_like_three_halves() {
+        // Gap (s − 0.25)^{3/2} beyond the end 0.25: the interpolation over the next two free
+        // pairs recovers the end exactly.
+        let arc = [0.0, 0.1, 0.2, 0.3, 0.4];
+        let inside = [true, true, true, false, false];
+        let opening: Vec<f64> = arc.iter().map(|s: &f64| (s - 0.25f64).max(0.0).powf(1.5)).collect();
+        let l = zone_length(&arc, &inside, &opening, &inside);
+        assert!((l - 0.25).abs() < 1e-12, "{l}");
+        assert_eq!(zone_length(&arc, &[false; 5], &opening, &[false; 5]), 0.0);
+        assert_eq!(zone_length(&arc, &[true; 5], &opening, &[true; 5]), 0.4);
+    }
+}

@@ -1,0 +1,584 @@
+//! Generic scene files: any geometry on a Gmsh mesh, parsed at the edge into a
+//! [`ProblemDescription`], a [`LoadSchedule`] and [`SolverSettings`].
+//!
+//! ```toml
+//! name = "cylinder_on_block"
+//! mesh = "cylinder_on_block.msh"    # relative to the scene file
+//! plane = "strain"                  # "stress" (default) or "strain"; a body may override
+//! [[body]]
+//! region = "cylinder"               # 2D physical group
+//! youngs_modulus = 210000.0
+//! poissons_ratio = 0.3
+//! [[fix]]                           # 1D (or 0D) physical group; any of u1, u2
+//! group = "block_bottom"
+//! u1 = 0.0
+//! u2 = 0.0
+//! [[load]]                          # force (total, per unit thickness), traction or pressure
+//! group = "cylinder_top"
+//! force = [0.0, -35000.0]
+//! pattern = "press"                 # default "main"
+//! [[contact]]
+//! name = "hertz"
+//! master = "cylinder_arc"
+//! slave = "block_top"
+//! friction = 0.0
+//! [loading]                         # steps = N, or a schedule of pattern factors
+//! schedule = [{ press = 0.5 }, { press = 1.0 }]
+//! [solver]
+//! algorithm = "active_set"
+//! ```
+//!
+//! Every key, unit and default is in `docs/user-guide.md` ("Generic scenes"). Unknown keys are
+//! errors; errors name the file and the line (syntax, types) or the dotted key (values).
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use serde::Deserialize;
+
+use contact2d_contact::{
+    BodyDescription, ContactAlgorithm, ContactDescription, EdgeLoadKind, FixDescription, GapDescription,
+    LoadDescription, LoadSchedule, Pairing, ProblemDescription, SolverSettings, builder::DEFAULT_PATTERN,
+};
+use contact2d_element::PlaneCondition;
+use contact2d_fem::Component;
+use contact2d_mesh::Mesh;
+
+use crate::scene::{SceneError, apply_override, line_of, spanned_reason};
+
+/// The plane condition as spelled in scene files.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PlaneKey {
+    /// Plane stress.
+    Stress,
+    /// Plane strain.
+    Strain,
+}
+
+impl PlaneKey {
+    fn condition(self) -> PlaneCondition {
+        match self {
+            PlaneKey::Stress => PlaneCondition::Stress,
+            PlaneKey::Strain => PlaneCondition::Strain,
+        }
+    }
+}
+
+/// One `[[body]]`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodyEntry {
+    /// The 2D physical group.
+    pub region: String,
+    /// E (stress units).
+    pub youngs_modulus: f64,
+    /// ν.
+    pub poissons_ratio: f64,
+    /// Overrides the scene's `plane`.
+    pub plane: Option<PlaneKey>,
+    /// Out-of-plane thickness (default 1).
+    #[serde(default = "one")]
+    pub thickness: f64,
+}
+
+/// One `[[fix]]`: prescribed displacement components on a group.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FixEntry {
+    /// A 1D or 0D physical group.
+    pub group: String,
+    /// Prescribed u1.
+    pub u1: Option<f64>,
+    /// Prescribed u2.
+    pub u2: Option<f64>,
+    /// The load pattern of its non-zero values (default `main`).
+    #[serde(default = "main")]
+    pub pattern: String,
+}
+
+/// One `[[load]]`: exactly one of `force`, `traction`, `pressure`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LoadEntry {
+    /// A 1D physical group.
+    pub group: String,
+    /// Total force `[F1, F2]` on the group, per unit thickness.
+    pub force: Option<[f64; 2]>,
+    /// Traction vector (force per unit length and thickness).
+    pub traction: Option<[f64; 2]>,
+    /// Pressure, positive against the body.
+    pub pressure: Option<f64>,
+    /// The load pattern (default `main`).
+    #[serde(default = "main")]
+    pub pattern: String,
+}
+
+/// Pairing as spelled in scene files.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PairingKey {
+    /// Node to segment (the mesh as given).
+    NodeToSegment,
+    /// Node to node after sliding the slave nodes onto the paired points.
+    NodeToNode,
+}
+
+/// A gap: `"geometric"` or a number.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(untagged)]
+pub enum GapKey {
+    /// A given gap for every pair (length units; negative is an interference).
+    Given(f64),
+    /// `"geometric"`.
+    Named(String),
+}
+
+/// One `[[contact]]`.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ContactEntry {
+    /// The interface's name (keys the outputs).
+    pub name: String,
+    /// Master curve (1D group).
+    pub master: String,
+    /// Slave curve (1D group).
+    pub slave: String,
+    /// The slave is a fixed rigid obstacle (its region is no body).
+    #[serde(default)]
+    pub rigid: bool,
+    /// Pairing (default `node_to_segment`).
+    #[serde(default = "node_to_segment")]
+    pub pairing: PairingKey,
+    /// Initial gap (default `"geometric"`).
+    #[serde(default = "geometric")]
+    pub gap: GapKey,
+    /// μ (default 0).
+    #[serde(default)]
+    pub friction: f64,
+}
+
+/// The `[loading]` section.
+#[derive(Debug, Clone, PartialEq, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct LoadingSection {
+    /// Every pattern from 0 to 1 in this many equal steps.
+    pub steps: Option<usize>,
+    /// The factor of each named pattern at the end of each step (unnamed patterns: 0).
+    pub schedule: Option<Vec<BTreeMap<String, f64>>>,
+}
+
+/// Algorithm as spelled in scene files.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum AlgorithmKey {
+    /// Primal-dual active set.
+    ActiveSet,
+    /// Clarabel.
+    Clarabel,
+    /// The paper's Boussinesq algorithm.
+    Boussinesq,
+}
+
+/// The `[solver]` section.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SolverEntry {
+    /// Algorithm (default `active_set`).
+    #[serde(default = "active_set")]
+    pub algorithm: AlgorithmKey,
+    /// Iteration limit per step (default 100).
+    #[serde(default = "hundred")]
+    pub max_iterations: usize,
+}
+
+impl Default for SolverEntry {
+    fn default() -> Self {
+        SolverEntry { algorithm: AlgorithmKey::ActiveSet, max_iterations: 100 }
+    }
+}
+
+fn one() -> f64 {
+    1.0
+}
+fn main() -> String {
+    DEFAULT_PATTERN.to_string()
+}
+fn node_to_segment() -> PairingKey {
+    PairingKey::NodeToSegment
+}
+fn geometric() -> GapKey {
+    GapKey::Named("geometric".into())
+}
+fn active_set() -> AlgorithmKey {
+    AlgorithmKey::ActiveSet
+}
+fn hundred() -> usize {
+    100
+}
+fn stress() -> PlaneKey {
+    PlaneKey::Stress
+}
+
+/// A generic scene.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GenericScene {
+    /// Short name (outputs, titles).
+    pub name: String,
+    /// One line for people.
+    #[serde(default)]
+    pub description: String,
+    /// The mesh, relative to the scene file.
+    pub mesh: PathBuf,
+    /// Default plane condition of the bodies.
+    #[serde(default = "stress")]
+    pub plane: PlaneKey,
+    /// Bodies.
+    #[serde(default)]
+    pub body: Vec<BodyEntry>,
+    /// Prescribed displacements.
+    #[serde(default)]
+    pub fix: Vec<FixEntry>,
+    /// Edge loads.
+    #[serde(default)]
+    pub load: Vec<LoadEntry>,
+    /// Contact interfaces.
+    #[serde(default)]
+    pub contact: Vec<ContactEntry>,
+    /// The load schedule (default one step).
+    #[serde(default)]
+    pub loading: LoadingSection,
+    /// The solver.
+    #[serde(default)]
+    pub solver: SolverEntry,
+    /// The scene file's directory.
+    #[serde(skip)]
+    pub base_dir: PathBuf,
+    /// The scene file as given.
+    #[serde(skip)]
+    pub file: PathBuf,
+}
+
+/// Whether the TOML text is a generic scene (it has a top-level `mesh` and no `[plate_insert]`).
+pub fn is_generic(text: &str) -> bool {
+    toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key("mesh") && !t.contains_key("plate_insert"))
+}
+
+impl GenericScene {
+    /// Parses `text` as if read from `path`, applies `overrides` and checks the values.
+    ///
+    /// # Errors
+    /// [`SceneError`] naming the file and the line, key or override at fault.
+    pub fn from_toml_str(text: &str, path: &Path, overrides: &[String]) -> Result<GenericScene, SceneError> {
+        let shown = path.display().to_string();
+        let invalid = |reason: String| SceneError::Invalid { path: shown.clone(), reason };
+        let mut value: toml::Value = toml::from_str(text).map_err(|e| invalid(spanned_reason(text, &e)))?;
+        for assignment in overrides {
+            apply_override(&mut value, assignment)?;
+        }
+        let mut scene: GenericScene = match value.try_into() {
+            Ok(scene) => scene,
+            Err(e) => {
+                let e: toml::de::Error = e;
+                let shown_error = e.to_string();
+                let key =
+                    shown_error.rsplit_once("\nin `").map(|(_, k)| k.trim_end().trim_end_matches('`').to_string());
+                let at = key.map_or(String::new(), |k| format!("{k}: "));
+                return Err(invalid(match (overrides.is_empty(), toml::from_str::<GenericScene>(text)) {
+                    (true, Err(spanned)) if spanned.message() == e.message() => {
+                        format!("{}{at}{}", line_of(text, &spanned), e.message())
+                    }
+                    (true, _) => format!("{at}{}", e.message()),
+                    (false, _) => format!("{at}{} (after the --set overrides)", e.message()),
+                }));
+            }
+        };
+        scene.file = path.to_path_buf();
+        scene.base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        scene.validate()?;
+        Ok(scene)
+    }
+
+    /// The mesh path resolved against the scene file's directory.
+    pub fn mesh_path(&self) -> PathBuf {
+        self.base_dir.join(&self.mesh)
+    }
+
+    fn fail(&self, key: &str, reason: String) -> SceneError {
+        SceneError::Value { path: self.file.display().to_string(), key: key.to_string(), reason }
+    }
+
+    /// Checks ranges and contradictions that need no mesh.
+    ///
+    /// # Errors
+    /// [`SceneError::Value`] naming the first key at fault.
+    pub fn validate(&self) -> Result<(), SceneError> {
+        if self.body.is_empty() {
+            return Err(self.fail("body", "no [[body]]: name at least one 2D region".into()));
+        }
+        for (i, b) in self.body.iter().enumerate() {
+            if !(b.youngs_modulus.is_finite() && b.youngs_modulus > 0.0) {
+                return Err(self.fail(
+                    &format!("body.{i}.youngs_modulus"),
+                    format!("{} must be finite and > 0", b.youngs_modulus),
+                ));
+            }
+            if !(b.poissons_ratio > -1.0 && b.poissons_ratio < 0.5) {
+                return Err(self
+                    .fail(&format!("body.{i}.poissons_ratio"), format!("{} must lie in (−1, 0.5)", b.poissons_ratio)));
+            }
+            if !(b.thickness.is_finite() && b.thickness > 0.0) {
+                return Err(
+                    self.fail(&format!("body.{i}.thickness"), format!("{} must be finite and > 0", b.thickness))
+                );
+            }
+            if self.body[..i].iter().any(|c| c.region == b.region) {
+                return Err(self.fail(&format!("body.{i}.region"), format!("\"{}\" is a body twice", b.region)));
+            }
+        }
+        for (i, f) in self.fix.iter().enumerate() {
+            if f.u1.is_none() && f.u2.is_none() {
+                return Err(
+                    self.fail(&format!("fix.{i}"), format!("fixes nothing on \"{}\": give u1, u2 or both", f.group))
+                );
+            }
+            if let Some(v) = f.u1.iter().chain(&f.u2).find(|v| !v.is_finite()) {
+                return Err(self.fail(&format!("fix.{i}"), format!("value {v} is not finite")));
+            }
+        }
+        for (i, l) in self.load.iter().enumerate() {
+            let given =
+                usize::from(l.force.is_some()) + usize::from(l.traction.is_some()) + usize::from(l.pressure.is_some());
+            if given != 1 {
+                return Err(self.fail(
+                    &format!("load.{i}"),
+                    format!("give exactly one of force, traction, pressure on \"{}\" ({given} given)", l.group),
+                ));
+            }
+        }
+        for (i, c) in self.contact.iter().enumerate() {
+            if !(c.friction.is_finite() && c.friction >= 0.0) {
+                return Err(
+                    self.fail(&format!("contact.{i}.friction"), format!("{} must be finite and ≥ 0", c.friction))
+                );
+            }
+            match &c.gap {
+                GapKey::Named(n) if n != "geometric" => {
+                    return Err(
+                        self.fail(&format!("contact.{i}.gap"), format!("\"{n}\": give \"geometric\" or a number"))
+                    );
+                }
+                GapKey::Given(g) if !g.is_finite() => {
+                    return Err(self.fail(&format!("contact.{i}.gap"), format!("{g} is not finite")));
+                }
+                _ => {}
+            }
+            if self.contact[..i].iter().any(|d| d.name == c.name) {
+                return Err(self.fail(&format!("contact.{i}.name"), format!("\"{}\" names two contacts", c.name)));
+            }
+        }
+        if self.solver.algorithm == AlgorithmKey::Boussinesq && self.contact.len() != 1 {
+            return Err(self.fail(
+                "solver.algorithm",
+                format!("boussinesq solves exactly one contact interface; the scene has {}", self.contact.len()),
+            ));
+        }
+        SolverSettings::new(ContactAlgorithm::ActiveSet)
+            .with_max_iterations(self.solver.max_iterations)
+            .map_err(|e| self.fail("solver.max_iterations", e.to_string()))?;
+        self.schedule().map(|_| ())
+    }
+
+    /// The pattern names the scene's values and loads use, `main` first.
+    pub fn pattern_names(&self) -> Vec<String> {
+        let mut names: Vec<String> = vec![];
+        let used = self
+            .fix
+            .iter()
+            .filter(|f| f.u1.is_some_and(|v| v != 0.0) || f.u2.is_some_and(|v| v != 0.0))
+            .map(|f| &f.pattern)
+            .chain(self.load.iter().map(|l| &l.pattern));
+        for n in used {
+            if !names.contains(n) {
+                names.push(n.clone());
+            }
+        }
+        if let Some(at) = names.iter().position(|n| n == DEFAULT_PATTERN) {
+            let m = names.remove(at);
+            names.insert(0, m);
+        }
+        if names.is_empty() {
+            names.push(DEFAULT_PATTERN.into());
+        }
+        names
+    }
+
+    /// The load schedule: `steps = N` ramps every pattern; a `schedule` lists each step's
+    /// factors; neither is one step with every pattern at 1.
+    ///
+    /// # Errors
+    /// Both given, a schedule naming an unknown pattern, or a schedule the library refuses.
+    pub fn schedule(&self) -> Result<LoadSchedule, SceneError> {
+        let names = self.pattern_names();
+        match (&self.loading.steps, &self.loading.schedule) {
+            (Some(_), Some(_)) => Err(self.fail("loading", "give steps or schedule, not both".into())),
+            (Some(n), None) => LoadSchedule::ramp(names, *n).map_err(|e| self.fail("loading.steps", e.to_string())),
+            (None, Some(schedule)) => {
+                for (i, step) in schedule.iter().enumerate() {
+                    if let Some(unknown) = step.keys().find(|k| !names.contains(k)) {
+                        return Err(self.fail(
+                            &format!("loading.schedule[{i}]"),
+                            format!("\"{unknown}\" is no load pattern of this scene (patterns: {})", names.join(", ")),
+                        ));
+                    }
+                }
+                let steps =
+                    schedule.iter().map(|s| names.iter().map(|n| s.get(n).copied().unwrap_or(0.0)).collect()).collect();
+                LoadSchedule::new(names, steps).map_err(|e| self.fail("loading.schedule", e.to_string()))
+            }
+            (None, None) => LoadSchedule::ramp(names, 1).map_err(|e| self.fail("loading", e.to_string())),
+        }
+    }
+
+    /// The solver settings.
+    ///
+    /// # Errors
+    /// An iteration limit out of range.
+    pub fn settings(&self) -> Result<SolverSettings, SceneError> {
+        let algorithm = match self.solver.algorithm {
+            AlgorithmKey::ActiveSet => ContactAlgorithm::ActiveSet,
+            AlgorithmKey::Clarabel => ContactAlgorithm::Clarabel,
+            AlgorithmKey::Boussinesq => ContactAlgorithm::Boussinesq,
+        };
+        SolverSettings::new(algorithm)
+            .with_max_iterations(self.solver.max_iterations)
+            .map_err(|e| self.fail("solver.max_iterations", e.to_string()))
+    }
+
+    /// The problem description on `mesh`.
+    pub fn description(&self, mesh: Mesh) -> ProblemDescription {
+        let bodies = self
+            .body
+            .iter()
+            .map(|b| BodyDescription {
+                region: b.region.clone(),
+                youngs_modulus: b.youngs_modulus,
+                poissons_ratio: b.poissons_ratio,
+                plane: b.plane.unwrap_or(self.plane).condition(),
+                thickness: b.thickness,
+            })
+            .collect();
+        let mut fixes = vec![];
+        for f in &self.fix {
+            for (component, value) in [(Component::X, f.u1), (Component::Y, f.u2)] {
+                if let Some(value) = value {
+                    fixes.push(FixDescription { group: f.group.clone(), component, value, pattern: f.pattern.clone() });
+                }
+            }
+        }
+        let loads = self
+            .load
+            .iter()
+            .map(|l| LoadDescription {
+                group: l.group.clone(),
+                kind: match (l.force, l.traction, l.pressure) {
+                    (Some(f), _, _) => EdgeLoadKind::Force(f),
+                    (_, Some(t), _) => EdgeLoadKind::Traction(t),
+                    (_, _, p) => EdgeLoadKind::Pressure(p.unwrap_or(0.0)),
+                },
+                pattern: l.pattern.clone(),
+            })
+            .collect();
+        let contacts = self
+            .contact
+            .iter()
+            .map(|c| ContactDescription {
+                name: c.name.clone(),
+                master: c.master.clone(),
+                slave: c.slave.clone(),
+                rigid_slave: c.rigid,
+                pairing: match c.pairing {
+                    PairingKey::NodeToSegment => Pairing::NodeToSegment,
+                    PairingKey::NodeToNode => Pairing::NodeToNode,
+                },
+                gap: match c.gap {
+                    GapKey::Given(g) => GapDescription::Given(g),
+                    GapKey::Named(_) => GapDescription::Geometric,
+                },
+                friction: c.friction,
+            })
+            .collect();
+        ProblemDescription { mesh, bodies, fixes, loads, contacts }
+    }
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+
+    const SCENE: &str = r#"
+name = "t"
+mesh = "m.msh"
+[[body]]
+region = "a"
+youngs_modulus = 1.0
+poissons_ratio = 0.3
+[[body]]
+region = "b"
+youngs_modulus = 2.0
+poissons_ratio = 0.3
+[[fix]]
+group = "bottom"
+u1 = 0.0
+u2 = 0.0
+[[fix]]
+group = "top"
+u1 = 0.1
+pattern = "slide"
+[[load]]
+group = "top"
+pressure = 1.0
+pattern = "press"
+[[contact]]
+name = "joint"
+master = "b_bottom"
+slave = "a_top"
+[loading]
+schedule = [{ press = 1.0 }, { press = 1.0, slide = 1.0 }]
+"#;
+
+    #[test]
+    fn parses_patterns_schedule_and_overrides_by_index_and_name() {
+        let path = Path::new("scenes/t.toml");
+        let s = GenericScene::from_toml_str(SCENE, path, &["contact.joint.friction=0.3".into()]).unwrap();
+        assert_eq!(s.contact[0].friction, 0.3);
+        let s =
+            GenericScene::from_toml_str(SCENE, path, &["contact.0.friction=0.2".into(), "body.b.thickness=2".into()])
+                .unwrap();
+        assert_eq!(s.contact[0].friction, 0.2);
+        assert_eq!(s.body[1].thickness, 2.0);
+        assert_eq!(s.pattern_names(), ["slide", "press"]);
+        let schedule = s.schedule().unwrap();
+        assert_eq!(schedule.steps(), &[vec![0.0, 1.0], vec![1.0, 1.0]]);
+        assert!(is_generic(SCENE));
+    }
+
+    #[test]
+    fn bad_values_name_their_key() {
+        let path = Path::new("scenes/t.toml");
+        let err = |o: &str| GenericScene::from_toml_str(SCENE, path, &[o.into()]).unwrap_err().to_string();
+        assert!(err("contact.0.friction=-1").contains("contact.0.friction"));
+        assert!(err("body.a.poissons_ratio=0.5").contains("body.0.poissons_ratio"));
+        assert!(err("contact.7.friction=0").contains("past its end"));
+        assert!(err("contact.nope.friction=0").contains("nope"));
+        assert!(err("loading.steps=3").contains("not both"));
+        let text = SCENE.replace("pressure = 1.0", "pressure = 1.0\nforce = [1.0, 0.0]");
+        assert!(GenericScene::from_toml_str(&text, path, &[]).unwrap_err().to_string().contains("exactly one"));
+        let text = SCENE.replace("{ press = 1.0 }, ", "{ pres = 1.0 }, ");
+        assert!(GenericScene::from_toml_str(&text, path, &[]).unwrap_err().to_string().contains("pres"));
+        let text = format!("{SCENE}\nbogus = 1\n");
+        assert!(GenericScene::from_toml_str(&text, path, &[]).unwrap_err().to_string().contains("bogus"));
+    }
+}
