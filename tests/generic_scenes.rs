@@ -64,3 +64,72 @@ fn the_flagship_in_the_generic_schema_gives_the_presets_numbers() {
     }
     assert!(total[0].abs() < 1e-10 * r.P && total[1].abs() < 1e-10 * r.P, "reactions sum to {total:?}");
 }
+
+fn solve(path: &str) -> contact2d::generic::GenericOutcome {
+    let scene = load_scene(Path::new(path), &[]).unwrap();
+    solve_generic(&scene, &mut |_, _| {}).unwrap()
+}
+
+#[test]
+fn two_blocks_pressed_then_slid_reach_coulombs_limit() {
+    // Force control in x2 (the upper block floats), then gross sliding: Σλ = P = 1000 exactly
+    // (equilibrium of the floating block) and |Στ| = μ P = 300 (Coulomb's law on every slipping
+    // pair). Tolerance 1e-8: the floating equilibrium is iterated to 1e-10 of the force scale.
+    let out = solve("scenes/generic/two_blocks_press_slide.toml");
+    let r = &out.report;
+    assert_eq!(r.status, "converged");
+    assert_eq!(r.steps.len(), 6);
+    assert_eq!(r.floating_bodies.len(), 1);
+    let joint = &r.contacts["joint"];
+    assert!((joint.normal_force - 1000.0).abs() < 1e-8 * 1000.0, "{}", joint.normal_force);
+    assert!((joint.tangential_force.abs() - 300.0).abs() < 1e-8 * 1000.0, "{}", joint.tangential_force);
+    // Friction work only accumulates (each step's dissipation is ≥ 0) and grows once it slides.
+    let work: Vec<f64> = r.steps.iter().map(|s| s.contacts["joint"].dissipation).collect();
+    assert!(work.windows(2).all(|w| w[1] >= w[0]) && work[5] > work[2], "{work:?}");
+    // The clamped bottom carries what the top receives.
+    let (bottom, top) = (r.reactions["lower_bottom"], r.reactions["upper_top"]);
+    assert!((bottom[0] + top[0]).abs() < 1e-8 * 1000.0 && (bottom[1] - 1000.0).abs() < 1e-8 * 1000.0);
+}
+
+#[test]
+fn a_floating_roller_on_a_block_is_held_by_its_contact() {
+    // The roller (held only by the contact and the symmetry line) carries F/2 = 17 500 N/mm into
+    // the block: Σλ equals it to the floating tolerance. The Hertz half-width a = 6.21 mm is met
+    // within 1 % on the L2 mesh (the gallery's verification studies the convergence).
+    let out = solve("scenes/generic/cylinder_on_block.toml");
+    let r = &out.report;
+    assert_eq!(r.status, "converged");
+    assert_eq!(r.floating_bodies[0].body, "cylinder");
+    assert_eq!(r.floating_bodies[0].free_modes, ["u2 translation"]);
+    let hertz = &r.contacts["hertz"];
+    assert!((hertz.normal_force - 17_500.0).abs() < 1e-8 * 17_500.0, "{}", hertz.normal_force);
+    let e_star = 1.0 / ((1.0 - 0.09) / 210_000.0 + (1.0 - 0.09) / 70_000.0);
+    let a = (4.0 * 35_000.0 * 50.0 / (std::f64::consts::PI * e_star)).sqrt();
+    assert!((hertz.contact_length - a).abs() < 0.01 * a, "a = {} against {a}", hertz.contact_length);
+    assert_eq!(hertz.stick_length, 0.0, "frictionless: no stick zone");
+    let profile = hertz.profile.as_ref().unwrap();
+    assert!(profile.state.iter().all(|s| *s == "contact" || *s == "free"), "frictionless pairs are 'contact'");
+}
+
+#[test]
+fn a_floating_pin_pushed_through_its_clearance_bears_on_the_lug() {
+    // The pin crosses the 0.1 mm clearance and bears on the hole; the lug's clamped end takes the
+    // whole push (x equilibrium, to the floating tolerance).
+    let out = solve("scenes/generic/pin_lug.toml");
+    let r = &out.report;
+    assert_eq!(r.status, "converged");
+    assert_eq!(r.floating_bodies[0].body, "pin");
+    assert!((r.reactions["lug_fixed"][0] + 1000.0).abs() < 1e-7 * 1000.0, "{:?}", r.reactions["lug_fixed"]);
+    let bore = &r.contacts["bore"];
+    assert!(bore.contact_length > 0.0 && bore.stick_length <= bore.contact_length);
+    assert!(r.kkt.max_penetration < 1e-9 && r.kkt.max_cone_violation < 1e-9);
+}
+
+#[test]
+fn an_unheld_body_is_a_typed_error_naming_it() {
+    // Pulling the roller away: the contact cannot hold it.
+    let scene =
+        load_scene(Path::new("scenes/generic/cylinder_on_block.toml"), &["load.0.force=[0.0, 1000.0]".into()]).unwrap();
+    let err = solve_generic(&scene, &mut |_, _| {}).unwrap_err().to_string();
+    assert!(err.contains("\"cylinder\"") && err.contains("u2 translation"), "{err}");
+}

@@ -21,7 +21,7 @@
 //! ```
 //!
 //! whose fixed point is `K u = f + Bᵀλ` exactly: the springs carry no force in the answer. The
-//! residual `‖D (u_{j+1} − u_j)‖∞`, the force the springs still carry, is the equilibrium error;
+//! residual `‖D (u_{j+1} − u_j)‖₁`, the force the springs still carry, is the equilibrium error;
 //! the iteration stops when it is below [`SolverSettings::floating_tolerance`] times the force
 //! scale, and reports it. A body the contact does not hold keeps moving by `D⁻¹ f` per iteration:
 //! the residual does not fall, and the step fails with [`ContactError::BodyNotHeld`] naming the
@@ -121,7 +121,7 @@ pub struct SolvedStep {
     pub dissipated: f64,
     /// Proximal iterations of floating bodies (0 without floating bodies).
     pub floating_iterations: usize,
-    /// The force the stabilising springs still carry, `‖D (u_{j+1} − u_j)‖∞` (0 without floating
+    /// The force the stabilising springs still carry, `‖D (u_{j+1} − u_j)‖₁` (0 without floating
     /// bodies): the equilibrium error of the answer.
     pub floating_residual: f64,
 }
@@ -300,7 +300,8 @@ fn solve_floating_step(
         interface.update_load(loaded);
         let solution = solve_step(loaded, interface, settings, context);
         let free = loaded.system.dofs.restrict_free(&solution.displacement);
-        let residual = springs.iter().fold(0.0f64, |a, &(i, k)| a.max((k * (free[i] - previous_free[i])).abs()));
+        // The springs' total force (ℓ1): its resultant bounds the error of every resultant.
+        let residual: f64 = springs.iter().map(|&(i, k)| (k * (free[i] - previous_free[i])).abs()).sum();
         let scale = force_scale(loaded, &solution);
         let moved: Vec<f64> = free.iter().zip(previous_free.iter()).map(|(a, b)| a - b).collect();
         *previous_free = free;
