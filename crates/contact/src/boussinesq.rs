@@ -31,7 +31,7 @@ use crate::error::ContactError;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
-use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
+use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart, Violation};
 use crate::state_equations::{combine, state_system};
 
 /// How a Boussinesq step is loaded.
@@ -62,15 +62,6 @@ pub struct Zones {
     pub contact_end: usize,
     /// The slip state of the slip zone (if any).
     pub slip: Option<PairState>,
-}
-
-/// A violated inequality of (5.1).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Violation {
-    /// The pair.
-    pub pair: usize,
-    /// Which condition.
-    pub condition: &'static str,
 }
 
 /// The outcome of a Boussinesq step.

@@ -29,7 +29,7 @@ pub mod tresca_qp;
 
 pub use active_set::solve_frictionless_active_set;
 pub use boussinesq::{
-    BoussinesqLoading, BoussinesqStep, Violation, ZoneForces, Zones, finish_zones, solve_boussinesq_history,
+    BoussinesqLoading, BoussinesqStep, ZoneForces, Zones, finish_zones, solve_boussinesq_history,
     solve_boussinesq_step, solve_given_zones,
 };
 pub use builder::{
@@ -46,6 +46,6 @@ pub use post::{contact_end, contact_end_from_pressure, pair_tractions, stick_end
 pub use problem::{BuildTimes, ContactProblem, LoadPattern, PairRow};
 pub use qp::solve_frictionless_qp;
 pub use report::{RawSolution, fem_solution, finish_from_displacement, finish_from_forces};
-pub use solution::{ContactSolution, ContactStatus, IterationRecord, KktResiduals, PairState, StepStart};
+pub use solution::{ContactSolution, ContactStatus, IterationRecord, KktResiduals, PairState, StepStart, Violation};
 pub use solve::{ContactAlgorithm, History, SolvedStep, SolverSettings, solve, solve_with};
 pub use tresca_qp::solve_frictional_qp;

@@ -109,7 +109,17 @@ pub struct ContactSolution {
     /// Inequalities of the contact conditions (5.1) that the answer violates, checked by
     /// algorithms that assume a structure (the Boussinesq zones); empty otherwise. The status
     /// is then [`ContactStatus::Inadmissible`].
-    pub violations: Vec<crate::boussinesq::Violation>,
+    pub violations: Vec<Violation>,
+}
+
+/// A violated inequality of the contact conditions (5.1), reported by an algorithm that assumes
+/// a structure of the zones (the Boussinesq algorithm) instead of solving for it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Violation {
+    /// The pair.
+    pub pair: usize,
+    /// Which condition.
+    pub condition: &'static str,
 }
 
 /// One iteration of an algorithm, as logged by `contact2d run -v`.

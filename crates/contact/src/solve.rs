@@ -389,16 +389,8 @@ fn solve_step(
         ContactAlgorithm::Boussinesq => {
             // The contact-end search moves one pair per iteration.
             let max = max.max(2 * context.order.len());
-            let mut step = solve_boussinesq_step(
-                problem,
-                interface,
-                context.order,
-                BoussinesqLoading::Load(1.0),
-                context.start,
-                max,
-            );
-            step.solution.violations = step.violations;
-            step.solution
+            solve_boussinesq_step(problem, interface, context.order, BoussinesqLoading::Load(1.0), context.start, max)
+                .solution
         }
     }
 }
