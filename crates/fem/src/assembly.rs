@@ -17,7 +17,7 @@ use contact2d_element::{EdgeType, GaussRule, edge_traction_load, element_stiffne
 use std::collections::HashMap;
 
 use contact2d_mesh::{CellKind, NodeId};
-use faer::sparse::{SparseColMat, Triplet};
+use faer::sparse::Triplet;
 use rayon::prelude::*;
 
 use crate::dof::{Component, Dof, DofKind, DofMap};
@@ -27,8 +27,7 @@ use crate::ordering::NodeGraph;
 use crate::pattern::assemble_free_free;
 use crate::rigid::{FloatingPiece, check_rigid_modes, floating_pieces};
 
-/// Compressed sparse column matrix of f64 with usize indices.
-pub type Csc = SparseColMat<usize, f64>;
+pub use crate::sparse::Csc;
 
 /// The assembled, Dirichlet-reduced linear system of a model.
 #[derive(Debug, Clone)]

@@ -21,6 +21,7 @@ pub mod recovery;
 pub mod rigid;
 pub mod solution;
 pub mod solve;
+mod sparse;
 
 pub use assembly::{Csc, FLOATING_SPRING, LinearSystem, assemble, assemble_edge_loads};
 pub use dof::{Component, Dof, DofKind, DofMap};

@@ -22,10 +22,10 @@ use faer::sparse::SymbolicSparseColMat;
 use faer::sparse::linalg::amd;
 use rayon::prelude::*;
 
-use crate::assembly::Csc;
 use crate::dof::{Dof, DofKind, DofMap};
 use crate::error::FemError;
 use crate::model::Model;
+use crate::sparse::Csc;
 
 /// The fill-reducing ordering used by [`crate::CholeskySolver`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

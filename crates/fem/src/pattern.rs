@@ -15,11 +15,11 @@ use contact2d_element::{GaussRule, element_stiffness};
 use faer::sparse::SymbolicSparseColMat;
 use rayon::prelude::*;
 
-use crate::assembly::Csc;
 use crate::dof::{Dof, DofKind, DofMap};
 use crate::error::FemError;
 use crate::model::Model;
 use crate::ordering::NodeGraph;
+use crate::sparse::Csc;
 
 /// Free index of global DOF `g`, if it is free.
 fn free_index(dofs: &DofMap, g: usize) -> Option<usize> {
