@@ -62,7 +62,7 @@ pub enum MeshError {
     /// longer run the way they did (see [`crate::orientation`]). The mesh is left unchanged.
     #[error(
         "moving node {node} from ({}, {}) to ({}, {}) would invert cell {cell}: the move is too large for \
-         the cells around the node (refine the mesh there, or pair node to segment instead of moving nodes)",
+         the cells around the node (refine the mesh there)",
         from[0], from[1], to[0], to[1]
     )]
     MorphInvertsElement {
