@@ -19,7 +19,7 @@
 //
 // Grading: quadrangles everywhere (Frontal-Delaunay for quads + Blossom full-quad recombination); the size
 // field is h_contact = a / (8 * 2^(level - 1)) within 1.25 a of the contact point (a = 6.21 mm,
-// the Hertz half-width under 35 kN/mm... see README), growing linearly to h_far at 60 mm.
+// the Hertz half-width of the benchmark, see README.md), growing linearly to h_far at 60 mm.
 //
 // Run:  gmsh cylinder_on_block.geo -2 -order 2 -format msh41 -setnumber level 2 -o cylinder_on_block_L2.msh
 

@@ -42,13 +42,13 @@ fn clockwise_twin(mesh: &Mesh) -> Mesh {
 fn distorted(kind: CellKind) -> Mesh {
     let grid = MappedGrid { kind, nx: 4, ny: 3, region: "domain" };
     let name = |side: Side, _| {
-        Some(match side {
+        let name = match side {
             Side::Bottom => "bottom",
             Side::Right => "right",
             Side::Top => "top",
             Side::Left => "left",
-        })
-        .map(str::to_string)
+        };
+        Some(name.to_string())
     };
     mapped_grid(&grid, |u, v| [2.0 * u + 0.3 * u * v, v + 0.15 * (std::f64::consts::PI * u).sin()], name)
 }
