@@ -2,7 +2,9 @@
 //!
 //! Quality of a 2D cell is `min det J / max det J` over its nodes and stiffness Gauss points
 //! (1 for an affine cell, ≤ 0 for an inverted one); `min_det_j` is the smallest determinant of
-//! the whole mesh, which is negative if any cell is inverted.
+//! the whole mesh, which is negative if any cell is inverted. Both are measured as a model sees
+//! the cells: clockwise cells (a Gmsh surface from a clockwise curve loop) are counted in
+//! `clockwise_cells` and measured renumbered counter-clockwise, as `Model::add_body` renumbers them.
 
 use std::collections::BTreeMap;
 
@@ -37,6 +39,8 @@ pub struct MeshSummary {
     pub min_det_j: Option<f64>,
     /// Worst cell quality `min det J / max det J` (`None` without 2D cells).
     pub worst_quality: Option<f64>,
+    /// Cells whose nodes run clockwise (renumbered when a model is built; not an error).
+    pub clockwise_cells: usize,
 }
 
 /// Summarises `mesh`.
@@ -54,8 +58,10 @@ pub fn summarize_mesh(mesh: &Mesh) -> MeshSummary {
             elements: mesh.group_cell_count(&g.name).unwrap_or(0),
         })
         .collect();
+    let mut oriented = mesh.clone();
+    let clockwise_cells = oriented.orient_cells_counter_clockwise();
     let (mut min_det_j, mut worst_quality) = (None::<f64>, None::<f64>);
-    for [lo, hi] in jacobian_extremes(mesh) {
+    for [lo, hi] in jacobian_extremes(&oriented) {
         min_det_j = Some(min_det_j.map_or(lo, |m| m.min(lo)));
         let q = if hi > 0.0 { lo / hi } else { lo.min(0.0) };
         worst_quality = Some(worst_quality.map_or(q, |w| w.min(q)));
@@ -67,6 +73,7 @@ pub fn summarize_mesh(mesh: &Mesh) -> MeshSummary {
         bbox: mesh.bounding_box().unwrap_or([[0.0; 2]; 2]),
         min_det_j,
         worst_quality,
+        clockwise_cells,
     }
 }
 
@@ -100,6 +107,13 @@ impl std::fmt::Display for MeshSummary {
         }
         let [[x0, y0], [x1, y1]] = self.bbox;
         writeln!(f, "bounding box: [{x0}, {x1}] x [{y0}, {y1}]")?;
+        if self.clockwise_cells > 0 {
+            writeln!(
+                f,
+                "clockwise cells: {} (renumbered counter-clockwise when a model is built)",
+                self.clockwise_cells
+            )?;
+        }
         match (self.min_det_j, self.worst_quality) {
             (Some(d), Some(q)) => write!(f, "min det J: {d:.6e}\nworst quality (min/max det J): {q:.4}"),
             _ => write!(f, "no 2D cells"),
@@ -128,8 +142,22 @@ mod tests {
     #[test]
     fn inverted_cell_shows_a_negative_det_j() {
         let mut mesh = rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 1, 1);
-        mesh.blocks[0].nodes.reverse();
+        // Corner (1, 1) dragged across the diagonal: a reflex corner, det J changes sign.
+        let corner = mesh.points.iter().position(|p| *p == [1.0, 1.0]).unwrap();
+        mesh.points[corner] = [0.2, 0.2];
         let s = summarize_mesh(&mesh);
         assert!(s.min_det_j.unwrap() < 0.0 && s.worst_quality.unwrap() < 0.0);
+        assert_eq!(s.clockwise_cells, 0);
+    }
+
+    #[test]
+    fn clockwise_cells_are_counted_and_measured_as_the_model_sees_them() {
+        let mesh = rectangle(CellKind::Quad4, [0.0, 2.0], [0.0, 1.0], 4, 2);
+        let mut twin = mesh.clone();
+        twin.blocks[0].nodes.reverse(); // every cell reversed (and the cell order too)
+        let (s, t) = (summarize_mesh(&mesh), summarize_mesh(&twin));
+        assert_eq!((s.clockwise_cells, t.clockwise_cells), (0, 8));
+        assert_eq!(t.min_det_j, s.min_det_j);
+        assert!(t.to_string().contains("clockwise cells: 8"));
     }
 }

@@ -11,8 +11,12 @@ pub enum FemError {
     /// A mesh query failed (unknown physical group, bad contour, ...).
     #[error(transparent)]
     Mesh(#[from] MeshError),
-    /// An element of a body is inverted or degenerate.
-    #[error("body \"{body}\": element {cell} is inverted or degenerate (det J = {det_j:.3e})")]
+    /// An element of a body is inverted (det J changes sign inside it) or degenerate. Cells whose
+    /// nodes merely run clockwise are renumbered by [`crate::Model::add_body`], never reported.
+    #[error(
+        "body \"{body}\": element {cell} is inverted or degenerate (det J = {det_j:.3e} changes sign or vanishes \
+         inside it; a node is on the wrong side of the element)"
+    )]
     InvertedElement {
         /// Body name.
         body: String,

@@ -125,9 +125,16 @@ impl Model {
     /// Adds the 2D physical group `region` as a body of `material` and `thickness`, checking every
     /// cell's Jacobian at its nodes and stiffness Gauss points.
     ///
+    /// Cells drawn clockwise (a Gmsh surface from a clockwise curve loop: det J < 0 throughout
+    /// the cell) are first renumbered counter-clockwise in the model's mesh with
+    /// [`Mesh::orient_cells_counter_clockwise`], which gives the same element as the
+    /// counter-clockwise drawing. This is done here, where the cells become elements, so that
+    /// every mesh source gets it (a `.msh` file of any format, a generated or hand-built mesh, a
+    /// morphed one), while the reader stays a faithful parser (`parse(encode(mesh)) == mesh`).
+    ///
     /// # Errors
     /// Unknown or non-2D group, unsupported cell kinds, a non-positive thickness, or an
-    /// [`FemError::InvertedElement`] naming the first bad cell.
+    /// [`FemError::InvertedElement`] naming the first truly inverted or degenerate cell.
     pub fn add_body(&mut self, region: &str, material: Material, thickness: f64) -> Result<BodyId, FemError> {
         if !(thickness.is_finite() && thickness > 0.0) {
             return Err(FemError::InvalidInput(format!(
@@ -141,6 +148,7 @@ impl Model {
                 reason: format!("dimension {} is not 2", group.dim),
             });
         }
+        self.mesh.orient_cells_counter_clockwise();
         let mut body = Body {
             name: region.to_string(),
             material,

@@ -89,8 +89,10 @@ fn conflicting_dirichlet_and_bad_groups_are_typed_errors() {
 #[test]
 fn inverted_element_is_named() {
     let mut mesh = rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 2, 2);
-    // Reverse the node order of the first cell: clockwise, det J < 0.
-    mesh.blocks[0].nodes[..4].reverse();
+    // Drag the first cell's corner at (0.5, 0.5) across its diagonal: det J changes sign inside
+    // the cell. (A cell merely numbered clockwise is renumbered, see tests/orientation.rs.)
+    let centre = mesh.points.iter().position(|p| *p == [0.5, 0.5]).unwrap();
+    mesh.points[centre] = [0.1, 0.1];
     let mut model = Model::new(mesh);
     match model.add_body("domain", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0) {
         Err(FemError::InvertedElement { cell: 1, .. }) => {}

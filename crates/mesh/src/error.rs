@@ -58,6 +58,24 @@ pub enum MeshError {
         /// What is wrong.
         reason: String,
     },
+    /// Moving nodes ([`crate::morph::move_nodes`]) would invert a cell: its nodes would no
+    /// longer run the way they did (see [`crate::orientation`]). The mesh is left unchanged.
+    #[error(
+        "moving node {node} from ({}, {}) to ({}, {}) would invert cell {cell}: the move is too large for \
+         the cells around the node (refine the mesh there)",
+        from[0], from[1], to[0], to[1]
+    )]
+    MorphInvertsElement {
+        /// Element tag of the cell that would be inverted.
+        cell: u64,
+        /// Node tag of the moved node responsible (a node of the cell if one was moved, else the
+        /// nearest moved node).
+        node: u64,
+        /// Where that node was.
+        from: [f64; 2],
+        /// Where it was asked to go.
+        to: [f64; 2],
+    },
     /// A geometric query failed (contour not a simple chain, ...).
     #[error("{0}")]
     Geometry(String),

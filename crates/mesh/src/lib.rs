@@ -6,8 +6,10 @@ pub mod generate;
 pub mod mesh;
 pub mod morph;
 pub mod msh;
+pub mod orientation;
 
 pub use contour::{Contour, ContourEdge};
 pub use error::{Location, MeshError};
 pub use mesh::{CellBlock, CellKind, Mesh, NodeId, PhysicalGroup};
 pub use msh::{MshFormat, MshReport, encode_msh, parse_msh, parse_msh_with_report, read_msh, write_msh};
+pub use orientation::{Orientation, cell_orientation, reversing_permutation, signed_area};

@@ -9,18 +9,24 @@
 //!    cell with i (discrete Laplace equation, 200 sweeps or until the update is < 1e-14 |d|max)
 //! ```
 //!
-//! The move is small compared with the cells (a fraction of an edge), so the smoothed field keeps
-//! the cells valid; callers check Jacobians when they build a model on the result.
+//! The move is meant to be small compared with the cells (a fraction of an edge), so that the
+//! smoothed field keeps the cells valid. That is checked: every 2D cell with a node that moved
+//! must keep its orientation (counter-clockwise stays counter-clockwise, see
+//! [`crate::orientation`]); otherwise the move is refused with [`MeshError::MorphInvertsElement`]
+//! naming the cell and the moved node, and the mesh is left unchanged. (A cell that was already
+//! tangled is not judged here; building a model on the mesh reports it.)
 
 use std::collections::{HashMap, HashSet};
 
 use crate::error::MeshError;
 use crate::mesh::{Mesh, NodeId};
+use crate::orientation::{Orientation, cell_orientation};
 
 /// Moves `targets` (node, new position) and relaxes the interior nodes within `layers` cells.
 ///
 /// # Errors
-/// [`MeshError::Geometry`] for an unknown node, a non-finite position, or a node given twice.
+/// [`MeshError::Geometry`] for an unknown node, a non-finite position, or a node given twice;
+/// [`MeshError::MorphInvertsElement`] if the move would invert a cell (the mesh is then unchanged).
 pub fn move_nodes(mesh: &mut Mesh, targets: &[(NodeId, [f64; 2])], layers: usize) -> Result<(), MeshError> {
     let mut disp: HashMap<usize, [f64; 2]> = HashMap::new();
     for (node, p) in targets {
@@ -63,11 +69,56 @@ pub fn move_nodes(mesh: &mut Mesh, targets: &[(NodeId, [f64; 2])], layers: usize
             break;
         }
     }
-    for (n, d) in field {
-        mesh.points[n][0] += d[0];
-        mesh.points[n][1] += d[1];
+    let mut moved_points = mesh.points.clone();
+    for (&n, d) in &field {
+        moved_points[n][0] += d[0];
+        moved_points[n][1] += d[1];
+    }
+    check_orientations(mesh, &moved_points, targets)?;
+    mesh.points = moved_points;
+    Ok(())
+}
+
+/// Refuses a move that changes the orientation of a cell with a moved node (see the module doc).
+fn check_orientations(mesh: &Mesh, moved: &[[f64; 2]], targets: &[(NodeId, [f64; 2])]) -> Result<(), MeshError> {
+    let changed = |n: NodeId| mesh.points[n.0] != moved[n.0];
+    for block in mesh.blocks.iter().filter(|b| b.kind.dim() == 2) {
+        for (cell, &tag) in block.cells().zip(&block.element_tags) {
+            if !cell.iter().any(|&n| changed(n)) {
+                continue;
+            }
+            let before: Vec<[f64; 2]> = cell.iter().map(|n| mesh.points[n.0]).collect();
+            let after: Vec<[f64; 2]> = cell.iter().map(|n| moved[n.0]).collect();
+            let was = cell_orientation(block.kind, &before);
+            if was == Some(Orientation::Tangled) || cell_orientation(block.kind, &after) == was {
+                continue;
+            }
+            let (node, to) = culprit(mesh, cell, &before, targets);
+            return Err(MeshError::MorphInvertsElement {
+                cell: tag,
+                node: mesh.node_tags.get(node.0).copied().unwrap_or(node.0 as u64),
+                from: mesh.points[node.0],
+                to,
+            });
+        }
     }
     Ok(())
+}
+
+/// The moved node to blame for a cell: among the targets in the cell the one moved farthest, else
+/// the target nearest the cell's first node.
+fn culprit(mesh: &Mesh, cell: &[NodeId], coords: &[[f64; 2]], targets: &[(NodeId, [f64; 2])]) -> (NodeId, [f64; 2]) {
+    let dist = |a: [f64; 2], b: [f64; 2]| (a[0] - b[0]).hypot(a[1] - b[1]);
+    let in_cell = targets
+        .iter()
+        .filter(|(n, _)| cell.contains(n))
+        .max_by(|a, b| dist(mesh.points[a.0.0], a.1).total_cmp(&dist(mesh.points[b.0.0], b.1)));
+    let nearest = || {
+        targets
+            .iter()
+            .min_by(|a, b| dist(mesh.points[a.0.0], coords[0]).total_cmp(&dist(mesh.points[b.0.0], coords[0])))
+    };
+    in_cell.or_else(nearest).copied().unwrap_or((cell[0], coords[0]))
 }
 
 /// Nodes sharing a 2D cell with each node.
@@ -116,7 +167,7 @@ fn nodes_within(
 }
 
 #[cfg(test)]
-#[allow(clippy::unwrap_used)]
+#[allow(clippy::unwrap_used, clippy::panic)]
 mod tests {
     use super::*;
     use crate::generate::rectangle;
@@ -143,5 +194,26 @@ mod tests {
         assert!(dx > 0.0 && dx < 0.1, "{dx}");
         assert!(move_nodes(&mut mesh, &[(NodeId(0), [f64::NAN, 0.0])], 1).is_err());
         assert!(move_nodes(&mut mesh, &[(NodeId(0), [0.0, 0.0]), (NodeId(0), [0.0, 0.0])], 1).is_err());
+    }
+
+    #[test]
+    fn a_move_that_inverts_a_cell_is_refused_and_names_the_node() {
+        for kind in [CellKind::Quad4, CellKind::Quad9, CellKind::Tri6] {
+            let mut mesh = rectangle(kind, [0.0, 4.0], [0.0, 4.0], 4, 4);
+            let original = mesh.clone();
+            // Slide the bottom node at x = 2 along its edge past its neighbour at x = 3: the
+            // cells between them fold over.
+            let node = (0..mesh.points.len()).find(|&i| mesh.points[i] == [2.0, 0.0]).unwrap();
+            match move_nodes(&mut mesh, &[(NodeId(node), [3.3, 0.0])], 2) {
+                Err(MeshError::MorphInvertsElement { node: tag, from, to, .. }) => {
+                    assert_eq!(tag, mesh.node_tags[node], "{kind:?}");
+                    assert_eq!((from, to), ([2.0, 0.0], [3.3, 0.0]));
+                }
+                other => panic!("{kind:?}: expected MorphInvertsElement, got {other:?}"),
+            }
+            assert_eq!(mesh, original, "{kind:?}: the mesh must be unchanged");
+            let message = move_nodes(&mut mesh, &[(NodeId(node), [3.3, 0.0])], 2).unwrap_err().to_string();
+            assert!(message.contains("would invert cell"), "{message}");
+        }
     }
 }

@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 use contact2d_mesh::{CellKind, Mesh, MshFormat, parse_msh_with_report, read_msh};
 
-const GEOMETRIES: [&str; 3] = ["plate_hole", "two_blocks", "strip_q8"];
+const GEOMETRIES: [&str; 4] = ["plate_hole", "two_blocks", "strip_q8", "clockwise_square"];
 const VARIANTS: [(&str, MshFormat); 4] = [
     ("v41_ascii", MshFormat::V41Ascii),
     ("v41_bin", MshFormat::V41Binary),

@@ -17,7 +17,7 @@ fn fixtures() -> Vec<PathBuf> {
         .filter(|p| p.extension().is_some_and(|e| e == "msh"))
         .collect();
     paths.sort();
-    assert_eq!(paths.len(), 12);
+    assert_eq!(paths.len(), 16, "four formats of plate_hole, two_blocks, strip_q8, clockwise_square");
     paths
 }
 

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Regenerate the committed meshes of meshes/generic/ from their .geo sources and check each file.
+#
+#   pip install gmsh                 # gmsh 4.15.2 was used for the committed files
+#   meshes/generic/generate.sh       # writes two_blocks.msh, cylinder_on_block_L{1,2,3}.msh,
+#                                    # cylinder_on_block_big_L2.msh, pin_lug.msh
+#   meshes/generic/generate.sh --no-check
+#
+# Environment: GMSH (default: gmsh), PYTHON (default: python3, must import gmsh for the check).
+# The check (check_mesh.py) fails unless every body cell is a Quad9 and every curve cell a Line3,
+# every physical group the scenes use exists, every cell is valid (minSJ, minDetJac > 0) and
+# counter-clockwise, and the bodies share no node.  Nothing at test time needs gmsh.
+set -euo pipefail
+
+here=$(cd "$(dirname "$0")" && pwd)
+GMSH=${GMSH:-gmsh}
+PYTHON=${PYTHON:-python3}
+CHECK=1
+[[ ${1:-} == --no-check ]] && CHECK=0
+status=0
+
+mesh() {  # geo out bodies curves [count ...] -- [gmsh -setnumber args ...]
+  local geo=$1 out=$2 bodies=$3 curves=$4
+  shift 4
+  local counts=() args=()
+  while [[ $# -gt 0 && $1 != -- ]]; do counts+=("$1"); shift; done
+  [[ ${1:-} == -- ]] && shift
+  args=("$@")
+  "$GMSH" "$here/$geo" -2 -order 2 -format msh41 -v 1 "${args[@]}" -o "$here/$out"
+  if [[ $CHECK == 1 ]]; then
+    "$PYTHON" "$here/check_mesh.py" "$here/$out" "$bodies" "$curves" "${counts[@]}" || status=1
+  fi
+}
+
+mesh two_blocks.geo two_blocks.msh lower,upper lower_bottom,lower_top,upper_bottom,upper_top
+cob_curves=cylinder_arc,cylinder_top,block_top,block_bottom,axis,block_side
+for level in 1 2 3; do
+  mesh cylinder_on_block.geo "cylinder_on_block_L$level.msh" cylinder,block "$cob_curves" \
+    cylinder_arc:6.21 block_top:6.21 -- -setnumber level "$level"
+done
+mesh cylinder_on_block.geo cylinder_on_block_big_L2.msh cylinder,block "$cob_curves" \
+  cylinder_arc:6.21 block_top:6.21 -- -setnumber level 2 -setnumber scale 2
+mesh pin_lug.geo pin_lug.msh lug,pin hole,pin_contact,pin_back,symmetry,lug_fixed,lug_end,lug_top
+exit $status
