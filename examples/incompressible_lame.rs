@@ -24,7 +24,10 @@ const LAME_NUS: [f64; 4] = [0.3, 0.45, 0.49, 0.4999];
 const FLAGSHIP_NUS: [f64; 6] = [0.3, 0.45, 0.49, 0.499, 0.4999, 0.4999999];
 
 fn lame_table(out: &mut String) -> Result<(), Box<dyn std::error::Error>> {
-    writeln!(out, "| element | formulation | ν | nr | L2(u) | rate | L2(σ) | rate | σ_rr(a) | rate | σ_θθ(a) | rate |")?;
+    writeln!(
+        out,
+        "| element | formulation | ν | nr | L2(u) | rate | L2(σ) | rate | σ_rr(a) | rate | σ_θθ(a) | rate |"
+    )?;
     writeln!(out, "|---|---|---|---|---|---|---|---|---|---|---|---|")?;
     for kind in [CellKind::Quad4, CellKind::Quad8, CellKind::Quad9, CellKind::Tri6] {
         for formulation in [Formulation::Standard, Formulation::BBar] {

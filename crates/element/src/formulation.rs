@@ -187,7 +187,8 @@ impl DilatationProjection {
             .map(|c| (c[0] - centre[0]).hypot(c[1] - centre[1]))
             .fold(0.0, f64::max)
             .max(f64::MIN_POSITIVE);
-        let mut proj = DilatationProjection { centre, scale, g: DMatrix::zeros(m_dim, 2 * coords.len()), p: DMatrix::zeros(0, 0) };
+        let mut proj =
+            DilatationProjection { centre, scale, g: DMatrix::zeros(m_dim, 2 * coords.len()), p: DMatrix::zeros(0, 0) };
         let mut m = DMatrix::zeros(m_dim, m_dim);
         for (xi, w) in rule.points.iter().zip(&rule.weights) {
             let pt = map_point(element, coords, *xi)?;

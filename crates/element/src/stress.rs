@@ -94,7 +94,12 @@ pub fn strain_at_with(
 }
 
 /// `θ̄` at reference point `xi` (the B-bar projection with the stiffness rule).
-fn projected_dilatation(element: ElementType, coords: &[[f64; 2]], u: &[f64], xi: [f64; 2]) -> Result<f64, ElementError> {
+fn projected_dilatation(
+    element: ElementType,
+    coords: &[[f64; 2]],
+    u: &[f64],
+    xi: [f64; 2],
+) -> Result<f64, ElementError> {
     let projection = DilatationProjection::new(element, coords, &GaussRule::stiffness_rule(element))?;
     let x = map_point(element, coords, xi)?.x;
     Ok(projection.dilatation(x, u))

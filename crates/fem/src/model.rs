@@ -330,10 +330,7 @@ mod tests {
 
         let mut tri3 = Model::new(rectangle(CellKind::Tri3, [0.0, 1.0], [0.0, 1.0], 2, 2));
         let e = tri3.add_body_with("domain", m, 1.0, Formulation::BBar);
-        assert!(matches!(
-            e,
-            Err(FemError::Element { source: ElementError::UnsupportedFormulation { .. }, .. })
-        ));
+        assert!(matches!(e, Err(FemError::Element { source: ElementError::UnsupportedFormulation { .. }, .. })));
         let id = tri3.add_body("domain", m, 1.0).unwrap();
         assert!(tri3.set_formulation(id, Formulation::BBar).is_err());
         assert_eq!(tri3.bodies[id.0].formulation, Formulation::Standard);
