@@ -220,7 +220,7 @@ pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<Ru
         let placed = solve_placed_history(&scene.plate_insert(), &loadings, ZoneEndSearch::default(), &mut |s| {
             report_step(s.load)
         })?;
-        let notes = placed
+        let notes: Vec<String> = placed
             .iter()
             .enumerate()
             .filter_map(|(i, (step, _))| step.placement_failure.as_ref().map(|why| (i, why)))
@@ -233,7 +233,7 @@ pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<Ru
             .collect();
         let steps = placed_steps(placed, if scaled { p.load } else { 1.0 })?;
         let mut report = summarise(scene, &steps, start)?;
-        report.notes = notes;
+        report.notes.extend(notes);
         return Ok(RunOutcome { report, steps });
     }
     let case = Arc::new(scene.plate_insert().build()?);
@@ -380,8 +380,15 @@ fn summarise(scene: &Scene, solved: &[SolvedStep], start: Instant) -> Result<Run
         time_s: start.elapsed().as_secs_f64(),
         solve_time_s: solved.iter().map(|s| s.solution.time.as_secs_f64()).sum(),
         violations: violations(solved),
-        notes: vec![],
+        notes: locking_notes(scene),
     })
+}
+
+/// The volumetric-locking warning of [`contact2d_element::locking_warning`] for the scene's
+/// plane condition, ν and formulation (both bodies share them), as a run note.
+fn locking_notes(scene: &Scene) -> Vec<String> {
+    let p = scene.plate_insert();
+    contact2d_element::locking_warning(p.plane, p.poissons_ratio, p.formulation).into_iter().collect()
 }
 
 /// Every violated inequality of every step, with the pair's η on the hole edge.

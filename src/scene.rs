@@ -11,6 +11,7 @@
 //! rigid_insert = false          # true: the insert is a rigid, fixed contour
 //! poissons_ratio = 0.3
 //! plane_condition = "stress"   # or "strain" (both bodies)
+//! formulation = "standard"      # or "bbar": locking-free for ν → 0.5 in plane strain (both bodies)
 //! eps = 0.0                     # geometric clearance of the mesh (insert radius 1 - eps)
 //! clearance = 0.0               # c, the clearance in displacement units
 //! gap = "paper"                 # default "geometric"; "paper" is the stricter u_ρc / u_rc
@@ -37,7 +38,7 @@ use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
-use contact2d_element::PlaneCondition;
+use contact2d_element::{Formulation, PlaneCondition};
 
 use crate::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
 
@@ -138,6 +139,9 @@ pub struct PlateInsertSection {
     /// `stress` (default, the paper's thin plate) or `strain`.
     #[serde(default = "plane_stress")]
     pub plane_condition: PlaneKey,
+    /// `standard` (default) or `bbar` (projected dilatation, locking-free), for both bodies.
+    #[serde(default)]
+    pub formulation: FormulationKey,
     /// ε of the mesh.
     #[serde(default)]
     pub eps: f64,
@@ -214,6 +218,18 @@ pub enum PlaneKey {
     Stress,
     /// Plane strain.
     Strain,
+}
+
+/// Scene spelling of [`Formulation`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+pub enum FormulationKey {
+    /// Standard displacement elements.
+    #[default]
+    #[serde(rename = "standard")]
+    Standard,
+    /// B-bar (the dilatation projected on the element pressure space).
+    #[serde(rename = "bbar")]
+    BBar,
 }
 
 /// Scene spelling of [`GapModel`].
@@ -427,6 +443,10 @@ impl Scene {
             plane: match p.plane_condition {
                 PlaneKey::Stress => PlaneCondition::Stress,
                 PlaneKey::Strain => PlaneCondition::Strain,
+            },
+            formulation: match p.formulation {
+                FormulationKey::Standard => Formulation::Standard,
+                FormulationKey::BBar => Formulation::BBar,
             },
             variant: match p.variant {
                 VariantKey::HoleMaster => PairingVariant::HoleMaster,

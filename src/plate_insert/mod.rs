@@ -11,7 +11,7 @@
 //! Non-dimensional: E1 = 1, lengths by R, the load factor w multiplies the pulled-edge value 1.
 
 use contact2d_contact::{ContactError, ContactProblem, node_to_node_targets, pair_contours};
-use contact2d_element::{Material, PlaneCondition};
+use contact2d_element::{Formulation, Material, PlaneCondition};
 use contact2d_fem::{Component, Model};
 use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, read_msh};
@@ -60,6 +60,9 @@ pub struct PlateInsert {
     pub poissons_ratio: f64,
     /// Plane stress (the paper's thin plate) or plane strain, for both bodies.
     pub plane: PlaneCondition,
+    /// Standard or B-bar elements, for both bodies (B-bar: no volumetric locking as ν → ½ in
+    /// plane strain; see [`contact2d_element::formulation`]).
+    pub formulation: Formulation,
     /// Pairing variant.
     pub variant: PairingVariant,
     /// ε: the mesh's geometric clearance (insert radius 1 − ε, centred at (−ε, 0)).
@@ -126,6 +129,7 @@ impl PlateInsert {
             rigid_insert: false,
             poissons_ratio: 0.3,
             plane: PlaneCondition::Stress,
+            formulation: Formulation::Standard,
             variant: PairingVariant::HoleMaster,
             eps: 0.0,
             clearance: 0.0,
@@ -267,13 +271,13 @@ impl PlateInsert {
         let mut model = Model::new(mesh);
         let plate = Material::new(1.0, self.poissons_ratio, self.plane).map_err(fem_input)?;
         let insert = Material::new(self.stiffness_ratio, self.poissons_ratio, self.plane).map_err(fem_input)?;
-        model.add_body("plate", plate, 1.0)?;
+        model.add_body_with("plate", plate, 1.0, self.formulation)?;
         for group in ["top", "bottom_plate", "right"] {
             model.fix(group, Component::Y, 0.0)?;
         }
         model.fix("right", Component::X, 1.0)?;
         if !self.rigid_insert {
-            model.add_body("insert", insert, 1.0)?;
+            model.add_body_with("insert", insert, 1.0, self.formulation)?;
             model.fix("insert_inner", Component::X, 0.0)?;
             model.fix("insert_inner", Component::Y, 0.0)?;
             model.fix("insert_symmetry", Component::Y, 0.0)?;

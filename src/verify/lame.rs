@@ -22,14 +22,14 @@
 //! degree 1, parabolas for degree 2) perturbs the domain by `O(h^{k+1})`, which keeps both rates
 //! (Ciarlet & Raviart 1972; Strang & Fix 1973, ch. 4).
 
-use contact2d_element::{Material, PlaneCondition};
+use contact2d_element::{Formulation, GaussRule, Material, PlaneCondition, map_point, stress_at_with};
 use contact2d_fem::{BodyId, Component, EdgeLoad, Model, Solution, StressRecovery, nodal_stresses, solve_linear};
 use contact2d_mesh::CellKind;
 use contact2d_mesh::generate::annulus_sector;
 
 use crate::verify::VerifyError;
 use crate::verify::analytic::{LameCylinder, cartesian_to_polar};
-use crate::verify::norms::{ErrorNorms, convergence_rate, error_norms};
+use crate::verify::norms::{ErrorNorms, convergence_rate, error_norms, error_rule};
 
 /// Geometry, load and material of the study.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,6 +46,8 @@ pub struct LameSetup {
     pub poissons_ratio: f64,
     /// Circumferential cells per radial cell.
     pub cells_around_per_radial: usize,
+    /// Standard or B-bar elements.
+    pub formulation: Formulation,
 }
 
 impl Default for LameSetup {
@@ -57,6 +59,7 @@ impl Default for LameSetup {
             youngs_modulus: 200e3,
             poissons_ratio: 0.3,
             cells_around_per_radial: 2,
+            formulation: Formulation::Standard,
         }
     }
 }
@@ -108,7 +111,8 @@ pub fn lame_model(
         setup.cells_around_per_radial * n_radial,
     );
     let mut model = Model::new(mesh);
-    let body = model.add_body("domain", Material::new(setup.youngs_modulus, setup.poissons_ratio, plane)?, 1.0)?;
+    let material = Material::new(setup.youngs_modulus, setup.poissons_ratio, plane)?;
+    let body = model.add_body_with("domain", material, 1.0, setup.formulation)?;
     model.fix("start", Component::Y, 0.0)?;
     model.fix("end", Component::X, 0.0)?;
     model.add_edge_load(EdgeLoad::Pressure { group: "inner".into(), pressure: setup.pressure })?;
@@ -130,6 +134,10 @@ pub struct LameLevel {
     pub norms: ErrorNorms,
     /// `max |σ_rr + p| / p` over the inner-wall nodes (extrapolated nodal stresses).
     pub inner_radial_stress_error: f64,
+    /// `max |σ_θθ − σ_θθ(a)| / σ_θθ(a)` over the inner-wall nodes (extrapolated nodal stresses).
+    pub inner_hoop_stress_error: f64,
+    /// `‖σ_h − σ‖_L2 / ‖σ‖_L2` of the element stresses (the body's formulation) over the domain.
+    pub relative_stress_l2: f64,
 }
 
 /// Solves one mesh and measures it.
@@ -147,13 +155,15 @@ pub fn solve_lame(
     let (system, _, solution) = solve_linear(&model)?;
     let norms = error_norms(&model, body, &solution.displacement, &exact)?;
     let stresses = nodal_stresses(&model, body, &solution.displacement, StressRecovery::Extrapolated)?;
-    let mut wall_error = 0.0f64;
+    let (mut wall_error, mut hoop_error) = (0.0f64, 0.0f64);
+    let hoop_exact = exact.hoop_stress(setup.inner_radius);
     for n in model.mesh.group_nodes("inner").map_err(contact2d_fem::FemError::from)? {
         if let Some(s) = stresses[n.0] {
             let x = model.mesh.points[n.0];
             let r = x[0].hypot(x[1]);
-            let (s_rr, _, _) = cartesian_to_polar(s, x[0] / r, x[1] / r);
+            let (s_rr, s_tt, _) = cartesian_to_polar(s, x[0] / r, x[1] / r);
             wall_error = wall_error.max((s_rr + setup.pressure).abs() / setup.pressure.abs());
+            hoop_error = hoop_error.max((s_tt - hoop_exact).abs() / hoop_exact.abs());
         }
     }
     let level = LameLevel {
@@ -163,8 +173,32 @@ pub fn solve_lame(
         dofs: system.dofs.num_free(),
         norms,
         inner_radial_stress_error: wall_error,
+        inner_hoop_stress_error: hoop_error,
+        relative_stress_l2: stress_l2_error(&model, body, &solution.displacement, &exact)?,
     };
     Ok((level, model, solution))
+}
+
+/// `‖σ_h − σ‖_L2 / ‖σ‖_L2` (Voigt components, unit weights) with the stresses of the body's
+/// formulation, integrated with the error rule of [`crate::verify::norms::error_rule`].
+fn stress_l2_error(model: &Model, body: BodyId, u: &[f64], exact: &LameCylinder) -> Result<f64, VerifyError> {
+    let b = &model.bodies[body.0];
+    let (mut err, mut norm) = (0.0, 0.0);
+    for i in 0..b.num_cells() {
+        let element = b.elements[i];
+        let coords = b.cell_coords(&model.mesh, i);
+        let ue: Vec<f64> = b.cell_dofs(i).map(|d| u[d.0]).collect();
+        let rule: GaussRule = error_rule(element)?;
+        for (xi, w) in rule.points.iter().zip(&rule.weights) {
+            let p = map_point(element, &coords, *xi)?;
+            let sh = stress_at_with(element, &coords, &b.material, &ue, *xi, b.formulation)?;
+            let se = exact.stress(p.x);
+            let f = w * p.det_j;
+            err += f * (0..3).map(|k| (sh[k] - se[k]).powi(2)).sum::<f64>();
+            norm += f * se.iter().map(|v| v * v).sum::<f64>();
+        }
+    }
+    Ok((err / norm).sqrt())
 }
 
 /// A sequence of meshes of one element kind and plane condition.
@@ -189,9 +223,20 @@ impl LameStudy {
         self.rates(|l| l.norms.relative_energy())
     }
 
+    /// Observed rates of the stress L2 error between consecutive meshes.
+    pub fn stress_l2_rates(&self) -> Vec<f64> {
+        self.rates(|l| l.relative_stress_l2)
+    }
+
     /// Observed rates of the inner-wall radial stress error between consecutive meshes.
     pub fn wall_stress_rates(&self) -> Vec<f64> {
         self.rates(|l| l.inner_radial_stress_error)
+    }
+
+    /// Observed rates of any error measure between consecutive meshes:
+    /// `q = ln(e1/e2) / ln(h1/h2)`.
+    pub fn rates_of(&self, error: impl Fn(&LameLevel) -> f64) -> Vec<f64> {
+        self.rates(error)
     }
 
     fn rates(&self, error: impl Fn(&LameLevel) -> f64) -> Vec<f64> {

@@ -42,4 +42,12 @@ pub enum ElementError {
         /// Which rule was asked for.
         what: String,
     },
+    /// A formulation the element kind does not support (B-bar on Tri3).
+    #[error("formulation {formulation} is not available for {element}")]
+    UnsupportedFormulation {
+        /// Element kind.
+        element: String,
+        /// The formulation asked for.
+        formulation: String,
+    },
 }

@@ -2,7 +2,8 @@
 //!
 //! Shape functions (T3, T6, Q4, Q8, Q9 and 2-/3-node edges, in Gmsh's node order), Gauss rules,
 //! the isoparametric map, plane stress / plane strain isotropic elasticity, element stiffness,
-//! consistent loads, and strains and stresses at any reference point. This crate knows nothing of
+//! consistent loads, and strains and stresses at any reference point, in the standard or the
+//! locking-free B-bar [`Formulation`]. This crate knows nothing of
 //! meshes: it works on one element's nodal coordinates.
 //!
 //! # Examples
@@ -17,6 +18,7 @@
 //! ```
 
 pub mod error;
+pub mod formulation;
 pub mod isoparametric;
 pub mod loads;
 pub mod material;
@@ -26,10 +28,14 @@ pub mod stiffness;
 pub mod stress;
 
 pub use error::ElementError;
+pub use formulation::{
+    DilatationProjection, Formulation, LOCKING_POISSON_THRESHOLD, deviatoric_split, lame_parameters, locking_warning,
+    pressure_space_dim,
+};
 pub use isoparametric::{EdgePoint, MappedPoint, jacobian_determinant, map_edge_point, map_point};
 pub use loads::{body_force_load, edge_traction_load};
 pub use material::{Material, PlaneCondition};
 pub use quadrature::{GaussRule, gauss_legendre};
 pub use shape::{EdgeType, ElementType, MAX_NODES, ShapeEval};
-pub use stiffness::{element_area, element_stiffness};
-pub use stress::{gauss_to_node_extrapolation, strain_at, stress_at};
+pub use stiffness::{element_area, element_stiffness, element_stiffness_with};
+pub use stress::{gauss_to_node_extrapolation, strain_at, strain_at_with, stress_at, stress_at_with};

@@ -10,9 +10,10 @@
 //!
 //! `t` is the thickness (1 in the paper).
 
-use nalgebra::DMatrix;
+use nalgebra::{DMatrix, Matrix3};
 
 use crate::error::ElementError;
+use crate::formulation::{DilatationProjection, Formulation, deviatoric_split};
 use crate::isoparametric::map_point;
 use crate::material::Material;
 use crate::quadrature::GaussRule;
@@ -39,8 +40,67 @@ pub fn element_stiffness(
     thickness: f64,
     rule: &GaussRule,
 ) -> Result<DMatrix<f64>, ElementError> {
+    element_stiffness_with(element, coords, material, thickness, rule, Formulation::Standard)
+}
+
+/// The element stiffness matrix in the given [`Formulation`]:
+///
+/// ```text
+/// Standard:  K_e = Σ_g B_gᵀ D B_g t det J_g w_g
+/// BBar:      K_e = Σ_g B_gᵀ D_d B_g t det J_g w_g + κ t Gᵀ M⁻¹ G     (= ∫ B̄ᵀ D B̄ t dΩ)
+/// ```
+///
+/// with `D_d`, `κ`, `G`, `M` as in [`crate::formulation`]; `rule` integrates both parts.
+///
+/// # Errors
+/// As [`element_stiffness`], and [`ElementError::UnsupportedFormulation`] for B-bar on Tri3.
+///
+/// # Examples
+/// ```
+/// use contact2d_element::{element_stiffness_with, ElementType, Formulation, GaussRule, Material, PlaneCondition};
+/// let rubber = Material::new(1.0, 0.4999, PlaneCondition::Strain).unwrap();
+/// let q9 = ElementType::Quad9;
+/// let k = element_stiffness_with(q9, q9.reference_nodes(), &rubber, 1.0, &GaussRule::stiffness_rule(q9), Formulation::BBar).unwrap();
+/// assert!((k.clone() - k.transpose()).abs().max() < 1e-9 * k.abs().max());
+/// ```
+pub fn element_stiffness_with(
+    element: ElementType,
+    coords: &[[f64; 2]],
+    material: &Material,
+    thickness: f64,
+    rule: &GaussRule,
+    formulation: Formulation,
+) -> Result<DMatrix<f64>, ElementError> {
+    match formulation {
+        Formulation::Standard => integrate_btdb(element, coords, &material.elasticity_matrix(), thickness, rule),
+        Formulation::BBar => {
+            let projection = DilatationProjection::new(element, coords, rule)?;
+            let (d_dev, kappa) = deviatoric_split(material);
+            let mut k = integrate_btdb(element, coords, &d_dev, thickness, rule)?;
+            k += projection.volumetric_stiffness(kappa, thickness);
+            // Gᵀ M⁻¹ G is symmetric up to round-off; make K_e exactly symmetric.
+            let n = k.nrows();
+            for a in 0..n {
+                for b in 0..a {
+                    let v = 0.5 * (k[(a, b)] + k[(b, a)]);
+                    k[(a, b)] = v;
+                    k[(b, a)] = v;
+                }
+            }
+            Ok(k)
+        }
+    }
+}
+
+/// `Σ_g B_gᵀ d B_g t det J_g w_g` for any symmetric 3×3 `d`.
+fn integrate_btdb(
+    element: ElementType,
+    coords: &[[f64; 2]],
+    d: &Matrix3<f64>,
+    thickness: f64,
+    rule: &GaussRule,
+) -> Result<DMatrix<f64>, ElementError> {
     let n = element.num_nodes();
-    let d = material.elasticity_matrix();
     let mut k = DMatrix::zeros(2 * n, 2 * n);
     for (xi, w) in rule.points.iter().zip(&rule.weights) {
         let p = map_point(element, coords, *xi)?;
@@ -138,6 +198,83 @@ mod tests {
             let u = DMatrix::from_iterator(2 * coords.len(), 1, coords.iter().flat_map(|x| [0.3 - 0.1 * x[1], -0.2 + 0.1 * x[0]]));
             prop_assert!((&k * u).abs().max() < 1e-12 * k.abs().max());
         }
+    }
+
+    proptest! {
+        /// B-bar: symmetric, positive semi-definite, no force under a rigid motion, and exactly
+        /// three zero modes for Quad4, Quad8, Quad9 (Tri6: five, module docs of `formulation`),
+        /// also at ν = 0.4999 in plane strain.
+        #[test]
+        fn bbar_stiffness_has_the_rigid_modes_only(
+            ti in 1usize..5,
+            nu in prop_oneof![Just(0.3f64), Just(0.4999f64)],
+            jitter in proptest::collection::vec(-1.0..1.0f64, 18),
+        ) {
+            let t = ElementType::ALL[ti];
+            prop_assume!(t != ElementType::Tri3);
+            let coords = distorted(t, &jitter);
+            let m = Material::new(1.0, nu, PlaneCondition::Strain).unwrap();
+            let k = element_stiffness_with(t, &coords, &m, 1.0, &GaussRule::stiffness_rule(t), Formulation::BBar).unwrap();
+            prop_assert!((k.clone() - k.transpose()).abs().max() == 0.0);
+            let u = DMatrix::from_iterator(2 * coords.len(), 1, coords.iter().flat_map(|x| [0.3 - 0.1 * x[1], -0.2 + 0.1 * x[0]]));
+            prop_assert!((&k * u).abs().max() < 1e-12 * k.abs().max());
+            // Zero modes against the deviatoric scale μ (the volumetric eigenvalues are ~κ ≫ μ).
+            let ev = symmetric_eigenvalues(&k);
+            let mu = 1.0 / (2.0 * (1.0 + nu));
+            let zero_modes = if t == ElementType::Tri6 { 5 } else { 3 };
+            prop_assert!(ev[..zero_modes].iter().all(|e| e.abs() < 1e-8 * mu), "{:?}", ev);
+            prop_assert!(ev[zero_modes] > 1e-4 * mu, "spurious zero mode: {:?}", ev);
+        }
+    }
+
+    /// `∫ Bᵀ D_d B + κ Gᵀ M⁻¹ G` (the implementation) equals `∫ B̄ᵀ D B̄` formed point by point
+    /// from the definition B̄ = B + ½ m (b̄ − b)ᵀ: a second algorithm for the same matrix.
+    #[test]
+    fn bbar_equals_the_b_bar_product_formed_pointwise() {
+        for t in [ElementType::Quad4, ElementType::Quad8, ElementType::Quad9, ElementType::Tri6] {
+            let coords = distorted(t, &[0.3, -0.7, 0.5, 0.1, -0.2, 0.9, -0.4]);
+            let m = Material::new(2.0, 0.45, PlaneCondition::Strain).unwrap();
+            let rule = GaussRule::stiffness_rule(t);
+            let k = element_stiffness_with(t, &coords, &m, 0.7, &rule, Formulation::BBar).unwrap();
+            let proj = crate::formulation::DilatationProjection::new(t, &coords, &rule).unwrap();
+            let n = t.num_nodes();
+            let mut reference = DMatrix::zeros(2 * n, 2 * n);
+            for (xi, w) in rule.points.iter().zip(&rule.weights) {
+                let p = map_point(t, &coords, *xi).unwrap();
+                let b_bar_row = proj.projected_divergence(p.x);
+                let mut bb = DMatrix::zeros(3, 2 * n);
+                for a in 0..n {
+                    let [gx, gy] = p.dn_dx[a];
+                    bb[(0, 2 * a)] = gx;
+                    bb[(1, 2 * a + 1)] = gy;
+                    bb[(2, 2 * a)] = gy;
+                    bb[(2, 2 * a + 1)] = gx;
+                    for (c, g) in [(2 * a, gx), (2 * a + 1, gy)] {
+                        let shift = 0.5 * (b_bar_row[c] - g);
+                        bb[(0, c)] += shift;
+                        bb[(1, c)] += shift;
+                    }
+                }
+                let d = DMatrix::from_iterator(3, 3, m.elasticity_matrix().iter().copied());
+                reference += bb.transpose() * d * &bb * (w * p.det_j * 0.7);
+            }
+            assert!((&k - &reference).abs().max() < 1e-12 * k.abs().max(), "{t:?}");
+        }
+    }
+
+    /// Tri3 has no B-bar variant; the standard call is the `Standard` formulation.
+    #[test]
+    fn bbar_tri3_is_refused_and_standard_delegates() {
+        let tri = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+        let m = Material::new(1.0, 0.3, PlaneCondition::Strain).unwrap();
+        let rule = GaussRule::triangle(1).unwrap();
+        assert!(matches!(
+            element_stiffness_with(ElementType::Tri3, &tri, &m, 1.0, &rule, Formulation::BBar),
+            Err(ElementError::UnsupportedFormulation { .. })
+        ));
+        let a = element_stiffness(ElementType::Tri3, &tri, &m, 1.0, &rule).unwrap();
+        let b = element_stiffness_with(ElementType::Tri3, &tri, &m, 1.0, &rule, Formulation::Standard).unwrap();
+        assert_eq!(a, b);
     }
 
     #[test]

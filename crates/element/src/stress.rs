@@ -4,6 +4,9 @@
 //! ε(ξ) = Σ_a B_a(ξ) u_a,   σ(ξ) = D ε(ξ)        (Voigt: [ε11, ε22, γ12], [σ11, σ22, σ12])
 //! ```
 //!
+//! With the B-bar [`Formulation`] the strain is `ε̄ = B̄ u` and `σ = D ε̄` ([`stress_at_with`]),
+//! the same treatment as the stiffness.
+//!
 //! Extrapolation: the Gauss-point values are interpolated by the polynomial space that is
 //! unisolvent on the points (constant for 1 point, linear for 3 triangle points, the tensor
 //! Lagrange space of degree n-1 for an n×n rule) and that polynomial is evaluated at the nodes:
@@ -13,6 +16,7 @@
 use nalgebra::DMatrix;
 
 use crate::error::ElementError;
+use crate::formulation::{DilatationProjection, Formulation, deviatoric_split};
 use crate::isoparametric::map_point;
 use crate::material::Material;
 use crate::quadrature::GaussRule;
@@ -57,6 +61,92 @@ pub fn stress_at(
     let e = strain_at(element, coords, u, xi)?;
     let s = material.elasticity_matrix() * nalgebra::Vector3::new(e[0], e[1], e[2]);
     Ok([s[0], s[1], s[2]])
+}
+
+/// The strain of the given [`Formulation`] at reference point `xi`:
+///
+/// ```text
+/// Standard:  ε = B(ξ) u
+/// BBar:      ε̄ = B̄(ξ) u = ε + ½ (θ̄ − θ) [1, 1, 0],   θ = ε11 + ε22,  θ̄ = q(x)ᵀ M⁻¹ G u
+/// ```
+///
+/// The projection `M⁻¹ G` is integrated with [`GaussRule::stiffness_rule`], the rule the
+/// assembly uses, so that `ε̄` is the strain of the assembled stiffness.
+///
+/// # Errors
+/// As [`strain_at`], and [`ElementError::UnsupportedFormulation`] for B-bar on Tri3.
+pub fn strain_at_with(
+    element: ElementType,
+    coords: &[[f64; 2]],
+    u: &[f64],
+    xi: [f64; 2],
+    formulation: Formulation,
+) -> Result<[f64; 3], ElementError> {
+    let e = strain_at(element, coords, u, xi)?;
+    match formulation {
+        Formulation::Standard => Ok(e),
+        Formulation::BBar => {
+            let theta_bar = projected_dilatation(element, coords, u, xi)?;
+            let shift = 0.5 * (theta_bar - e[0] - e[1]);
+            Ok([e[0] + shift, e[1] + shift, e[2]])
+        }
+    }
+}
+
+/// `θ̄` at reference point `xi` (the B-bar projection with the stiffness rule).
+fn projected_dilatation(
+    element: ElementType,
+    coords: &[[f64; 2]],
+    u: &[f64],
+    xi: [f64; 2],
+) -> Result<f64, ElementError> {
+    let projection = DilatationProjection::new(element, coords, &GaussRule::stiffness_rule(element))?;
+    let x = map_point(element, coords, xi)?.x;
+    Ok(projection.dilatation(x, u))
+}
+
+/// The stress of the given [`Formulation`] at reference point `xi`:
+///
+/// ```text
+/// Standard:  σ = D B u
+/// BBar:      σ = D ε̄ = D_d ε + κ θ̄ [1, 1, 0]     (D = D_d + κ m mᵀ, crate::formulation)
+/// ```
+///
+/// The B-bar form is evaluated on the right, so that the large `κ` multiplies only the
+/// projected dilatation `θ̄` (which converges), never the pointwise `θ`.
+///
+/// # Errors
+/// As [`strain_at_with`].
+///
+/// # Examples
+/// ```
+/// use contact2d_element::{stress_at, stress_at_with, ElementType, Formulation, Material, PlaneCondition};
+/// // An affine field: B-bar and standard stresses agree (θ̄ = θ).
+/// let m = Material::new(1.0, 0.4999, PlaneCondition::Strain).unwrap();
+/// let q4 = ElementType::Quad4;
+/// let x = q4.reference_nodes();
+/// let u: Vec<f64> = x.iter().flat_map(|p| [1e-3 * p[0], -0.5e-3 * p[1] + 2e-4 * p[0]]).collect();
+/// let (s, sb) = (stress_at(q4, x, &m, &u, [0.3, 0.1]).unwrap(), stress_at_with(q4, x, &m, &u, [0.3, 0.1], Formulation::BBar).unwrap());
+/// assert!((0..3).all(|k| (s[k] - sb[k]).abs() < 1e-9 * s[0].abs()));
+/// ```
+pub fn stress_at_with(
+    element: ElementType,
+    coords: &[[f64; 2]],
+    material: &Material,
+    u: &[f64],
+    xi: [f64; 2],
+    formulation: Formulation,
+) -> Result<[f64; 3], ElementError> {
+    match formulation {
+        Formulation::Standard => stress_at(element, coords, material, u, xi),
+        Formulation::BBar => {
+            let e = strain_at(element, coords, u, xi)?;
+            let theta_bar = projected_dilatation(element, coords, u, xi)?;
+            let (d_dev, kappa) = deviatoric_split(material);
+            let s = d_dev * nalgebra::Vector3::new(e[0], e[1], e[2]);
+            Ok([s[0] + kappa * theta_bar, s[1] + kappa * theta_bar, s[2]])
+        }
+    }
 }
 
 /// Monomial exponents of the extrapolation space for a rule of `len` points on `element`'s cell.

@@ -13,7 +13,7 @@
 //! the Cholesky factorisation reads that side. `K_fc` and `K_cc` are kept so that the right-hand side and the
 //! reactions can be formed for any prescribed values without assembling again.
 
-use contact2d_element::{EdgeType, GaussRule, edge_traction_load, element_stiffness};
+use contact2d_element::{EdgeType, GaussRule, edge_traction_load, element_stiffness_with};
 use std::collections::HashMap;
 
 use contact2d_mesh::{CellKind, NodeId};
@@ -163,7 +163,8 @@ fn scatter_cell(model: &Model, dofs: &DofMap, b: usize, i: usize, t: &mut Triple
     }
     let element = body.elements[i];
     let coords = body.cell_coords(&model.mesh, i);
-    let k = element_stiffness(element, &coords, &body.material, body.thickness, &GaussRule::stiffness_rule(element))
+    let rule = GaussRule::stiffness_rule(element);
+    let k = element_stiffness_with(element, &coords, &body.material, body.thickness, &rule, body.formulation)
         .map_err(|source| FemError::Element { body: body.name.clone(), cell: body.cell_tags[i], source })?;
     for (col, kc) in kinds.iter().enumerate() {
         for (row, kr) in kinds.iter().enumerate() {

@@ -4,7 +4,7 @@
 //! Bodies must not share nodes with each other unless they are meant to be bonded; contact
 //! between bodies is added by the contact crate on top of this model.
 
-use contact2d_element::{ElementError, ElementType, GaussRule, Material, map_point};
+use contact2d_element::{ElementError, ElementType, Formulation, GaussRule, Material, map_point};
 use contact2d_mesh::{CellKind, Mesh, NodeId};
 
 use crate::dof::{Component, Dof, DofMap};
@@ -23,6 +23,10 @@ pub struct Body {
     pub material: Material,
     /// Out-of-plane thickness.
     pub thickness: f64,
+    /// Standard or B-bar (locking-free for nearly incompressible plane strain); used by the
+    /// assembly, the strain energy and the stress recovery alike. Change it with
+    /// [`Model::set_formulation`], which checks that every cell supports it.
+    pub formulation: Formulation,
     /// Element type of each cell.
     pub elements: Vec<ElementType>,
     /// Nodes of each cell, flat; cell `i` spans `offsets[i]..offsets[i + 1]`.
@@ -136,6 +140,22 @@ impl Model {
     /// Unknown or non-2D group, unsupported cell kinds, a non-positive thickness, or an
     /// [`FemError::InvertedElement`] naming the first truly inverted or degenerate cell.
     pub fn add_body(&mut self, region: &str, material: Material, thickness: f64) -> Result<BodyId, FemError> {
+        self.add_body_with(region, material, thickness, Formulation::Standard)
+    }
+
+    /// As [`Model::add_body`], with the body's [`Formulation`].
+    ///
+    /// # Errors
+    /// As [`Model::add_body`], and [`FemError::Element`] (an
+    /// [`ElementError::UnsupportedFormulation`]) for a cell kind without that formulation
+    /// (B-bar on Tri3).
+    pub fn add_body_with(
+        &mut self,
+        region: &str,
+        material: Material,
+        thickness: f64,
+        formulation: Formulation,
+    ) -> Result<BodyId, FemError> {
         if !(thickness.is_finite() && thickness > 0.0) {
             return Err(FemError::InvalidInput(format!(
                 "body \"{region}\": thickness must be positive, got {thickness}"
@@ -153,6 +173,7 @@ impl Model {
             name: region.to_string(),
             material,
             thickness,
+            formulation,
             elements: vec![],
             nodes: vec![],
             offsets: vec![0],
@@ -174,8 +195,25 @@ impl Model {
             return Err(FemError::InvalidRegion { group: region.into(), reason: "no cells".into() });
         }
         check_jacobians(&self.mesh, &body)?;
+        check_formulation(&body, formulation)?;
         self.bodies.push(body);
         Ok(BodyId(self.bodies.len() - 1))
+    }
+
+    /// Sets the [`Formulation`] of body `id`.
+    ///
+    /// # Errors
+    /// [`FemError::InvalidInput`] for an unknown body, [`FemError::Element`] for a cell kind
+    /// without that formulation (B-bar on Tri3).
+    pub fn set_formulation(&mut self, id: BodyId, formulation: Formulation) -> Result<(), FemError> {
+        let count = self.bodies.len();
+        let body = self
+            .bodies
+            .get_mut(id.0)
+            .ok_or_else(|| FemError::InvalidInput(format!("no body {} (the model has {count})", id.0)))?;
+        check_formulation(body, formulation)?;
+        body.formulation = formulation;
+        Ok(())
     }
 
     /// Prescribes `component = value` on every node of the physical group `group`.
@@ -255,6 +293,20 @@ impl Model {
     }
 }
 
+fn check_formulation(body: &Body, formulation: Formulation) -> Result<(), FemError> {
+    match body.elements.iter().position(|e| !formulation.supports(*e)) {
+        None => Ok(()),
+        Some(i) => Err(FemError::Element {
+            body: body.name.clone(),
+            cell: body.cell_tags[i],
+            source: formulation.check(body.elements[i]).err().unwrap_or(ElementError::UnsupportedFormulation {
+                element: format!("{:?}", body.elements[i]),
+                formulation: format!("{formulation:?}"),
+            }),
+        }),
+    }
+}
+
 fn check_jacobians(mesh: &Mesh, body: &Body) -> Result<(), FemError> {
     for i in 0..body.num_cells() {
         let element = body.elements[i];
@@ -270,4 +322,30 @@ fn check_jacobians(mesh: &Mesh, body: &Body) -> Result<(), FemError> {
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+    use contact2d_element::PlaneCondition;
+    use contact2d_mesh::generate::rectangle;
+
+    #[test]
+    fn formulation_is_stored_checked_and_defaults_to_standard() {
+        let m = Material::new(1.0, 0.4999, PlaneCondition::Strain).unwrap();
+        let mut model = Model::new(rectangle(CellKind::Quad9, [0.0, 1.0], [0.0, 1.0], 2, 2));
+        let id = model.add_body("domain", m, 1.0).unwrap();
+        assert_eq!(model.bodies[id.0].formulation, Formulation::Standard);
+        model.set_formulation(id, Formulation::BBar).unwrap();
+        assert_eq!(model.bodies[id.0].formulation, Formulation::BBar);
+        assert!(matches!(model.set_formulation(BodyId(7), Formulation::BBar), Err(FemError::InvalidInput(_))));
+
+        let mut tri3 = Model::new(rectangle(CellKind::Tri3, [0.0, 1.0], [0.0, 1.0], 2, 2));
+        let e = tri3.add_body_with("domain", m, 1.0, Formulation::BBar);
+        assert!(matches!(e, Err(FemError::Element { source: ElementError::UnsupportedFormulation { .. }, .. })));
+        let id = tri3.add_body("domain", m, 1.0).unwrap();
+        assert!(tri3.set_formulation(id, Formulation::BBar).is_err());
+        assert_eq!(tri3.bodies[id.0].formulation, Formulation::Standard);
+    }
 }

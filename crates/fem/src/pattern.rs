@@ -11,7 +11,7 @@
 //! ```
 //! The node graph comes from the cells, so a model with the same topology has the same pattern.
 
-use contact2d_element::{GaussRule, element_stiffness};
+use contact2d_element::{GaussRule, element_stiffness_with};
 use faer::sparse::SymbolicSparseColMat;
 use rayon::prelude::*;
 
@@ -103,12 +103,13 @@ pub(crate) fn assemble_free_free(model: &Model, dofs: &DofMap, graph: &NodeGraph
             let (b, i) = cells[c];
             let body = &model.bodies[b];
             let element = body.elements[i];
-            let k_e = element_stiffness(
+            let k_e = element_stiffness_with(
                 element,
                 &body.cell_coords(&model.mesh, i),
                 &body.material,
                 body.thickness,
                 &GaussRule::stiffness_rule(element),
+                body.formulation,
             )
             .map_err(|source| FemError::Element {
                 body: body.name.clone(),

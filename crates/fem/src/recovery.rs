@@ -10,9 +10,10 @@
 //!               sharing it, averaged over those cells.
 //! ```
 //!
-//! Averaging is per body: a node is never averaged across a material interface.
+//! Averaging is per body: a node is never averaged across a material interface. `D B` is the
+//! body's formulation: with B-bar, `σ = D B̄ u` (the projected dilatation, as in the stiffness).
 
-use contact2d_element::{GaussRule, gauss_to_node_extrapolation, stress_at};
+use contact2d_element::{GaussRule, gauss_to_node_extrapolation, stress_at_with};
 use contact2d_mesh::{Contour, NodeId};
 
 use crate::error::FemError;
@@ -49,7 +50,7 @@ pub fn nodal_stresses(
             StressRecovery::Direct => element
                 .reference_nodes()
                 .iter()
-                .map(|xi| stress_at(element, &coords, &b.material, &ue, *xi))
+                .map(|xi| stress_at_with(element, &coords, &b.material, &ue, *xi, b.formulation))
                 .collect::<Result<_, _>>()
                 .map_err(err)?,
             StressRecovery::Extrapolated => {
@@ -57,7 +58,7 @@ pub fn nodal_stresses(
                 let gauss: Vec<[f64; 3]> = rule
                     .points
                     .iter()
-                    .map(|xi| stress_at(element, &coords, &b.material, &ue, *xi))
+                    .map(|xi| stress_at_with(element, &coords, &b.material, &ue, *xi, b.formulation))
                     .collect::<Result<_, _>>()
                     .map_err(err)?;
                 let e = gauss_to_node_extrapolation(element, &rule).map_err(err)?;

@@ -1,0 +1,55 @@
+//! The flagship scene in plane strain as ν → ½: the standard elements warn (run notes) and lock,
+//! `plate_insert.formulation = "bbar"` gives a stress concentration K that no longer depends on
+//! ν; an unknown formulation is a scene error.
+//!
+//! Truth used: the plane-strain solution of the contact problem is continuous in ν up to and
+//! including the incompressible limit (the Lamé constant λ enters through a well-posed mixed
+//! problem), so K(0.49) and K(0.4999999) differ by a few per cent at most in the exact solution;
+//! the measured B-bar change on the N = 16 mesh is 0.12 % (K = 4.089 → 4.084), and 2 % leaves
+//! room for the physical dependence on ν, while the locking standard elements change K by a
+//! factor ≥ 10 (measured 6.26 → 2801; K = 1825 in issue 15).
+
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use contact2d::element::LOCKING_POISSON_THRESHOLD;
+use contact2d::run::run_scene;
+use contact2d::scene::Scene;
+
+fn run(nu: f64, formulation: &str) -> contact2d::run::RunReport {
+    let scene = Scene::load(
+        std::path::Path::new("scenes/plate_insert_nogap_mu0.toml"),
+        &[
+            "plate_insert.mesh=\"../meshes/plate_insert/plate_insert_eps0_N16.msh\"".into(),
+            "plate_insert.plane_condition=\"strain\"".into(),
+            format!("plate_insert.poissons_ratio={nu}"),
+            format!("plate_insert.formulation=\"{formulation}\""),
+        ],
+    )
+    .unwrap();
+    run_scene(&scene).unwrap()
+}
+
+#[test]
+fn standard_elements_warn_and_lock_bbar_does_not() {
+    let warned = |r: &contact2d::run::RunReport| r.notes.iter().any(|n| n.contains("lock"));
+    let (std_low, std_high) = (run(0.49, "standard"), run(0.4999999, "standard"));
+    let (bbar_low, bbar_high) = (run(0.49, "bbar"), run(0.4999999, "bbar"));
+    assert!(warned(&std_low) && warned(&std_high), "{:?}", std_low.notes);
+    assert!(!warned(&bbar_low) && !warned(&bbar_high), "{:?}", bbar_high.notes);
+    assert!(!warned(&run(LOCKING_POISSON_THRESHOLD, "standard")));
+    assert!(std_high.K > 10.0 * std_low.K, "standard K {} → {}", std_low.K, std_high.K);
+    let change = (bbar_high.K - bbar_low.K).abs() / bbar_low.K;
+    assert!(change < 0.02, "B-bar K {} → {} ({:.2} %)", bbar_low.K, bbar_high.K, 100.0 * change);
+    assert_eq!(bbar_high.status, "converged");
+}
+
+#[test]
+fn unknown_formulation_is_a_scene_error() {
+    let e = Scene::load(
+        std::path::Path::new("scenes/plate_insert_nogap_mu0.toml"),
+        &["plate_insert.formulation=\"mixed\"".into()],
+    );
+    assert!(e.is_err());
+    let s = Scene::load(std::path::Path::new("scenes/plate_insert_nogap_mu0.toml"), &[]).unwrap();
+    assert_eq!(s.plate_insert().formulation, contact2d::element::Formulation::Standard);
+}
