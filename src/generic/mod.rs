@@ -213,7 +213,7 @@ pub fn solve_generic(
         post: post_clock.elapsed().as_secs_f64(),
         total: clock.elapsed().as_secs_f64(),
     };
-    let mut notes = vec![];
+    let mut notes = scene.element_warnings();
     if history.steps.len() < total {
         notes.push(format!(
             "the history stopped after step {} of {total}: it did not converge ({status})",

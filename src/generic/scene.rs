@@ -40,7 +40,7 @@ use contact2d_contact::{
     BodyDescription, ContactAlgorithm, ContactDescription, EdgeLoadKind, FixDescription, GapDescription,
     LoadDescription, LoadSchedule, Pairing, ProblemDescription, SolverSettings, builder::DEFAULT_PATTERN,
 };
-use contact2d_element::PlaneCondition;
+use contact2d_element::{Formulation, PlaneCondition, locking_warning};
 use contact2d_fem::Component;
 use contact2d_mesh::Mesh;
 
@@ -80,6 +80,29 @@ pub struct BodyEntry {
     /// Out-of-plane thickness (default 1).
     #[serde(default = "one")]
     pub thickness: f64,
+    /// `standard` (default) or `bbar` (locking-free for nearly incompressible plane strain).
+    #[serde(default)]
+    pub formulation: FormulationKey,
+}
+
+/// The element formulation as spelled in scene files.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum FormulationKey {
+    /// Standard displacement elements.
+    #[default]
+    Standard,
+    /// B-bar.
+    Bbar,
+}
+
+impl FormulationKey {
+    fn formulation(self) -> Formulation {
+        match self {
+            FormulationKey::Standard => Formulation::Standard,
+            FormulationKey::Bbar => Formulation::BBar,
+        }
+    }
 }
 
 /// One `[[fix]]`: prescribed displacement components on a group.
@@ -456,6 +479,19 @@ impl GenericScene {
             .map_err(|e| self.fail("solver.max_iterations", e.to_string()))
     }
 
+    /// Warnings about the elements: standard elements of a nearly incompressible body in plane
+    /// strain lock.
+    pub fn element_warnings(&self) -> Vec<String> {
+        self.body
+            .iter()
+            .filter_map(|b| {
+                let plane = b.plane.unwrap_or(self.plane).condition();
+                locking_warning(plane, b.poissons_ratio, b.formulation.formulation())
+                    .map(|w| format!("body \"{}\": {w}", b.region))
+            })
+            .collect()
+    }
+
     /// The problem description on `mesh`.
     pub fn description(&self, mesh: Mesh) -> ProblemDescription {
         let bodies = self
@@ -467,6 +503,7 @@ impl GenericScene {
                 poissons_ratio: b.poissons_ratio,
                 plane: b.plane.unwrap_or(self.plane).condition(),
                 thickness: b.thickness,
+                formulation: b.formulation.formulation(),
             })
             .collect();
         let mut fixes = vec![];

@@ -16,7 +16,7 @@
 
 use std::ops::Range;
 
-use contact2d_element::{Material, PlaneCondition};
+use contact2d_element::{Formulation, Material, PlaneCondition};
 use contact2d_fem::{Component, DofKind, EdgeLoad, Model, assemble_edge_loads};
 use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{CellKind, Contour, Mesh};
@@ -41,6 +41,9 @@ pub struct BodyDescription {
     pub plane: PlaneCondition,
     /// Out-of-plane thickness.
     pub thickness: f64,
+    /// Standard displacement elements, or B-bar (locking-free for nearly incompressible
+    /// materials in plane strain).
+    pub formulation: Formulation,
 }
 
 /// A prescribed displacement component on every node of a group.
@@ -271,7 +274,7 @@ impl ProblemDescription {
         for b in &self.bodies {
             let material = Material::new(b.youngs_modulus, b.poissons_ratio, b.plane)
                 .map_err(|e| ContactError::InvalidInput(format!("body \"{}\": {e}", b.region)))?;
-            model.add_body(&b.region, material, b.thickness)?;
+            model.add_body_with(&b.region, material, b.thickness, b.formulation)?;
         }
         for f in &self.fixes {
             model.fix(&f.group, f.component, f.value)?;
