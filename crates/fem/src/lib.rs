@@ -30,4 +30,4 @@ pub use ordering::{Ordering, fill_reducing_permutation};
 pub use recovery::{CurveSample, StressRecovery, nodal_stresses, stresses_along_curve};
 pub use rigid::check_rigid_modes;
 pub use solution::{Solution, solve_linear, strain_energy};
-pub use solve::CholeskySolver;
+pub use solve::{CholeskySolver, parallelism};
