@@ -25,6 +25,10 @@ pub enum ContactError {
         /// What went wrong.
         reason: String,
     },
+    /// A solution with a non-finite number (overflow): reported as an error, never as a
+    /// result whose NaN would be written as JSON `null`.
+    #[error("the solution is not finite ({0}); status numerical")]
+    NotFinite(String),
     /// A parameter outside its admissible range.
     #[error("invalid contact input: {0}")]
     InvalidInput(String),

@@ -11,6 +11,7 @@
 
 pub mod active_set;
 pub mod boussinesq;
+pub mod certify;
 pub mod error;
 pub mod friction;
 pub mod history;
@@ -29,6 +30,7 @@ pub use boussinesq::{
     BoussinesqLoading, BoussinesqStep, Violation, ZoneForces, Zones, finish_zones, solve_boussinesq_history,
     solve_boussinesq_step, solve_given_zones,
 };
+pub use certify::{Check, FailedCheck, certify, check_energy_balance};
 pub use error::ContactError;
 pub use friction::solve_frictional_active_set;
 pub use history::{HistoryStep, StepAlgorithm, equal_steps, solve_history, solve_history_with};
