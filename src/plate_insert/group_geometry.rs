@@ -87,6 +87,11 @@ pub struct MisplacedGroup {
 /// # Errors
 /// The first group found out of place.
 pub fn check_group_geometry(mesh: &Mesh, eps: f64) -> Result<(), MisplacedGroup> {
+    // A mesh without the flagship's groups is not a flagship mesh: building the model names
+    // the missing group, which says more than any position would.
+    if REQUIRED.iter().any(|g| mesh.group(g).is_err()) {
+        return Ok(());
+    }
     let Some(plate) = points(mesh, "plate") else { return Ok(()) };
     let fold = |f: fn(&[f64; 2]) -> f64, init: f64, pick: fn(f64, f64) -> f64| plate.iter().map(f).fold(init, pick);
     let x_min = fold(|p| p[0], f64::INFINITY, f64::min);
@@ -151,6 +156,9 @@ pub fn check_group_geometry(mesh: &Mesh, eps: f64) -> Result<(), MisplacedGroup>
     }
     Ok(())
 }
+
+/// The groups every flagship mesh has (the insert's own groups are absent for a rigid insert).
+const REQUIRED: [&str; 6] = ["plate", "right", "top", "bottom_plate", "hole_edge", "insert_edge"];
 
 /// The coordinates of the nodes of `group`, if the mesh has it.
 fn points(mesh: &Mesh, group: &str) -> Option<Vec<[f64; 2]>> {
