@@ -7,8 +7,8 @@ use std::time::Instant;
 use serde::Serialize;
 
 use contact2d_contact::{
-    BoussinesqLoading, ContactError, ContactSolution, ContactStatus, HistoryStep, Interface, StepAlgorithm,
-    equal_steps, solve_boussinesq_history, solve_history_with,
+    BoussinesqLoading, ContactError, ContactSolution, ContactStatus, HistoryStep, Interface, StepAlgorithm, certify,
+    check_energy_balance, equal_steps, solve_boussinesq_history, solve_history_with,
 };
 
 use crate::plate_insert::{
@@ -96,8 +96,14 @@ pub struct RunReport {
     pub pairs: usize,
     /// Algorithm.
     pub algorithm: ContactAlgorithm,
-    /// Outcome: the first step's that did not converge, else `converged`.
+    /// Outcome: the first step's that did not converge, else `converged`; `numerical` also
+    /// when a step's answer fails [`contact2d_contact::certify`] or the history's energy
+    /// balance `W = Φ_E1 + Φ_E2 + Φ_f` fails [`contact2d_contact::check_energy_balance`].
     pub status: String,
+    /// Why the status is `numerical`: the check that failed, with its value and tolerance
+    /// (e.g. "step 1: complementarity … = 2.1e-3 exceeds 1e-6"); `null` when the status is
+    /// not `numerical` or the algorithm itself broke down without a residual to report.
+    pub failed_check: Option<String>,
     /// Iterations of the algorithm, summed over the steps.
     pub iterations: usize,
     /// KKT residuals (of the last step; the dissipation minimum over all steps).
@@ -232,7 +238,7 @@ pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<Ru
             })
             .collect();
         let steps = placed_steps(placed, if scaled { p.load } else { 1.0 })?;
-        let mut report = summarise(scene, &steps, start)?;
+        let mut report = finite(summarise(scene, &steps, start)?)?;
         report.notes.extend(notes);
         return Ok(RunOutcome { report, steps });
     }
@@ -281,8 +287,26 @@ pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<Ru
             })
         })
         .collect::<Result<Vec<_>, ContactError>>()?;
-    let report = summarise(scene, &steps, start)?;
+    let report = finite(summarise(scene, &steps, start)?)?;
     Ok(RunOutcome { report, steps })
+}
+
+/// The report if every number in it is finite; a non-finite one (an overflow the input limits
+/// did not foresee) is an error, so that no NaN is written as the JSON `null` that means "none".
+fn finite(report: RunReport) -> Result<RunReport, ContactError> {
+    let r = &report;
+    let optional = [r.l, r.l_master, r.b, r.insert_hoop_max].into_iter().flatten();
+    let brackets = [r.l_bracket, r.b_bracket].into_iter().flatten().flatten();
+    let numbers = [r.P, r.Phi_E1, r.Phi_E2, r.Phi_f, r.W, r.sigma_star, r.K, r.w, r.mu];
+    let steps =
+        r.steps.iter().flat_map(|s| [s.w, s.P, s.Phi_E1, s.Phi_E2, s.Phi_f, s.W].into_iter().chain(s.l).chain(s.b));
+    let k = &r.kkt;
+    let kkt =
+        [k.max_penetration, k.max_complementarity, k.max_cone_violation, k.max_slip_inside_cone, k.min_dissipation];
+    match numbers.into_iter().chain(optional).chain(brackets).chain(steps).chain(kkt).find(|v| !v.is_finite()) {
+        Some(v) => Err(ContactError::NotFinite(format!("a reported quantity is {v}"))),
+        None => Ok(report),
+    }
 }
 
 /// Solved steps from a history with placed zone ends; `scale` multiplies a solution that is
@@ -339,6 +363,7 @@ fn summarise(scene: &Scene, solved: &[SolvedStep], start: Instant) -> Result<Run
     }
     let last = solved.last().ok_or_else(|| ContactError::InvalidInput("no load step".into()))?;
     let (solution, q, problem) = (&last.solution, &last.results, &last.case.problem);
+    let (status, failed_check) = certified_status(scene, solved, &steps);
     Ok(RunReport {
         scene: scene.name.clone(),
         l: q.contact_end,
@@ -359,15 +384,8 @@ fn summarise(scene: &Scene, solved: &[SolvedStep], start: Instant) -> Result<Run
         dofs: problem.system.dofs.num_free(),
         pairs: problem.num_pairs(),
         algorithm: scene.solver.algorithm,
-        // A history is as good as its worst step: the first step that did not converge, if any.
-        status: status_name(
-            solved
-                .iter()
-                .map(|s| s.solution.status)
-                .find(|s| *s != ContactStatus::Converged)
-                .unwrap_or(solution.status),
-        )
-        .into(),
+        status: status_name(status).into(),
+        failed_check,
         iterations: solved.iter().map(|s| s.solution.iterations).sum(),
         kkt: KktReport {
             max_penetration: solution.kkt.max_penetration,
@@ -389,6 +407,30 @@ fn summarise(scene: &Scene, solved: &[SolvedStep], start: Instant) -> Result<Run
 fn locking_notes(scene: &Scene) -> Vec<String> {
     let p = scene.plate_insert();
     contact2d_element::locking_warning(p.plane, p.poissons_ratio, p.formulation).into_iter().collect()
+}
+
+/// The status of a history — as good as its worst step: the first step that did not converge,
+/// or failed the energy balance — and, for `numerical`, the check that failed.
+fn certified_status(scene: &Scene, solved: &[SolvedStep], steps: &[StepReport]) -> (ContactStatus, Option<String>) {
+    let p = &scene.plate_insert;
+    // One proportional step from the unloaded state (no gap: solved once and scaled) makes
+    // W = P w / 2 exact; otherwise W is the trapezoid rule over the steps.
+    let exact = p.clearance == 0.0 && p.l_steps.is_empty();
+    for (i, (step, report)) in solved.iter().zip(steps).enumerate() {
+        let status = step.solution.status;
+        if status == ContactStatus::Numerical {
+            let why = certify(&step.case.problem, &step.solution).err().map(|f| format!("step {}: {f}", i + 1));
+            return (status, why);
+        }
+        if status != ContactStatus::Converged {
+            return (status, None);
+        }
+        let balance = check_energy_balance(report.W, report.Phi_E1 + report.Phi_E2, report.Phi_f, exact);
+        if let Err(f) = balance {
+            return (ContactStatus::Numerical, Some(format!("step {}: {f}", i + 1)));
+        }
+    }
+    (solved.last().map_or(ContactStatus::Converged, |s| s.solution.status), None)
 }
 
 /// Every violated inequality of every step, with the pair's η on the hole edge.

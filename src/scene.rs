@@ -72,6 +72,19 @@ pub enum SceneError {
         /// What is wrong.
         reason: String,
     },
+    /// A physical group of the mesh that is not where the flagship needs it (e.g. two group
+    /// names swapped).
+    #[error("scene {path}: mesh {mesh}: group \"{group}\" {reason}")]
+    Group {
+        /// Path of the scene as given.
+        path: String,
+        /// The mesh file.
+        mesh: String,
+        /// The group at fault.
+        group: String,
+        /// Where it must lie and the node that does not.
+        reason: String,
+    },
     /// A `--set` override that does not parse or names no key.
     #[error("--set {assignment}: {reason}")]
     Override {
@@ -333,6 +346,7 @@ impl Scene {
     /// `docs/user-guide.md`, "Scene keys"):
     ///
     /// * ranges: w, μ, ε, c finite and ≥ 0, ε < 1, E2/E1 finite and > 0, ν in (−1, 0.5),
+    ///   load 0 or in [1e-100, 1e100] ([`MAX_LOAD`]), friction ≤ [`MAX_FRICTION`],
     ///   1 ≤ steps ≤ 100 000, max_iterations ≥ 1, each l in l_steps in (0, 1) and increasing;
     /// * contradictions: c > 0 with ε = 0 (a neat-fit mesh has no room for a clearance),
     ///   l_steps with an algorithm other than `boussinesq`, l_steps with steps ≠ 1 or load ≠ 0
@@ -353,6 +367,18 @@ impl Scene {
         };
         non_negative("plate_insert.load", p.load)?;
         non_negative("plate_insert.friction", p.friction)?;
+        if p.load > MAX_LOAD || (p.load > 0.0 && p.load < 1.0 / MAX_LOAD) {
+            return Err(fail(
+                "plate_insert.load",
+                format!("{:e} must be 0 or lie in [1e-100, 1e100] (energies go as w²)", p.load),
+            ));
+        }
+        if p.friction > MAX_FRICTION {
+            return Err(fail(
+                "plate_insert.friction",
+                format!("μ = {:e} exceeds {MAX_FRICTION:e} (μλ would overflow)", p.friction),
+            ));
+        }
         non_negative("plate_insert.eps", p.eps)?;
         non_negative("plate_insert.clearance", p.clearance)?;
         if p.eps >= 1.0 {
@@ -467,55 +493,19 @@ impl Scene {
         }
     }
 
-    /// Checks that `mesh` has the geometry the scene's `eps` describes: the hole edge on the
-    /// circle of radius 1 about the origin and the insert edge on the circle of radius 1 − ε
-    /// about (−ε, 0), each node within 1e-6 (the bundled meshes are exact to 1e-15). A
-    /// missing group is left to the run, which reports it.
-    ///
-    /// # Errors
-    /// [`SceneError::Value`] on `plate_insert.eps`, with the ε the mesh was made for.
-    pub fn check_mesh_geometry(&self, mesh: &contact2d_mesh::Mesh) -> Result<(), SceneError> {
-        let eps = self.plate_insert.eps;
-        let off_circle = |group: &str, centre: f64, radius: f64| {
-            mesh.group_nodes(group).ok().and_then(|nodes| {
-                nodes.iter().map(|v| mesh.points[v.0]).find(|x| ((x[0] - centre).hypot(x[1]) - radius).abs() > 1e-6)
-            })
-        };
-        if let Some(x) = off_circle("hole_edge", 0.0, 1.0) {
-            return Err(SceneError::Value {
-                path: self.file.display().to_string(),
-                key: "plate_insert.mesh".into(),
-                reason: format!(
-                    "the hole edge must be the circle of radius 1 about the origin; node ({}, {}) is not on it",
-                    x[0], x[1]
-                ),
-            });
-        }
-        if off_circle("insert_edge", -eps, 1.0 - eps).is_some() {
-            // The insert's rightmost point is at x1 = 1 − 2ε whatever ε (its leftmost at −1).
-            let right = mesh
-                .group_nodes("insert_edge")
-                .map(|nodes| nodes.iter().map(|v| mesh.points[v.0][0]).fold(f64::NEG_INFINITY, f64::max))
-                .unwrap_or(f64::NAN);
-            return Err(SceneError::Value {
-                path: self.file.display().to_string(),
-                key: "plate_insert.eps".into(),
-                reason: format!(
-                    "{eps} does not match the mesh {}: its insert edge is not the circle of radius 1 − ε about \
-                     (−ε, 0) (it reaches x1 = {right:.6}, which suggests eps = {:.6})",
-                    self.mesh_path().display(),
-                    (1.0 - right) / 2.0
-                ),
-            });
-        }
-        Ok(())
-    }
-
     /// The mesh path resolved against the scene file's directory.
     pub fn mesh_path(&self) -> PathBuf {
         self.base_dir.join(&self.plate_insert.mesh)
     }
 }
+
+/// The largest load w (and 1/the smallest positive one): the energies go as w², so w² must stay
+/// far from overflow and underflow; the problem is linear in w, so no physical load needs more.
+pub const MAX_LOAD: f64 = 1e100;
+
+/// The largest friction coefficient: beyond 1e6 the cone is a stick condition to round-off
+/// (real materials have μ < 10), and μλ overflows long before 1e308.
+pub const MAX_FRICTION: f64 = 1e6;
 
 /// The largest number of load steps a scene may ask for.
 pub const MAX_STEPS: usize = 100_000;

@@ -15,6 +15,12 @@ struct Expected {
     command: String,
     exit: i32,
     stderr: Vec<String>,
+    /// For a run that solves (exit 0): the `status` its `--json` summary must report.
+    #[serde(default)]
+    status: Option<String>,
+    /// Substrings the `failed_check` of that summary must contain.
+    #[serde(default)]
+    failed_check: Vec<String>,
     #[allow(dead_code)]
     why: String,
 }
@@ -35,7 +41,12 @@ fn every_bad_input_fails_with_its_recorded_error() {
     let mut failures = vec![];
     for (file, want) in &expected {
         let path = dir.join(file);
-        let out = Command::new(env!("CARGO_BIN_EXE_contact2d")).arg(&want.command).arg(&path).output().unwrap();
+        let mut command = Command::new(env!("CARGO_BIN_EXE_contact2d"));
+        command.arg(&want.command).arg(&path);
+        if want.status.is_some() {
+            command.arg("--json");
+        }
+        let out = command.output().unwrap();
         let stderr = String::from_utf8_lossy(&out.stderr);
         let code = out.status.code();
         let mut wrong = vec![];
@@ -54,9 +65,27 @@ fn every_bad_input_fails_with_its_recorded_error() {
             }
             wrong.extend(want.stderr.iter().filter(|s| !stderr.contains(s.as_str())).map(|s| format!("lacks {s:?}")));
         }
+        if let Some(status) = &want.status {
+            wrong.extend(check_summary(&out.stdout, status, &want.failed_check));
+        }
         if !wrong.is_empty() {
             failures.push(format!("{file}: {} — stderr: {}", wrong.join(", "), stderr.trim()));
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// What is wrong with a `--json` summary that should report `status` and a `failed_check`
+/// containing `check`.
+fn check_summary(stdout: &[u8], status: &str, check: &[String]) -> Vec<String> {
+    let Ok(summary) = serde_json::from_slice::<serde_json::Value>(stdout) else {
+        return vec!["stdout is not one JSON summary".into()];
+    };
+    let mut wrong = vec![];
+    if summary["status"] != status {
+        wrong.push(format!("status {}, expected {status}", summary["status"]));
+    }
+    let failed = summary["failed_check"].as_str().unwrap_or("");
+    wrong.extend(check.iter().filter(|c| !failed.contains(c.as_str())).map(|c| format!("failed_check lacks {c:?}")));
+    wrong
 }

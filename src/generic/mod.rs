@@ -238,7 +238,24 @@ pub fn solve_generic(
         time_s: times,
         notes,
     };
+    if let Some(path) = non_finite(&serde_json::to_value(&report).unwrap_or(serde_json::Value::Null), "") {
+        return Err(contact_error(ContactError::NotFinite(format!("{path} of the summary"))));
+    }
     Ok(GenericOutcome { scene: scene.clone(), built, history, report })
+}
+
+/// The dotted path of the first non-finite number in a serialised summary (serde_json writes
+/// NaN and ±∞ as `null`, and the summary has no other `null`).
+fn non_finite(value: &serde_json::Value, at: &str) -> Option<String> {
+    let join = |k: &str| if at.is_empty() { k.to_string() } else { format!("{at}.{k}") };
+    match value {
+        serde_json::Value::Null => Some(if at.is_empty() { "the summary".into() } else { at.to_string() }),
+        serde_json::Value::Array(items) => {
+            items.iter().enumerate().find_map(|(i, v)| non_finite(v, &join(&i.to_string())))
+        }
+        serde_json::Value::Object(map) => map.iter().find_map(|(k, v)| non_finite(v, &join(k))),
+        _ => None,
+    }
 }
 
 fn without_profiles(step: &StepResult) -> StepResult {

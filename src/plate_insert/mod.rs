@@ -19,11 +19,13 @@ use contact2d_mesh::{Contour, read_msh};
 mod contour_history;
 mod corners;
 mod generated_mesh;
+mod group_geometry;
 pub mod published;
 mod results;
 mod roots;
 mod zone_ends;
 pub use contour_history::ContourHistory;
+pub use group_geometry::{MisplacedGroup, check_group_geometry};
 pub use results::{PLATE_HALF_HEIGHT, PlateInsertResults};
 pub use zone_ends::{PlacedLoading, PlacedStep, ZoneEndSearch, place_zone_ends, solve_placed_history};
 

@@ -40,6 +40,10 @@ pub enum ContactError {
         /// The load step (from 1).
         step: usize,
     },
+    /// A solution with a non-finite number (overflow): reported as an error, never as a
+    /// result whose NaN would be written as JSON `null`.
+    #[error("the solution is not finite ({0}); status numerical")]
+    NotFinite(String),
     /// A parameter outside its admissible range.
     #[error("invalid contact input: {0}")]
     InvalidInput(String),

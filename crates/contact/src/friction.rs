@@ -178,7 +178,9 @@ fn admissible(
 ) -> bool {
     let (gap, s) = interface_values(interface, w, &problem.gap, lambda, tau, frictional);
     let force = lambda.iter().chain(tau).fold(0.0f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
-    let length = gap.iter().fold(0.0f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
+    // The length scale is the motion (gap − g0), not the gaps: a clearance of 1e12 must not make
+    // a penetration of 0.4 look like round-off.
+    let length = gap.iter().zip(&problem.gap).fold(0.0f64, |a, (v, g0)| a.max((v - g0).abs())).max(f64::MIN_POSITIVE);
     let (tf, tg) = (1e-10 * force, 1e-10 * length);
     (0..lambda.len()).all(|k| {
         let ds = s[k] - start.slip[k];

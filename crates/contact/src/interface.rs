@@ -20,8 +20,10 @@
 //! are then empty (0 columns). If a pair touches a DOF outside the trailing block (a problem
 //! rebuilt with different contact nodes), the compliances are computed by multi-RHS solves.
 
+use contact2d_fem::parallelism;
+use faer::Mat;
+use faer::linalg::matmul::matmul;
 use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
-use faer::{Mat, get_global_parallelism};
 use nalgebra::DMatrix;
 
 use contact2d_fem::CholeskySolver;
@@ -91,10 +93,18 @@ fn trailing_solve(problem: &ContactProblem, normal: &[PairRow], tangent: &[PairR
     };
     let (mut yn, mut yt) = (columns(normal)?, columns(tangent)?);
     let l = problem.solver.trailing_block(t)?;
-    let par = get_global_parallelism();
+    let par = parallelism();
     solve_lower_triangular_in_place(l.as_ref(), yn.as_mut(), par);
     solve_lower_triangular_in_place(l.as_ref(), yt.as_mut(), par);
     Some((yn, yt))
+}
+
+/// `A B` with the fixed [`parallelism`] (faer's `*` reads the global setting, which follows the
+/// thread pool).
+fn product(a: faer::MatRef<'_, f64>, b: &Mat<f64>) -> Mat<f64> {
+    let mut c = Mat::zeros(a.nrows(), b.ncols());
+    matmul(c.as_mut(), faer::Accum::Replace, a, b.as_ref(), 1.0, parallelism());
+    c
 }
 
 impl Interface {
@@ -109,14 +119,14 @@ impl Interface {
         let (c_nn, c_nt, c_tn, c_tt) = match trailing_solve(problem, normal, tangent) {
             Some((yn, yt)) => {
                 let (ynt, ytt) = (yn.transpose(), yt.transpose());
-                (ynt * &yn, ynt * &yt, ytt * &yn, ytt * &yt)
+                (product(ynt, &yn), product(ynt, &yt), product(ytt, &yn), product(ytt, &yt))
             }
             None => {
                 let b_n = rows_to_columns(n, normal);
                 let b_t = rows_to_columns(n, tangent);
                 let (z_n, z_t) = (problem.solver.solve_many(&b_n), problem.solver.solve_many(&b_t));
                 let (bnt, btt) = (b_n.transpose(), b_t.transpose());
-                (bnt * &z_n, bnt * &z_t, btt * &z_n, btt * &z_t)
+                (product(bnt, &z_n), product(bnt, &z_t), product(btt, &z_n), product(btt, &z_t))
             }
         };
         let h = |rows: &[PairRow]| rows.iter().map(|r| r.dot(&u0, &problem.pattern_prescribed)).collect::<Vec<_>>();

@@ -12,6 +12,7 @@
 pub mod active_set;
 pub mod boussinesq;
 pub mod builder;
+pub mod certify;
 pub mod error;
 pub mod friction;
 pub mod history;
@@ -36,6 +37,7 @@ pub use builder::{
     BodyDescription, BuiltProblem, ContactDescription, EdgeLoadKind, FixDescription, GapDescription, InterfaceInfo,
     LoadDescription, Pairing, ProblemDescription,
 };
+pub use certify::{Check, FailedCheck, certify, check_energy_balance};
 pub use error::ContactError;
 pub use friction::solve_frictional_active_set;
 pub use history::{HistoryStep, StepAlgorithm, equal_steps, solve_history, solve_history_with};

@@ -8,11 +8,16 @@
 //! `F` and `U` are the problem's force and displacement scales (largest contact, load or
 //! stiffness-times-displacement force; largest gap or displacement): each complementary pair is decided by its larger normalised member,
 //! which is exact for active-set answers and robust for interior-point ones.
+//!
+//! A `Converged` answer that fails [`crate::certify::certify`] (KKT residuals, finiteness) is
+//! reported as [`ContactStatus::Numerical`]: every algorithm ends here, so none can claim more
+//! than its answer shows.
 
 use std::time::Duration;
 
 use contact2d_fem::Solution;
 
+use crate::certify::certify;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::solution::{ContactSolution, ContactStatus, KktResiduals, PairState, StepStart};
@@ -102,7 +107,7 @@ pub fn finish_from_displacement(
     if !kkt.min_dissipation.is_finite() {
         kkt.min_dissipation = 0.0;
     }
-    ContactSolution {
+    let mut solution = ContactSolution {
         status: raw.status,
         load_factor: w,
         displacement,
@@ -118,7 +123,12 @@ pub fn finish_from_displacement(
         time: raw.time,
         trace: vec![],
         violations: vec![],
+    };
+    // `Converged` is the algorithm's claim; it stands only if the answer passes the checks.
+    if solution.status == ContactStatus::Converged && certify(problem, &solution).is_err() {
+        solution.status = ContactStatus::Numerical;
     }
+    solution
 }
 
 /// The force scale `F`: the largest of the contact forces, the load's nodal forces, and the

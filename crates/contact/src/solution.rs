@@ -24,7 +24,9 @@ pub enum ContactStatus {
     MaxIterations,
     /// The problem has no feasible point.
     Infeasible,
-    /// A numerical failure (singular interface matrix, solver breakdown).
+    /// A numerical failure (singular interface matrix, solver breakdown), or an answer the
+    /// algorithm took for converged that fails [`crate::certify::certify`] (a KKT residual
+    /// above its tolerance, or a non-finite number).
     Numerical,
     /// The algorithm's assumed structure gave a solution that violates an inequality of the
     /// contact conditions (the offending pairs are reported by the algorithm).

@@ -31,4 +31,4 @@ pub use ordering::{Ordering, fill_reducing_permutation};
 pub use recovery::{CurveSample, StressRecovery, nodal_stresses, stresses_along_curve};
 pub use rigid::{FloatingPiece, check_rigid_modes, floating_pieces};
 pub use solution::{Solution, solve_linear, strain_energy};
-pub use solve::CholeskySolver;
+pub use solve::{CholeskySolver, parallelism};

@@ -88,5 +88,8 @@ pub fn strain_energy(model: &Model, body: BodyId, u: &[f64]) -> Result<f64, FemE
             let ue = nalgebra::DVector::from_iterator(k.nrows(), b.cell_dofs(i).map(|d| u[d.0]));
             Ok(0.5 * ue.dot(&(&k * &ue)))
         })
-        .try_reduce(|| 0.0, |a, b| Ok(a + b))
+        .collect::<Result<Vec<f64>, FemError>>()
+        // Summed in cell order, not by rayon's scheduling-dependent reduction tree, so that the
+        // energy is the same bit for bit whatever the number of threads.
+        .map(|per_cell| per_cell.iter().sum())
 }

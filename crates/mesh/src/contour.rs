@@ -219,7 +219,8 @@ fn order_chain(name: &str, raw: &[([NodeId; 3], bool)]) -> Result<Vec<[NodeId; 3
         incident.entry(e[0]).or_default().push(i);
         incident.entry(e[1]).or_default().push(i);
     }
-    if let Some((node, _)) = incident.iter().find(|(_, v)| v.len() > 2) {
+    // The smallest branching node, so the message does not depend on the hash order.
+    if let Some(node) = incident.iter().filter(|(_, v)| v.len() > 2).map(|(n, _)| *n).min() {
         return Err(MeshError::Geometry(format!("contour \"{name}\" branches at node index {}", node.0)));
     }
     let mut ends: Vec<NodeId> = incident.iter().filter(|(_, v)| v.len() == 1).map(|(n, _)| *n).collect();

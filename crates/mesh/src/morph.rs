@@ -5,8 +5,9 @@
 //! 1. every target node n gets its new position (callers give points on the node's own curve)
 //! 2. d = displacement of the moved nodes; every other node on any 1D physical group is fixed
 //!    (d = 0), as are nodes more than `layers` cells away from a moved node
-//! 3. the remaining nodes get d by Jacobi smoothing, d_i ← mean of d over the nodes sharing a
-//!    cell with i (discrete Laplace equation, 200 sweeps or until the update is < 1e-14 |d|max)
+//! 3. the remaining nodes get d by Gauss–Seidel smoothing in ascending node order, d_i ← mean of d
+//!    over the nodes sharing a cell with i (discrete Laplace equation, 200 sweeps or until the
+//!    update is < 1e-14 |d|max)
 //! ```
 //!
 //! The move is meant to be small compared with the cells (a fraction of an edge), so that the
@@ -16,19 +17,23 @@
 //! naming the cell and the moved node, and the mesh is left unchanged. (A cell that was already
 //! tangled is not judged here; building a model on the mesh reports it.)
 
-use std::collections::{HashMap, HashSet};
-
 use crate::error::MeshError;
 use crate::mesh::{Mesh, NodeId};
 use crate::orientation::{Orientation, cell_orientation};
 
 /// Moves `targets` (node, new position) and relaxes the interior nodes within `layers` cells.
 ///
+/// Deterministic: the relaxed nodes are swept in ascending index order and every neighbour sum
+/// runs in ascending index order, so the result does not depend on hashing or threads.
+///
 /// # Errors
 /// [`MeshError::Geometry`] for an unknown node, a non-finite position, or a node given twice;
 /// [`MeshError::MorphInvertsElement`] if the move would invert a cell (the mesh is then unchanged).
 pub fn move_nodes(mesh: &mut Mesh, targets: &[(NodeId, [f64; 2])], layers: usize) -> Result<(), MeshError> {
-    let mut disp: HashMap<usize, [f64; 2]> = HashMap::new();
+    let num_nodes = mesh.points.len();
+    // field[n]: the displacement of node n (zero for fixed and untouched nodes).
+    let mut field = vec![[0.0f64; 2]; num_nodes];
+    let mut moved = vec![false; num_nodes];
     for (node, p) in targets {
         let old = mesh
             .points
@@ -37,42 +42,41 @@ pub fn move_nodes(mesh: &mut Mesh, targets: &[(NodeId, [f64; 2])], layers: usize
         if !p.iter().all(|v| v.is_finite()) {
             return Err(MeshError::Geometry(format!("move_nodes: non-finite target for node index {}", node.0)));
         }
-        if disp.insert(node.0, [p[0] - old[0], p[1] - old[1]]).is_some() {
+        if moved[node.0] {
             return Err(MeshError::Geometry(format!("move_nodes: node index {} given twice", node.0)));
         }
+        moved[node.0] = true;
+        field[node.0] = [p[0] - old[0], p[1] - old[1]];
     }
     let neighbours = node_neighbours(mesh);
-    let fixed: HashSet<usize> = boundary_nodes(mesh).into_iter().filter(|n| !disp.contains_key(n)).collect();
-    let free = nodes_within(&neighbours, disp.keys().copied(), layers)
-        .into_iter()
-        .filter(|n| !disp.contains_key(n) && !fixed.contains(n))
-        .collect::<Vec<_>>();
-    let scale = disp.values().fold(0.0f64, |a, d| a.max(d[0].hypot(d[1])));
-    let mut field: HashMap<usize, [f64; 2]> = disp.clone();
+    let on_boundary = boundary_nodes(mesh);
+    let seeds: Vec<usize> = (0..num_nodes).filter(|&n| moved[n]).collect();
+    let near = nodes_within(&neighbours, &seeds, layers);
+    let free: Vec<usize> = (0..num_nodes).filter(|&n| near[n] && !moved[n] && !on_boundary[n]).collect();
+    let scale = seeds.iter().fold(0.0f64, |a, &n| a.max(field[n][0].hypot(field[n][1])));
     for _ in 0..200 {
         let mut change = 0.0f64;
         for &n in &free {
-            let nb = &neighbours[&n];
+            let nb = &neighbours[n];
             let mut mean = [0.0; 2];
-            for m in nb {
-                let d = field.get(m).copied().unwrap_or([0.0; 2]);
-                mean[0] += d[0];
-                mean[1] += d[1];
+            for &m in nb {
+                mean[0] += field[m][0];
+                mean[1] += field[m][1];
             }
             let k = nb.len().max(1) as f64;
             let new = [mean[0] / k, mean[1] / k];
-            let old = field.get(&n).copied().unwrap_or([0.0; 2]);
+            let old = field[n];
             change = change.max((new[0] - old[0]).hypot(new[1] - old[1]));
-            field.insert(n, new);
+            field[n] = new;
         }
         if change <= 1e-14 * scale {
             break;
         }
     }
     let mut moved_points = mesh.points.clone();
-    for (&n, d) in &field {
-        moved_points[n][0] += d[0];
-        moved_points[n][1] += d[1];
+    for n in seeds.iter().chain(&free) {
+        moved_points[*n][0] += field[*n][0];
+        moved_points[*n][1] += field[*n][1];
     }
     check_orientations(mesh, &moved_points, targets)?;
     mesh.points = moved_points;
@@ -121,42 +125,52 @@ fn culprit(mesh: &Mesh, cell: &[NodeId], coords: &[[f64; 2]], targets: &[(NodeId
     in_cell.or_else(nearest).copied().unwrap_or((cell[0], coords[0]))
 }
 
-/// Nodes sharing a 2D cell with each node.
-fn node_neighbours(mesh: &Mesh) -> HashMap<usize, Vec<usize>> {
-    let mut nb: HashMap<usize, HashSet<usize>> = HashMap::new();
+/// Nodes sharing a 2D cell with each node, in ascending order.
+fn node_neighbours(mesh: &Mesh) -> Vec<Vec<usize>> {
+    let len = mesh.points.len();
+    let mut nb: Vec<Vec<usize>> = vec![vec![]; len];
     for block in mesh.blocks.iter().filter(|b| b.kind.dim() == 2) {
         for cell in block.cells() {
             for a in cell {
-                let entry = nb.entry(a.0).or_default();
-                entry.extend(cell.iter().map(|n| n.0).filter(|&n| n != a.0));
+                if let Some(list) = nb.get_mut(a.0) {
+                    list.extend(cell.iter().map(|n| n.0).filter(|&n| n != a.0 && n < len));
+                }
             }
         }
     }
-    nb.into_iter().map(|(k, v)| (k, v.into_iter().collect())).collect()
+    for list in &mut nb {
+        list.sort_unstable();
+        list.dedup();
+    }
+    nb
 }
 
-/// Nodes of every 1D cell that belongs to a physical group.
-fn boundary_nodes(mesh: &Mesh) -> HashSet<usize> {
-    mesh.blocks
-        .iter()
-        .filter(|b| b.kind.dim() == 1 && !b.physical_tags.is_empty())
-        .flat_map(|b| b.nodes.iter().map(|n| n.0))
-        .collect()
+/// Whether each node lies on a 1D cell that belongs to a physical group.
+fn boundary_nodes(mesh: &Mesh) -> Vec<bool> {
+    let mut on = vec![false; mesh.points.len()];
+    for block in mesh.blocks.iter().filter(|b| b.kind.dim() == 1 && !b.physical_tags.is_empty()) {
+        for n in &block.nodes {
+            if let Some(flag) = on.get_mut(n.0) {
+                *flag = true;
+            }
+        }
+    }
+    on
 }
 
-/// Nodes within `layers` neighbour steps of the seeds.
-fn nodes_within(
-    neighbours: &HashMap<usize, Vec<usize>>,
-    seeds: impl Iterator<Item = usize>,
-    layers: usize,
-) -> HashSet<usize> {
-    let mut seen: HashSet<usize> = seeds.collect();
-    let mut front: Vec<usize> = seen.iter().copied().collect();
+/// Whether each node lies within `layers` neighbour steps of the seeds.
+fn nodes_within(neighbours: &[Vec<usize>], seeds: &[usize], layers: usize) -> Vec<bool> {
+    let mut seen = vec![false; neighbours.len()];
+    for &n in seeds {
+        seen[n] = true;
+    }
+    let mut front: Vec<usize> = seeds.to_vec();
     for _ in 0..layers {
         let mut next = vec![];
         for n in front {
-            for &m in neighbours.get(&n).map(Vec::as_slice).unwrap_or(&[]) {
-                if seen.insert(m) {
+            for &m in &neighbours[n] {
+                if !seen[m] {
+                    seen[m] = true;
                     next.push(m);
                 }
             }

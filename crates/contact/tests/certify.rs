@@ -1,0 +1,98 @@
+//! `certify` accepts an exact answer and rejects each kind of wrong one, on the two-block
+//! problem of `algorithms_agree.rs` (a block pushed onto another through a gap):
+//!
+//! ```text
+//!            ↓ v (prescribed on top)
+//!   ┌────────────────┐  upper block "b_", master contour b_bottom
+//!   └────────────────┘  ← gap 0.01 ± 0.01 (tilted), pushed by 0.015: partly in contact
+//!   ┌────────────────────────┐  lower block "a_", slave contour a_top
+//!   └────────────────────────┘  bottom clamped
+//! ```
+//! The active set's answer is exact to round-off (residuals ~1e-16 of the scales), so it must
+//! pass; each tampered copy violates one condition by 10 % of its scale, five orders above the
+//! tolerance 1e-6, so it must fail with that condition named.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use contact2d_contact::{
+    Check, ContactProblem, ContactStatus, Interface, certify, check_energy_balance, pair_contours,
+    solve_frictionless_active_set,
+};
+use contact2d_element::{Material, PlaneCondition};
+use contact2d_fem::{Component, Model};
+use contact2d_mesh::generate::{MappedGrid, Side, append_prefixed, mapped_grid, rectangle};
+use contact2d_mesh::{CellKind, Contour};
+
+fn two_blocks(kind: CellKind, gap: f64, tilt: f64, ratio: f64, push: f64, na: usize, nb: usize) -> ContactProblem {
+    let mut mesh = rectangle(kind, [0.0, 3.0], [-1.0, 0.0], na, 2);
+    for g in &mut mesh.groups {
+        g.name = format!("a_{}", g.name);
+    }
+    let upper = mapped_grid(
+        &MappedGrid { kind, nx: nb, ny: 2, region: "domain" },
+        |u, v| {
+            let x = 0.5 + 2.0 * u;
+            [x, gap + tilt * (x - 1.5) + 0.8 * v]
+        },
+        |side, _| {
+            Some(
+                match side {
+                    Side::Bottom => "bottom",
+                    Side::Top => "top",
+                    Side::Left => "left",
+                    Side::Right => "right",
+                }
+                .to_string(),
+            )
+        },
+    );
+    append_prefixed(&mut mesh, &upper, "b_");
+    let mut model = Model::new(mesh);
+    model.add_body("a_domain", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
+    model.add_body("b_domain", Material::new(ratio, 0.25, PlaneCondition::Strain).unwrap(), 1.0).unwrap();
+    model.fix("a_bottom", Component::X, 0.0).unwrap();
+    model.fix("a_bottom", Component::Y, 0.0).unwrap();
+    model.fix("b_top", Component::X, 0.0).unwrap();
+    model.fix("b_top", Component::Y, -push).unwrap();
+    let master = Contour::from_group(&model.mesh, "b_bottom").unwrap();
+    let slave = Contour::from_group(&model.mesh, "a_top").unwrap();
+    let pairs = pair_contours(&model, &master, &slave, "a_domain").unwrap();
+    ContactProblem::new(model, pairs).unwrap()
+}
+
+#[test]
+fn exact_answer_passes_and_each_wrong_one_fails_with_its_check() {
+    let problem = two_blocks(CellKind::Quad4, 0.01, 0.01, 2.0, 0.015, 5, 4);
+    let interface = Interface::new(&problem);
+    let exact = solve_frictionless_active_set(&problem, &interface, 1.0, 100);
+    assert_eq!(exact.status, ContactStatus::Converged);
+    certify(&problem, &exact).unwrap();
+    let u = exact.displacement.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    let lambda_max = exact.normal_force.iter().fold(0.0f64, |a, v| a.max(*v));
+    let contact = (0..exact.gap.len()).find(|&k| exact.normal_force[k] > 0.0).unwrap();
+    let open = (0..exact.gap.len()).max_by(|&a, &b| exact.gap[a].total_cmp(&exact.gap[b])).unwrap();
+    assert!(exact.gap[open] > 0.01 * u && exact.normal_force[open] == 0.0, "the tilt leaves a pair open");
+    let fails = |tamper: &dyn Fn(&mut contact2d_contact::ContactSolution), check: Check| {
+        let mut wrong = exact.clone();
+        tamper(&mut wrong);
+        assert_eq!(certify(&problem, &wrong).unwrap_err().check, check);
+    };
+    fails(&|s| s.gap[contact] = -0.1 * u, Check::Penetration);
+    fails(&|s| s.normal_force[open] = -0.1 * lambda_max, Check::Tension);
+    fails(&|s| s.normal_force[open] = 0.1 * lambda_max, Check::Complementarity);
+    fails(&|s| s.displacement[0] = f64::NAN, Check::Finite);
+    fails(&|s| s.normal_force[contact] = f64::INFINITY, Check::Finite);
+}
+
+#[test]
+fn energy_balance_is_exact_for_one_step_and_loose_for_the_trapezoid_rule() {
+    // W = Φ_E + Φ_f exactly.
+    check_energy_balance(1.0, 0.75, 0.25, true).unwrap();
+    // 1e-5 off: a failure when W is exact, round-off-free trapezoid error when not.
+    assert_eq!(check_energy_balance(1.0, 0.75, 0.25 + 1e-5, true).unwrap_err().check, Check::EnergyBalance);
+    check_energy_balance(1.0, 0.75, 0.25 + 1e-5, false).unwrap();
+    // A strain energy 60 times the work (Clarabel at c = 1e6 before issue 15) fails either way.
+    assert_eq!(check_energy_balance(0.84, 53.5, 0.0, false).unwrap_err().check, Check::EnergyBalance);
+    assert_eq!(check_energy_balance(f64::NAN, 1.0, 0.0, false).unwrap_err().check, Check::Finite);
+    // Nothing loaded, nothing stored.
+    check_energy_balance(0.0, 0.0, 0.0, true).unwrap();
+}
