@@ -77,8 +77,10 @@ enum Command {
     /// Run a scene over the Cartesian product of varied values, in parallel; write sweep.csv,
     /// sweep.md and plots of the chosen outputs against the first varied key.
     ///
-    /// A failed combination is a row with its error. The plots draw one line per combination of
-    /// the other varied keys, with a log x axis when the values span more than two decades.
+    /// A failed combination is a row with its error (exit status 1 when every row fails); rows
+    /// are appended to sweep.csv.partial as they finish, so an interrupted sweep keeps them. The
+    /// plots draw one line per combination of the other varied keys, with a log x axis when the
+    /// values span more than two decades. At most 10 000 combinations.
     ///
     /// Examples:
     ///   contact2d sweep scenes/plate_insert_nogap_mu0.toml --vary plate_insert.friction=0,0.1,0.2,0.3
@@ -88,8 +90,9 @@ enum Command {
     Sweep {
         /// The scene file.
         scene: std::path::PathBuf,
-        /// A varied key and its values, e.g. `plate_insert.friction=0,0.1,0.3` (repeatable; the
-        /// first one is the plots' x axis).
+        /// A varied key and its values, e.g. `plate_insert.friction=0,0.1,0.3` (repeatable, each
+        /// key once; the first one is the plots' x axis). Values are split at the commas outside
+        /// brackets: `plate_insert.l_steps=[0.1,0.2],[0.3]` is two values.
         #[arg(long = "vary", value_name = "KEY=V1,V2,...", required = true)]
         vary: Vec<String>,
         /// Override a scene value for every run, as in `run` (repeatable).

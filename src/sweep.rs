@@ -7,7 +7,9 @@
 //! ```
 //! Each run loads the scene afresh with the base `--set` overrides followed by its own values
 //! (`Scene::load(path, overrides)`), so a varied key may be any key `--set` accepts. A run that
-//! fails (bad value, set-up error) is a row with its error, never an abort of the sweep.
+//! fails (bad value, set-up error) is a row with its error, never an abort of the sweep. Before
+//! any run, [`check_variations`] refuses unknown or repeated keys and more than [`MAX_RUNS`]
+//! combinations.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
