@@ -329,7 +329,7 @@ impl Scene {
     /// `docs/user-guide.md`, "Scene keys"):
     ///
     /// * ranges: w, μ, ε, c finite and ≥ 0, ε < 1, E2/E1 finite and > 0, ν in (−1, 0.5),
-    ///   1 ≤ steps ≤ [`MAX_STEPS`], max_iterations ≥ 1, each l in l_steps in (0, 1) and increasing
+    ///   1 ≤ steps ≤ [`MAX_STEPS`], 1 ≤ max_iterations ≤ [`MAX_ITERATIONS`], each l in l_steps in (0, 1) and increasing
     ///   (at most [`MAX_STEPS`] of them); w and c 0 or within [`MAGNITUDE_RANGE`], E2/E1 within
     ///   [`STIFFNESS_RATIO_RANGE`], μ ≤ [`MAX_FRICTION`]; no control character in the name;
     /// * contradictions: c > 0 with ε = 0 (a neat-fit mesh has no room for a clearance),
@@ -408,8 +408,11 @@ impl Scene {
         if !(1..=MAX_STEPS).contains(&p.steps) {
             return Err(fail("plate_insert.steps", format!("{} must lie in 1 ..= {MAX_STEPS}", p.steps)));
         }
-        if self.solver.max_iterations == 0 {
-            return Err(fail("solver.max_iterations", "must be at least 1".into()));
+        if !(1..=MAX_ITERATIONS).contains(&self.solver.max_iterations) {
+            return Err(fail(
+                "solver.max_iterations",
+                format!("{} must lie in 1 ..= {MAX_ITERATIONS}", self.solver.max_iterations),
+            ));
         }
         if p.clearance > 0.0 && p.eps == 0.0 {
             return Err(fail(
@@ -583,6 +586,11 @@ impl Scene {
 /// algorithm with placed zone ends keeps a whole problem per step (about 2 kB per node and step),
 /// which [`crate::run`] bounds further by [`crate::run::MAX_HISTORY_BYTES`].
 pub const MAX_STEPS: usize = 1000;
+
+/// The largest iteration limit a scene may set: each iteration of the active set solves the
+/// condensed interface system once (milliseconds on the bundled meshes), so the limit bounds a
+/// step that cycles to minutes, not days.
+pub const MAX_ITERATIONS: usize = 10_000;
 
 /// The magnitudes of the load w and the clearance c that are accepted besides 0: quantities
 /// scale with their square (energies ∝ w², c²), which stays within f64's normal range
@@ -764,6 +772,7 @@ algorithm = "active_set"
             ("plate_insert.load=1e-310", "plate_insert.load"),
             ("plate_insert.friction=1e308", "plate_insert.friction"),
             ("plate_insert.steps=1001", "plate_insert.steps"),
+            ("solver.max_iterations=10001", "solver.max_iterations"),
             ("name=\"a\\u0000b\"", "name"),
             ("name=\"tab\\there\"", "name"),
         ] {
