@@ -49,6 +49,17 @@ pub enum InputFileError {
     },
 }
 
+impl InputFileError {
+    /// Why the file is refused, without its path (for messages that name the file already).
+    pub fn reason(&self) -> String {
+        match self {
+            InputFileError::NotRegular { kind, .. } => format!("not a regular file ({kind})"),
+            InputFileError::TooLarge { size, limit, .. } => format!("{size} bytes exceed the limit of {limit} bytes"),
+            InputFileError::Io { source, .. } => source.to_string(),
+        }
+    }
+}
+
 /// Checks that `path` is a regular file (symbolic links followed) of at most `limit` bytes;
 /// returns its size. Nothing is read.
 ///

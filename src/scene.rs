@@ -41,6 +41,12 @@ use contact2d_element::PlaneCondition;
 
 use crate::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
 
+mod limits;
+mod overrides;
+
+pub use limits::{MAGNITUDE_RANGE, MAX_FRICTION, MAX_ITERATIONS, MAX_STEPS, SCENE_KEYS, STIFFNESS_RATIO_RANGE};
+use overrides::apply_override;
+
 /// Errors reading a scene.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
@@ -266,7 +272,7 @@ impl Scene {
         let bytes =
             crate::input_file::read_input_file(path, crate::input_file::MAX_SCENE_BYTES).map_err(|e| match e {
                 crate::input_file::InputFileError::Io { source, .. } => SceneError::Io { path: shown.clone(), source },
-                other => SceneError::Unreadable { path: shown.clone(), reason: unreadable_reason(&other) },
+                other => SceneError::Unreadable { path: shown.clone(), reason: other.reason() },
             })?;
         let text = String::from_utf8(bytes).map_err(|e| SceneError::Invalid {
             path: shown.clone(),
@@ -349,39 +355,10 @@ impl Scene {
         let non_negative = |key: &str, v: f64| {
             if v.is_finite() && v >= 0.0 { Ok(()) } else { Err(fail(key, format!("{v} must be finite and ≥ 0"))) }
         };
-        if let Some(c) = self.name.chars().find(|c| c.is_control()) {
-            return Err(fail(
-                "name",
-                format!(
-                    "contains the control character U+{:04X}; it would corrupt every figure and table",
-                    u32::from(c)
-                ),
-            ));
-        }
         non_negative("plate_insert.load", p.load)?;
         non_negative("plate_insert.friction", p.friction)?;
         non_negative("plate_insert.eps", p.eps)?;
         non_negative("plate_insert.clearance", p.clearance)?;
-        for (key, v) in [("plate_insert.load", p.load), ("plate_insert.clearance", p.clearance)] {
-            let (lo, hi) = MAGNITUDE_RANGE;
-            if v != 0.0 && !(lo..=hi).contains(&v) {
-                return Err(fail(
-                    key,
-                    format!(
-                        "{v:e} is out of the representable range: 0 or {lo:e} ..= {hi:e} (energies scale with its square)"
-                    ),
-                ));
-            }
-        }
-        if p.friction > MAX_FRICTION {
-            return Err(fail(
-                "plate_insert.friction",
-                format!(
-                    "μ = {:e} is beyond {MAX_FRICTION} (every pair sticks long before; the cone test μλ loses all digits)",
-                    p.friction
-                ),
-            ));
-        }
         if p.eps >= 1.0 {
             return Err(fail("plate_insert.eps", format!("{} must be < 1 (the insert radius is 1 − ε)", p.eps)));
         }
@@ -391,17 +368,7 @@ impl Scene {
                 format!("E2/E1 = {} must be finite and > 0", p.stiffness_ratio),
             ));
         }
-        let (lo, hi) = STIFFNESS_RATIO_RANGE;
-        if !(lo..=hi).contains(&p.stiffness_ratio) {
-            return Err(fail(
-                "plate_insert.stiffness_ratio",
-                format!(
-                    "E2/E1 = {:e} is out of the solvable range {lo:e} ..= {hi:e} (the stiffness matrix's condition \
-                     number grows with the ratio; beyond it the softer body is round-off)",
-                    p.stiffness_ratio
-                ),
-            ));
-        }
+        limits::validate_magnitudes(self)?;
         if !(p.poissons_ratio > -1.0 && p.poissons_ratio < 0.5) {
             return Err(fail("plate_insert.poissons_ratio", format!("ν = {} must lie in (−1, 0.5)", p.poissons_ratio)));
         }
@@ -568,7 +535,7 @@ impl Scene {
             Err(e) => Err(SceneError::Value {
                 path: self.file.display().to_string(),
                 key: "plate_insert.mesh".into(),
-                reason: format!("cannot read {}: {}", path.display(), unreadable_reason(&e)),
+                reason: format!("cannot read {}: {}", path.display(), e.reason()),
             }),
         }
     }
@@ -576,65 +543,6 @@ impl Scene {
     /// The mesh path resolved against the scene file's directory.
     pub fn mesh_path(&self) -> PathBuf {
         self.base_dir.join(&self.plate_insert.mesh)
-    }
-}
-
-/// The largest number of load steps a scene may ask for (`steps` or the length of `l_steps`).
-///
-/// Every step keeps its solution in memory and writes one VTU file: with the active set about
-/// 20 bytes per mesh node and step (1 GB for 1000 steps of the N = 128 mesh); the Boussinesq
-/// algorithm with placed zone ends keeps a whole problem per step (about 2 kB per node and step),
-/// which [`crate::run`] bounds further by [`crate::run::MAX_HISTORY_BYTES`].
-pub const MAX_STEPS: usize = 1000;
-
-/// The largest iteration limit a scene may set: each iteration of the active set solves the
-/// condensed interface system once (milliseconds on the bundled meshes), so the limit bounds a
-/// step that cycles to minutes, not days.
-pub const MAX_ITERATIONS: usize = 10_000;
-
-/// The magnitudes of the load w and the clearance c that are accepted besides 0: quantities
-/// scale with their square (energies ∝ w², c²), which stays within f64's normal range
-/// (2.2e-308 ..= 1.8e308) only for magnitudes within 1e-100 ..= 1e100.
-pub const MAGNITUDE_RANGE: (f64, f64) = (1e-100, 1e100);
-
-/// The accepted stiffness ratios E2/E1: the assembled stiffness's condition number grows in
-/// proportion to max(E2/E1, E1/E2); beyond 1e8 it passes 1e8 × the mesh's own, and the
-/// softer body's stiffness drowns in the round-off (1e-16 relative) of the stiffer one.
-pub const STIFFNESS_RATIO_RANGE: (f64, f64) = (1e-8, 1e8);
-
-/// The largest friction coefficient accepted.
-pub const MAX_FRICTION: f64 = 1000.0;
-
-/// Every key a scene (and `--set`) accepts, as a dotted path.
-pub const SCENE_KEYS: [&str; 19] = [
-    "name",
-    "description",
-    "plate_insert.mesh",
-    "plate_insert.variant",
-    "plate_insert.stiffness_ratio",
-    "plate_insert.rigid_insert",
-    "plate_insert.poissons_ratio",
-    "plate_insert.plane_condition",
-    "plate_insert.eps",
-    "plate_insert.clearance",
-    "plate_insert.gap",
-    "plate_insert.friction",
-    "plate_insert.load",
-    "plate_insert.steps",
-    "plate_insert.l_steps",
-    "plate_insert.pairs",
-    "solver.algorithm",
-    "solver.max_iterations",
-    "solver.place_zone_ends",
-];
-
-/// Why a file is refused, without its path (the scene error names it).
-fn unreadable_reason(e: &crate::input_file::InputFileError) -> String {
-    use crate::input_file::InputFileError;
-    match e {
-        InputFileError::NotRegular { kind, .. } => format!("not a regular file ({kind})"),
-        InputFileError::TooLarge { size, limit, .. } => format!("{size} bytes exceed the limit of {limit} bytes"),
-        other => other.to_string(),
     }
 }
 
@@ -651,52 +559,6 @@ fn line_of(text: &str, e: &toml::de::Error) -> String {
         let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
         format!("line {line}, column {column}: ")
     })
-}
-
-/// A value that is spelled as a number must be one TOML reads as a finite number: `.3` or
-/// `1e400` would otherwise fall back to a string and fail later as a wrong type.
-fn check_number_spelling(raw: &str, parsed: Option<&toml::Value>) -> Result<(), String> {
-    let t = raw.trim();
-    let numeric = t.starts_with(|c: char| c.is_ascii_digit() || "+-.".contains(c))
-        && t.chars().all(|c| c.is_ascii_digit() || "+-._eE".contains(c))
-        && t.chars().any(|c| c.is_ascii_digit());
-    match parsed {
-        Some(toml::Value::Float(v)) if !v.is_finite() && numeric => {
-            Err(format!("the number {t} is out of the range of a 64-bit float (|x| ≤ 1.8e308)"))
-        }
-        Some(_) => Ok(()),
-        None if !numeric => Ok(()),
-        None => match t.replace('_', "").parse::<f64>() {
-            Ok(v) if !v.is_finite() => {
-                Err(format!("the number {t} is out of the range of a 64-bit float (|x| ≤ 1.8e308)"))
-            }
-            Ok(v) => Err(format!("malformed number {t:?} (TOML needs a digit on both sides of the point: {v:?})")),
-            Err(_) => Err(format!("malformed number {t:?}")),
-        },
-    }
-}
-
-/// Sets `a.b.c = value` in a TOML tree; the key must exist (unknown keys are errors).
-fn apply_override(root: &mut toml::Value, assignment: &str) -> Result<(), SceneError> {
-    let err = |reason: String| SceneError::Override { assignment: assignment.to_string(), reason };
-    let (key, raw) = assignment.split_once('=').ok_or_else(|| err("expected key.path=value".into()))?;
-    let parsed = toml::from_str::<toml::Table>(&format!("v = {raw}")).ok().and_then(|mut t| t.remove("v"));
-    check_number_spelling(raw, parsed.as_ref()).map_err(err)?;
-    let parsed = parsed.unwrap_or_else(|| toml::Value::String(raw.to_string()));
-    let mut node = root;
-    let parts: Vec<&str> = key.trim().split('.').collect();
-    for (i, part) in parts.iter().enumerate() {
-        let table = node.as_table_mut().ok_or_else(|| err(format!("\"{}\" is not a table", parts[..i].join("."))))?;
-        if i + 1 == parts.len() {
-            // A key the file leaves at its default may be set; whether it exists at all is
-            // decided when the scene is checked (unknown keys are errors there).
-            table.insert((*part).to_string(), parsed);
-            return Ok(());
-        }
-        node =
-            table.get_mut(*part).ok_or_else(|| err(format!("no table \"{}\" in the scene", parts[..=i].join("."))))?;
-    }
-    Err(err("empty key".into()))
 }
 
 #[cfg(test)]
@@ -748,54 +610,5 @@ algorithm = "active_set"
         assert!(matches!(Scene::load(&path, &["noequals".into()]), Err(SceneError::Override { .. })));
         assert!(matches!(Scene::load(Path::new("/nonexistent.toml"), &[]), Err(SceneError::Io { .. })));
         assert!(matches!(Scene::load(Path::new("/dev/zero"), &[]), Err(SceneError::Unreadable { .. })));
-    }
-
-    #[test]
-    fn numbers_that_toml_cannot_read_are_named_as_numbers() {
-        let path = write(SCENE);
-        for (raw, want) in [(".3", "malformed number"), ("1e400", "out of the range"), ("-1e999", "out of the range")] {
-            let e = Scene::load(&path, &[format!("plate_insert.friction={raw}")]).unwrap_err().to_string();
-            assert!(e.contains(want) && e.contains("plate_insert.friction"), "{raw}: {e}");
-        }
-        // Words and paths stay strings.
-        assert!(Scene::load(&path, &["plate_insert.mesh=other.msh".into()]).is_ok());
-        assert_eq!(Scene::load(&path, &["name=1e5x".into()]).unwrap().name, "1e5x", "not a number: a string");
-    }
-
-    #[test]
-    fn absurd_magnitudes_and_control_characters_name_their_key() {
-        let path = write(SCENE);
-        for (set, key) in [
-            ("plate_insert.stiffness_ratio=1e308", "plate_insert.stiffness_ratio"),
-            ("plate_insert.stiffness_ratio=1e-9", "plate_insert.stiffness_ratio"),
-            ("plate_insert.load=1e101", "plate_insert.load"),
-            ("plate_insert.load=1e-310", "plate_insert.load"),
-            ("plate_insert.friction=1e308", "plate_insert.friction"),
-            ("plate_insert.steps=1001", "plate_insert.steps"),
-            ("solver.max_iterations=10001", "solver.max_iterations"),
-            ("name=\"a\\u0000b\"", "name"),
-            ("name=\"tab\\there\"", "name"),
-        ] {
-            let e = Scene::load(&path, &[set.into()]).unwrap_err();
-            assert!(matches!(&e, SceneError::Value { key: k, .. } if k == key), "{set}: {e}");
-        }
-        assert!(Scene::load(&path, &["plate_insert.stiffness_ratio=1e8".into()]).is_ok());
-    }
-
-    /// SCENE_KEYS is every key serde accepts: each is settable, and serde's own list of expected
-    /// fields (in its unknown-field message) names no other.
-    #[test]
-    fn scene_keys_are_complete() {
-        let path = write(SCENE);
-        for table in ["", "plate_insert.", "solver."] {
-            let e = Scene::load(&path, &[format!("{table}zzz_unknown=1")]).unwrap_err().to_string();
-            let expected = e.split("expected one of").nth(1).unwrap_or_default();
-            assert!(!expected.is_empty(), "serde lists the expected fields: {e}");
-            for field in expected.split('`').skip(1).step_by(2) {
-                let key = format!("{table}{field}");
-                let known = SCENE_KEYS.contains(&key.as_str()) || ["plate_insert", "solver"].contains(&field);
-                assert!(known, "{key} missing from SCENE_KEYS");
-            }
-        }
     }
 }
