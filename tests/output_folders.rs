@@ -7,6 +7,7 @@
 //! fail fast  an --out that cannot be created fails before the solve (no report on stdout)
 //! killed     SIGTERM at any moment: either no summary.json, or one listing exactly the
 //!            (non-hidden) files present
+//! undrawable a non-finite field: its figures skipped with a note, the rest written whole
 //! ```
 //! The scene is the clearance history on the N = 16 mesh (three steps, well under a second).
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -168,6 +169,29 @@ fn a_run_killed_at_any_moment_leaves_a_whole_folder_or_no_summary() {
     }
     // The next run cleans up whatever a killed one left (stale lock, temporary files).
     assert!(run(&dir, &[]).status.success());
+    assert_eq!(listed(&dir).unwrap(), names(&dir));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn figures_that_cannot_be_drawn_are_skipped_with_a_note() {
+    use contact2d::scene::Scene;
+    let scene = Scene::load(Path::new(SCENE), &[MESH.to_string()]).unwrap();
+    let mut outcome = contact2d::run::solve_scene(&scene).unwrap();
+    // A non-finite displacement (what w = 1e308 produced): the mesh figure and the von Mises
+    // field cannot be drawn; the run's other files are still written, whole.
+    outcome.steps.last_mut().unwrap().solution.displacement[0] = f64::NAN;
+    let dir = fresh("undrawable");
+    let written = contact2d::output::write_outputs(&dir, &scene, &outcome).unwrap();
+    assert_eq!(written.last().unwrap().file_name().unwrap(), "summary.json");
+    assert!(!dir.join("mesh.png").exists() && !dir.join("von_mises.svg").exists());
+    let summary: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
+    let notes: Vec<&str> = summary["notes"].as_array().unwrap().iter().map(|n| n.as_str().unwrap()).collect();
+    for figure in ["mesh.png", "mesh.svg", "von_mises.png", "von_mises.svg"] {
+        assert!(notes.iter().any(|n| n.starts_with(&format!("{figure} not drawn"))), "{figure}: {notes:?}");
+    }
+    assert!(std::fs::read_to_string(dir.join("README.txt")).unwrap().contains("Not drawn"));
     assert_eq!(listed(&dir).unwrap(), names(&dir));
     std::fs::remove_dir_all(&dir).unwrap();
 }

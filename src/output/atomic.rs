@@ -17,7 +17,8 @@
 //! A folder therefore holds either a manifest and exactly the files it lists, or no manifest
 //! (a run that failed or was killed while writing). Dropping an [`OutputDir`] without
 //! [`OutputDir::finish`] removes the files this run wrote (except streamed `.partial` files,
-//! which keep what was finished) and the lock. Nothing here knows what the files contain.
+//! which keep what was finished), those the previous manifest listed if writing had started,
+//! and the lock. Nothing here knows what the files contain.
 //!
 //! A manifest is a JSON object with `"written_by"` (starting with `contact2d`) and `"files"` (the
 //! file names of the run, the manifest last); [`manifest_json`] adds both to any JSON object.
@@ -228,9 +229,14 @@ impl Drop for OutputDir {
         if self.finished {
             return;
         }
-        // A failed run leaves no half folder: its files go (streamed .partial files stay).
-        for name in &self.written {
-            let _ = std::fs::remove_file(self.dir.join(name));
+        // A failed run leaves no half folder: its files go (streamed .partial files stay), and
+        // once writing has started (the previous manifest removed) so do the previous run's.
+        let previous = if self.manifest_removed { self.previous.as_slice() } else { &[] };
+        for name in self.written.iter().chain(previous) {
+            let path = self.dir.join(name);
+            if std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+                let _ = std::fs::remove_file(path);
+            }
         }
         let _ = std::fs::remove_file(&self.lock);
     }
@@ -436,8 +442,9 @@ mod tests {
         assert!(failed.is_err());
         assert_eq!(std::fs::read_to_string(dir.join("a.txt")).unwrap(), "old", "the old file is untouched");
         drop(out);
-        // The run's own files and the lock are gone, and no manifest vouches for the old file.
-        assert_eq!(names(&dir), ["a.txt"]);
+        // The run's own files, the previous run's (its manifest already gone) and the lock are
+        // gone: the folder is absent rather than half.
+        assert!(names(&dir).is_empty(), "{:?}", names(&dir));
         std::fs::remove_dir_all(&dir).unwrap();
     }
 
