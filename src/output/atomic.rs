@@ -100,21 +100,21 @@ impl OutputDir {
 
     /// Runs `write` on a temporary path in the folder (same extension as `name`), then syncs and
     /// renames it onto `name`; returns the final path. On any error the temporary file is removed
-    /// and `name` is left as it was.
+    /// and `name` is left as it was; the error names `name`'s final path.
     ///
     /// # Errors
     /// `write`'s error, or [`OutputError::Io`] when syncing or renaming fails.
-    pub fn write_with<E: From<OutputError>>(
+    pub fn write_with(
         &mut self,
         name: &str,
-        write: impl FnOnce(&Path) -> Result<(), E>,
-    ) -> Result<PathBuf, E> {
+        write: impl FnOnce(&Path) -> Result<(), OutputError>,
+    ) -> Result<PathBuf, OutputError> {
         let target = self.target(name)?;
         self.remove_old_manifest()?;
         let tmp = self.dir.join(format!("{TEMP_PREFIX}{}-{name}", std::process::id()));
-        if let Err(e) = write(&tmp).and_then(|()| Ok(commit(&tmp, &target)?)) {
+        if let Err(e) = write(&tmp).and_then(|()| commit(&tmp, &target)) {
             let _ = std::fs::remove_file(&tmp);
-            return Err(e);
+            return Err(e.at_path(&tmp, &target));
         }
         self.record(name);
         Ok(target)
@@ -439,7 +439,8 @@ mod tests {
             std::fs::write(tmp, "half").unwrap();
             Err(OutputError::io(tmp, std::io::Error::other("disk full")))
         });
-        assert!(failed.is_err());
+        let message = failed.unwrap_err().to_string();
+        assert!(message.contains("a.txt") && !message.contains(TEMP_PREFIX), "names the file: {message}");
         assert_eq!(std::fs::read_to_string(dir.join("a.txt")).unwrap(), "old", "the old file is untouched");
         drop(out);
         // The run's own files, the previous run's (its manifest already gone) and the lock are

@@ -93,6 +93,25 @@ impl OutputError {
         Self::Io { path: path.into(), source }
     }
 
+    /// The same error with the file `from` (a temporary name) replaced by `to` where it names it.
+    #[must_use]
+    pub fn at_path(mut self, from: &std::path::Path, to: &std::path::Path) -> Self {
+        match &mut self {
+            Self::UnsupportedFormat { path, .. }
+            | Self::Draw { path, .. }
+            | Self::Io { path, .. }
+            | Self::Serialize { path, .. }
+            | Self::MissingData { path, .. }
+            | Self::Undrawable { path, .. }
+                if path == from =>
+            {
+                *path = to.to_path_buf();
+            }
+            _ => {}
+        }
+        self
+    }
+
     /// An [`OutputError::Draw`] for `path` from any displayable plotting error.
     pub fn draw(path: impl Into<PathBuf>, reason: impl std::fmt::Display) -> Self {
         Self::Draw { path: path.into(), reason: reason.to_string() }
