@@ -195,3 +195,16 @@ fn figures_that_cannot_be_drawn_are_skipped_with_a_note() {
     assert_eq!(listed(&dir).unwrap(), names(&dir));
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn a_run_that_fails_before_writing_leaves_the_previous_folder_untouched() {
+    let dir = fresh("failed_solve");
+    assert!(run(&dir, &[]).status.success());
+    let before = std::fs::read(dir.join("summary.json")).unwrap();
+    // A mesh without the flagship's groups: the scene loads, the set-up after the lock fails.
+    let out = run(&dir, &["--set", "plate_insert.mesh=\"../meshes/fixtures/plate_hole_v41_ascii.msh\""]);
+    assert_eq!(out.status.code(), Some(1), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(std::fs::read(dir.join("summary.json")).unwrap(), before, "the previous summary stands");
+    assert_eq!(listed(&dir).unwrap(), names(&dir), "and still lists exactly the files (no lock left)");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
