@@ -15,6 +15,7 @@ pub use contact2d_mesh as mesh;
 pub mod bench;
 pub mod doc_sections;
 pub mod generic;
+pub mod input_file;
 pub mod mesh_summary;
 pub mod output;
 pub mod plate_insert;

@@ -77,8 +77,10 @@ enum Command {
     /// Run a scene over the Cartesian product of varied values, in parallel; write sweep.csv,
     /// sweep.md and plots of the chosen outputs against the first varied key.
     ///
-    /// A failed combination is a row with its error. The plots draw one line per combination of
-    /// the other varied keys, with a log x axis when the values span more than two decades.
+    /// A failed combination is a row with its error (exit status 1 when every row fails); rows
+    /// are appended to sweep.csv.partial as they finish, so an interrupted sweep keeps them. The
+    /// plots draw one line per combination of the other varied keys, with a log x axis when the
+    /// values span more than two decades. At most 10 000 combinations.
     ///
     /// Examples:
     ///   contact2d sweep scenes/plate_insert_nogap_mu0.toml --vary plate_insert.friction=0,0.1,0.2,0.3
@@ -88,8 +90,9 @@ enum Command {
     Sweep {
         /// The scene file.
         scene: std::path::PathBuf,
-        /// A varied key and its values, e.g. `plate_insert.friction=0,0.1,0.3` (repeatable; the
-        /// first one is the plots' x axis).
+        /// A varied key and its values, e.g. `plate_insert.friction=0,0.1,0.3` (repeatable, each
+        /// key once; the first one is the plots' x axis). Values are split at the commas outside
+        /// brackets: `plate_insert.l_steps=[0.1,0.2],[0.3]` is two values.
         #[arg(long = "vary", value_name = "KEY=V1,V2,...", required = true)]
         vary: Vec<String>,
         /// Override a scene value for every run, as in `run` (repeatable).
@@ -125,6 +128,13 @@ enum Command {
 fn run(cli: Cli) -> anyhow::Result<()> {
     match cli.command {
         Command::Mesh { file, json } => {
+            // A device or FIFO would never end or block: refused before reading.
+            contact2d::input_file::check_input_file(&file, contact2d::input_file::MAX_MESH_BYTES).map_err(
+                |e| match e {
+                    contact2d::input_file::InputFileError::Io { .. } => anyhow::anyhow!("cannot read {e}"),
+                    other => anyhow::anyhow!(other),
+                },
+            )?;
             // An I/O error names the path already; a format error gets it prefixed.
             let mesh = contact2d::mesh::read_msh(&file).map_err(|e| match e {
                 contact2d::mesh::MeshError::Io { .. } => anyhow::anyhow!(e),
@@ -139,10 +149,17 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             }
         }
         Command::Run { scene, set, json, out, quiet, verbose } => {
-            if std::fs::read_to_string(&scene).is_ok_and(|t| contact2d::generic::scene::is_generic(&t)) {
+            if contact2d::generic::scene::is_generic(&contact2d::scene::read_scene_text(&scene)?) {
                 return run_generic(&scene, &set, json, out.as_deref(), quiet, verbose);
             }
             let scene = contact2d::scene::Scene::load(&scene, &set)?;
+            scene.check_mesh_file()?;
+            // The output folder is checked and locked before the work, so that a bad --out fails
+            // at once and no other run writes there meanwhile.
+            let folder = out
+                .as_deref()
+                .map(|dir| contact2d::output::OutputDir::prepare(dir, Some(contact2d::output::SUMMARY_FILE)))
+                .transpose()?;
             // A mesh that cannot be read is reported by the run below, with the scene.
             if let Ok(mesh) = contact2d::mesh::read_msh(scene.mesh_path()) {
                 scene.check_mesh_geometry(&mesh)?;
@@ -163,14 +180,14 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             } else {
                 print_report(&mut stdout, report)?;
             }
-            if let Some(dir) = out {
-                let written = contact2d::output::write_outputs(&dir, &scene, &outcome)?;
+            if let Some(folder) = folder {
+                let written = contact2d::output::write_outputs_into(folder, &scene, &outcome)?;
                 // With --json, stdout stays one JSON object; the file list goes to stderr.
                 let list = |p: &std::path::PathBuf| format!("  {}", p.display());
                 let lines: Vec<String> = written.iter().map(list).collect();
                 let text = format!("wrote {} files:\n{}", written.len(), lines.join("\n"));
                 if json {
-                    eprintln!("{text}");
+                    print_stderr(&text);
                 } else {
                     writeln!(stdout, "{text}")?;
                 }
@@ -193,6 +210,9 @@ fn run_generic(
     verbose: bool,
 ) -> anyhow::Result<()> {
     let scene = contact2d::generic::load_scene(path, set)?;
+    // The output folder is checked and locked before the work.
+    let folder =
+        out.map(|dir| contact2d::output::OutputDir::prepare(dir, Some(contact2d::output::SUMMARY_FILE))).transpose()?;
     let mut bar = StepBar::new(quiet || json);
     let outcome = contact2d::generic::solve_generic(&scene, &mut |done, total| {
         use contact2d::run::Progress;
@@ -202,7 +222,13 @@ fn run_generic(
     if verbose {
         for (i, step) in outcome.history.steps.iter().enumerate() {
             let s = &step.solution;
-            eprintln!("step {}: factors {:?}, {:?} after {} iterations", i + 1, step.factors, s.status, s.iterations);
+            print_stderr(&format!(
+                "step {}: factors {:?}, {:?} after {} iterations",
+                i + 1,
+                step.factors,
+                s.status,
+                s.iterations
+            ));
         }
     }
     let report = &outcome.report;
@@ -212,12 +238,12 @@ fn run_generic(
     } else {
         print_generic(&mut stdout, report)?;
     }
-    if let Some(dir) = out {
-        let written = contact2d::generic::outputs::write_generic_outputs(dir, &outcome)?;
+    if let Some(folder) = folder {
+        let written = contact2d::generic::outputs::write_generic_outputs_into(folder, &outcome)?;
         let lines: Vec<String> = written.iter().map(|p| format!("  {}", p.display())).collect();
         let text = format!("wrote {} files:\n{}", written.len(), lines.join("\n"));
         if json {
-            eprintln!("{text}");
+            print_stderr(&text);
         } else {
             writeln!(stdout, "{text}")?;
         }
@@ -280,34 +306,61 @@ fn sweep(
     out: Option<std::path::PathBuf>,
     quiet: bool,
 ) -> anyhow::Result<()> {
-    use contact2d::sweep::{Quantity, Variation, combinations, run_sweep, sweep_markdown, write_sweep};
+    use contact2d::sweep::{
+        Quantity, Variation, check_variations, run_sweep_with, sweep_csv_header, sweep_csv_row, sweep_markdown,
+        write_sweep_into,
+    };
     use std::io::IsTerminal;
     let variations = vary.iter().map(|v| Variation::parse(v)).collect::<Result<Vec<_>, _>>()?;
+    // Unknown or repeated keys and oversized grids fail before any run.
+    let runs = check_variations(&variations)?;
     let plots = plot.split(',').filter(|p| !p.trim().is_empty()).map(Quantity::parse).collect::<Result<Vec<_>, _>>()?;
     // Fail early on a scene that does not load at all (each combination is checked in its run).
     let base = contact2d::scene::Scene::load(scene, set)?;
     let stem = scene.file_stem().map_or("scene".into(), |s| s.to_string_lossy().into_owned());
     let dir = out.unwrap_or_else(|| std::path::PathBuf::from("out").join(format!("sweep_{stem}")));
+    let mut folder = contact2d::output::OutputDir::prepare(&dir, None)?;
+    // Rows go to sweep.csv.partial as they finish (flushed), so an interrupted sweep keeps them.
+    let mut partial = folder.stream("sweep.csv")?;
+    partial.append(&sweep_csv_header(&variations))?;
+    let partial = std::sync::Mutex::new(partial);
     let bar = if quiet || !std::io::stdout().is_terminal() {
         indicatif::ProgressBar::hidden()
     } else {
-        indicatif::ProgressBar::new(combinations(&variations).len() as u64)
+        indicatif::ProgressBar::new(runs as u64)
     };
     bar.set_style(
         indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} runs, {elapsed} elapsed, ETA {eta}")
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
-    let rows = run_sweep(scene, &variations, set, || bar.inc(1));
+    let append_error = std::sync::Mutex::new(None);
+    let rows = run_sweep_with(scene, &variations, set, |row| {
+        if let Ok(mut file) = partial.lock()
+            && let Err(e) = file.append(&sweep_csv_row(row))
+            && let Ok(mut slot) = append_error.lock()
+        {
+            slot.get_or_insert(e);
+        }
+        bar.inc(1);
+    });
     bar.finish_and_clear();
-    let written = write_sweep(&dir, &base.name, &variations, &rows, &plots)?;
+    if let Some(e) = append_error.into_inner().ok().flatten() {
+        return Err(e.into());
+    }
+    // The final sweep.csv lists the rows in combination order; writing it removes the partial.
+    drop(partial);
+    let written = write_sweep_into(folder, &base.name, &variations, &rows, &plots)?;
     let mut stdout = std::io::stdout().lock();
     if !quiet {
         write!(stdout, "{}", sweep_markdown(&variations, &rows))?;
     }
-    let failed = rows.iter().filter(|r| r.result.is_err()).count();
-    writeln!(stdout, "{} runs ({failed} failed); wrote {} files:", rows.len(), written.len())?;
+    let failed: Vec<&String> = rows.iter().filter_map(|r| r.result.as_ref().err()).collect();
+    writeln!(stdout, "{} runs ({} failed); wrote {} files:", rows.len(), failed.len(), written.len())?;
     for p in &written {
         writeln!(stdout, "  {}", p.display())?;
+    }
+    if !rows.is_empty() && failed.len() == rows.len() {
+        anyhow::bail!("every one of the {} runs failed; the first: {}", rows.len(), failed[0]);
     }
     Ok(())
 }
@@ -357,17 +410,50 @@ fn print_report(out: &mut impl Write, r: &contact2d::run::RunReport) -> std::io:
 }
 /// The iteration log of every step (`run -v`), on stderr so that `--json` stays parseable.
 fn print_iterations(outcome: &contact2d::run::RunOutcome) {
+    let mut text = String::new();
     for (i, step) in outcome.steps.iter().enumerate() {
+        use std::fmt::Write as _;
         let s = &step.solution;
-        eprintln!("step {}: w = {:.6}, {:?} after {} iterations", i + 1, s.load_factor, s.status, s.iterations);
-        eprintln!("  iter  changed  contact  slipping  residual");
+        let _ = writeln!(
+            text,
+            "step {}: w = {:.6}, {:?} after {} iterations",
+            i + 1,
+            s.load_factor,
+            s.status,
+            s.iterations
+        );
+        let _ = writeln!(text, "  iter  changed  contact  slipping  residual");
         for r in &s.trace {
-            eprintln!(
+            let _ = writeln!(
+                text,
                 "  {:>4}  {:>7}  {:>7}  {:>8}  {:>9.2e}",
                 r.iteration, r.changed, r.in_contact, r.slipping, r.residual
             );
         }
     }
+    print_stderr(text.trim_end());
+}
+
+/// One message on stderr; a closed or full stderr is ignored (there is nowhere left to say it,
+/// and the exit status still tells).
+fn print_stderr(text: &str) {
+    let _ = writeln!(std::io::stderr().lock(), "{text}");
+}
+
+/// The error and its causes on one line, each cause once: a cause whose text the message
+/// already contains (as "{path}: {source}" contains its source) is not repeated.
+fn error_line(e: &anyhow::Error) -> String {
+    let mut line = String::new();
+    for cause in e.chain() {
+        let text = cause.to_string();
+        if !line.contains(&text) {
+            if !line.is_empty() {
+                line.push_str(": ");
+            }
+            line.push_str(&text);
+        }
+    }
+    line.replace('\n', " ")
 }
 
 /// A progress bar over the load steps of a run, drawn only on a terminal.
@@ -411,7 +497,7 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         }
         Err(e) => {
-            eprintln!("error: {e:#}");
+            print_stderr(&format!("error: {}", error_line(&e)));
             ExitCode::FAILURE
         }
     }

@@ -207,6 +207,8 @@ pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<Ru
     if p.steps == 0 {
         return Err(ContactError::InvalidInput("steps must be at least 1".into()));
     }
+    scene.check_mesh_file().map_err(|e| ContactError::InvalidInput(e.to_string()))?;
+    check_history_memory(scene)?;
     // Without clearance every gap is zero (both gap models scale with c), so the solution is
     // linear in w (spec §5.2): solved once at w = 1 and scaled.
     let scaled = p.clearance == 0.0 && p.l_steps.is_empty();
@@ -307,6 +309,39 @@ fn finite(report: RunReport) -> Result<RunReport, ContactError> {
         Some(v) => Err(ContactError::NotFinite(format!("a reported quantity is {v}"))),
         None => Ok(report),
     }
+}
+
+/// The memory a loading history may take, bytes (checked before solving).
+pub const MAX_HISTORY_BYTES: u64 = 4 << 30;
+
+/// Bytes of memory per step of a Boussinesq history with placed zone ends, per byte of the mesh
+/// file: each step keeps its own mesh, model and pairs. Measured 1.6 MB per step on the N = 16
+/// mesh (47.6 kB), i.e. 35 bytes per byte, rounded up.
+pub const PLACED_STEP_BYTES_PER_MESH_BYTE: u64 = 40;
+
+/// Refuses a Boussinesq history with placed zone ends whose steps would together exceed
+/// [`MAX_HISTORY_BYTES`] (estimated from the mesh file's size); the other algorithms keep one
+/// solution vector per step, which [`crate::scene::MAX_STEPS`] bounds.
+fn check_history_memory(scene: &Scene) -> Result<(), ContactError> {
+    let p = &scene.plate_insert;
+    if scene.solver.algorithm != ContactAlgorithm::Boussinesq || !scene.solver.place_zone_ends {
+        return Ok(());
+    }
+    let steps = if p.l_steps.is_empty() { p.steps } else { p.l_steps.len() } as u64;
+    let mesh_bytes = std::fs::metadata(scene.mesh_path()).map_or(0, |m| m.len());
+    let estimate = steps.saturating_mul(mesh_bytes).saturating_mul(PLACED_STEP_BYTES_PER_MESH_BYTE);
+    if estimate > MAX_HISTORY_BYTES {
+        let per_step = (mesh_bytes * PLACED_STEP_BYTES_PER_MESH_BYTE).max(1);
+        return Err(ContactError::InvalidInput(format!(
+            "{steps} steps of the Boussinesq algorithm with placed zone ends on this mesh would need about {} MB \
+             (each step keeps its own mesh); the limit of {} MB allows {} steps here (or set \
+             solver.place_zone_ends = false, or use a coarser mesh)",
+            estimate >> 20,
+            MAX_HISTORY_BYTES >> 20,
+            MAX_HISTORY_BYTES / per_step
+        )));
+    }
+    Ok(())
 }
 
 /// Solved steps from a history with placed zone ends; `scale` multiplies a solution that is

@@ -42,6 +42,12 @@ use contact2d_element::{Formulation, PlaneCondition};
 
 use crate::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
 
+mod limits;
+mod overrides;
+
+pub use limits::{MAGNITUDE_RANGE, MAX_FRICTION, MAX_ITERATIONS, MAX_STEPS, SCENE_KEYS, STIFFNESS_RATIO_RANGE};
+pub(crate) use overrides::apply_override;
+
 /// Errors reading a scene.
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
@@ -83,6 +89,14 @@ pub enum SceneError {
         /// The group at fault.
         group: String,
         /// Where it must lie and the node that does not.
+        reason: String,
+    },
+    /// A file that is refused before reading (not a regular file, or too large).
+    #[error("cannot read scene {path}: {reason}")]
+    Unreadable {
+        /// Path as given.
+        path: String,
+        /// Why.
         reason: String,
     },
     /// A `--set` override that does not parse or names no key.
@@ -283,13 +297,7 @@ impl Scene {
     /// # Errors
     /// [`SceneError`] naming the file, and the key, line or override at fault.
     pub fn load(path: &Path, overrides: &[String]) -> Result<Scene, SceneError> {
-        let shown = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|source| SceneError::Io { path: shown.clone(), source })?;
-        let text = String::from_utf8(bytes).map_err(|e| SceneError::Invalid {
-            path: shown.clone(),
-            reason: format!("not UTF-8 text (invalid byte at offset {})", e.utf8_error().valid_up_to()),
-        })?;
-        Scene::from_toml_str(&text, path, overrides)
+        Scene::from_toml_str(&read_scene_text(path)?, path, overrides)
     }
 
     /// Parses a scene from TOML `text` as if read from the file `path` (named in errors; its
@@ -346,8 +354,9 @@ impl Scene {
     /// `docs/user-guide.md`, "Scene keys"):
     ///
     /// * ranges: w, μ, ε, c finite and ≥ 0, ε < 1, E2/E1 finite and > 0, ν in (−1, 0.5),
-    ///   load 0 or in [1e-100, 1e100] ([`MAX_LOAD`]), friction ≤ [`MAX_FRICTION`],
-    ///   1 ≤ steps ≤ 100 000, max_iterations ≥ 1, each l in l_steps in (0, 1) and increasing;
+    ///   1 ≤ steps ≤ [`MAX_STEPS`], 1 ≤ max_iterations ≤ [`MAX_ITERATIONS`], each l in l_steps in (0, 1) and increasing
+    ///   (at most [`MAX_STEPS`] of them); w and c 0 or within [`MAGNITUDE_RANGE`], E2/E1 within
+    ///   [`STIFFNESS_RATIO_RANGE`], μ ≤ [`MAX_FRICTION`]; no control character in the name;
     /// * contradictions: c > 0 with ε = 0 (a neat-fit mesh has no room for a clearance),
     ///   l_steps with an algorithm other than `boussinesq`, l_steps with steps ≠ 1 or load ≠ 0
     ///   (the loads then follow from l), rigid_insert with stiffness_ratio ≠ 1 (a rigid insert
@@ -367,18 +376,6 @@ impl Scene {
         };
         non_negative("plate_insert.load", p.load)?;
         non_negative("plate_insert.friction", p.friction)?;
-        if p.load > MAX_LOAD || (p.load > 0.0 && p.load < 1.0 / MAX_LOAD) {
-            return Err(fail(
-                "plate_insert.load",
-                format!("{:e} must be 0 or lie in [1e-100, 1e100] (energies go as w²)", p.load),
-            ));
-        }
-        if p.friction > MAX_FRICTION {
-            return Err(fail(
-                "plate_insert.friction",
-                format!("μ = {:e} exceeds {MAX_FRICTION:e} (μλ would overflow)", p.friction),
-            ));
-        }
         non_negative("plate_insert.eps", p.eps)?;
         non_negative("plate_insert.clearance", p.clearance)?;
         if p.eps >= 1.0 {
@@ -390,14 +387,18 @@ impl Scene {
                 format!("E2/E1 = {} must be finite and > 0", p.stiffness_ratio),
             ));
         }
+        limits::validate_magnitudes(self)?;
         if !(p.poissons_ratio > -1.0 && p.poissons_ratio < 0.5) {
             return Err(fail("plate_insert.poissons_ratio", format!("ν = {} must lie in (−1, 0.5)", p.poissons_ratio)));
         }
         if !(1..=MAX_STEPS).contains(&p.steps) {
             return Err(fail("plate_insert.steps", format!("{} must lie in 1 ..= {MAX_STEPS}", p.steps)));
         }
-        if self.solver.max_iterations == 0 {
-            return Err(fail("solver.max_iterations", "must be at least 1".into()));
+        if !(1..=MAX_ITERATIONS).contains(&self.solver.max_iterations) {
+            return Err(fail(
+                "solver.max_iterations",
+                format!("{} must lie in 1 ..= {MAX_ITERATIONS}", self.solver.max_iterations),
+            ));
         }
         if p.clearance > 0.0 && p.eps == 0.0 {
             return Err(fail(
@@ -443,6 +444,12 @@ impl Scene {
             return Err(fail(
                 "plate_insert.load",
                 "must be 0 with l_steps (the load of each step follows from l)".into(),
+            ));
+        }
+        if p.l_steps.len() > MAX_STEPS {
+            return Err(fail(
+                "plate_insert.l_steps",
+                format!("{} steps exceed the limit of {MAX_STEPS}", p.l_steps.len()),
             ));
         }
         let mut previous = 0.0;
@@ -493,22 +500,48 @@ impl Scene {
         }
     }
 
+    /// Checks that the mesh path names a regular file within
+    /// [`crate::input_file::MAX_MESH_BYTES`] before anything reads it (a device such as
+    /// `/dev/zero` never ends, a FIFO blocks). A missing file is left to the reader, which says so.
+    ///
+    /// # Errors
+    /// [`SceneError::Value`] on `plate_insert.mesh`.
+    pub fn check_mesh_file(&self) -> Result<(), SceneError> {
+        use crate::input_file::{InputFileError, MAX_MESH_BYTES, check_input_file};
+        let path = self.mesh_path();
+        match check_input_file(&path, MAX_MESH_BYTES) {
+            Ok(_) | Err(InputFileError::Io { .. }) => Ok(()),
+            Err(e) => Err(SceneError::Value {
+                path: self.file.display().to_string(),
+                key: "plate_insert.mesh".into(),
+                reason: format!("cannot read {}: {}", path.display(), e.reason()),
+            }),
+        }
+    }
+
     /// The mesh path resolved against the scene file's directory.
     pub fn mesh_path(&self) -> PathBuf {
         self.base_dir.join(&self.plate_insert.mesh)
     }
 }
 
-/// The largest load w (and 1/the smallest positive one): the energies go as w², so w² must stay
-/// far from overflow and underflow; the problem is linear in w, so no physical load needs more.
-pub const MAX_LOAD: f64 = 1e100;
-
-/// The largest friction coefficient: beyond 1e6 the cone is a stick condition to round-off
-/// (real materials have μ < 10), and μλ overflows long before 1e308.
-pub const MAX_FRICTION: f64 = 1e6;
-
-/// The largest number of load steps a scene may ask for.
-pub const MAX_STEPS: usize = 100_000;
+/// The text of a scene file: a regular file of at most [`crate::input_file::MAX_SCENE_BYTES`],
+/// UTF-8.
+///
+/// # Errors
+/// [`SceneError::Io`], [`SceneError::Unreadable`] (not a regular file, too large) or
+/// [`SceneError::Invalid`] (not UTF-8), naming the file.
+pub fn read_scene_text(path: &Path) -> Result<String, SceneError> {
+    let shown = path.display().to_string();
+    let bytes = crate::input_file::read_input_file(path, crate::input_file::MAX_SCENE_BYTES).map_err(|e| match e {
+        crate::input_file::InputFileError::Io { source, .. } => SceneError::Io { path: shown.clone(), source },
+        other => SceneError::Unreadable { path: shown.clone(), reason: other.reason() },
+    })?;
+    String::from_utf8(bytes).map_err(|e| SceneError::Invalid {
+        path: shown,
+        reason: format!("not UTF-8 text (invalid byte at offset {})", e.utf8_error().valid_up_to()),
+    })
+}
 
 /// "line L, column C: message" of a TOML error with a span.
 pub(crate) fn spanned_reason(text: &str, e: &toml::de::Error) -> String {
@@ -523,51 +556,6 @@ pub(crate) fn line_of(text: &str, e: &toml::de::Error) -> String {
         let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
         format!("line {line}, column {column}: ")
     })
-}
-
-/// Sets `a.b.c = value` in a TOML tree; the key must exist (unknown keys are errors). An array
-/// of tables (`[[contact]]`) is entered by index (`contact.0.friction`) or by the entry's
-/// `name`, `region` or `group` (`contact.hertz.friction`, `body.block.youngs_modulus`).
-pub(crate) fn apply_override(root: &mut toml::Value, assignment: &str) -> Result<(), SceneError> {
-    let err = |reason: String| SceneError::Override { assignment: assignment.to_string(), reason };
-    let (key, raw) = assignment.split_once('=').ok_or_else(|| err("expected key.path=value".into()))?;
-    let parsed = toml::from_str::<toml::Table>(&format!("v = {raw}"))
-        .ok()
-        .and_then(|mut t| t.remove("v"))
-        .unwrap_or_else(|| toml::Value::String(raw.to_string()));
-    let mut node = root;
-    let parts: Vec<&str> = key.trim().split('.').collect();
-    for (i, part) in parts.iter().enumerate() {
-        if let Some(array) = node.as_array() {
-            let here = parts[..i].join(".");
-            let len = array.len();
-            let at = match part.parse::<usize>() {
-                Ok(k) if k < len => k,
-                Ok(k) => return Err(err(format!("\"{here}\" has {len} entries; index {k} is past its end"))),
-                Err(_) => array
-                    .iter()
-                    .position(|entry| {
-                        ["name", "region", "group"].iter().any(|k| entry.get(k).and_then(|v| v.as_str()) == Some(part))
-                    })
-                    .ok_or_else(|| err(format!("no entry of \"{here}\" has the name, region or group \"{part}\"")))?,
-            };
-            if i + 1 == parts.len() {
-                return Err(err(format!("\"{here}.{part}\" is a whole entry; set one of its keys")));
-            }
-            node = node.get_mut(at).ok_or_else(|| err(format!("\"{here}\" has no entry {at}")))?;
-            continue;
-        }
-        let table = node.as_table_mut().ok_or_else(|| err(format!("\"{}\" is not a table", parts[..i].join("."))))?;
-        if i + 1 == parts.len() {
-            // A key the file leaves at its default may be set; whether it exists at all is
-            // decided when the scene is checked (unknown keys are errors there).
-            table.insert((*part).to_string(), parsed);
-            return Ok(());
-        }
-        node =
-            table.get_mut(*part).ok_or_else(|| err(format!("no table \"{}\" in the scene", parts[..=i].join("."))))?;
-    }
-    Err(err("empty key".into()))
 }
 
 #[cfg(test)]
@@ -618,5 +606,6 @@ algorithm = "active_set"
         assert!(matches!(Scene::load(&path, &["solver.algorithm=newton".into()]), Err(SceneError::Invalid { .. })));
         assert!(matches!(Scene::load(&path, &["noequals".into()]), Err(SceneError::Override { .. })));
         assert!(matches!(Scene::load(Path::new("/nonexistent.toml"), &[]), Err(SceneError::Io { .. })));
+        assert!(matches!(Scene::load(Path::new("/dev/zero"), &[]), Err(SceneError::Unreadable { .. })));
     }
 }

@@ -66,6 +66,16 @@ fn check_folder(dir: &Path, steps: usize, mesh: &str) -> serde_json::Value {
         serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).unwrap()).unwrap();
     assert_eq!(summary["steps"].as_array().unwrap().len(), steps);
 
+    // The summary is the manifest: it lists exactly the files in the folder, itself last.
+    let mut listed: Vec<String> =
+        summary["files"].as_array().unwrap().iter().map(|f| f.as_str().unwrap().to_string()).collect();
+    assert_eq!(listed.last().map(String::as_str), Some("summary.json"));
+    listed.sort();
+    let mut present: Vec<String> =
+        std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    present.sort();
+    assert_eq!(listed, present, "summary.json lists exactly the files present (no lock, no temporary file)");
+
     let readme = std::fs::read_to_string(dir.join("README.txt")).unwrap();
     for entry in std::fs::read_dir(dir).unwrap() {
         let name = entry.unwrap().file_name().to_string_lossy().into_owned();

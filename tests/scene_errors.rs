@@ -44,13 +44,13 @@ fn ranges_are_checked_with_the_key_named() {
         ("plate_insert.poissons_ratio=0.5", "plate_insert.poissons_ratio"),
         ("plate_insert.poissons_ratio=-1", "plate_insert.poissons_ratio"),
         ("plate_insert.steps=0", "plate_insert.steps"),
-        ("plate_insert.steps=100001", "plate_insert.steps"),
+        ("plate_insert.steps=1001", "plate_insert.steps"),
         ("solver.max_iterations=0", "solver.max_iterations"),
     ] {
         assert_eq!(key_of(check(&[set])), key, "{set}");
     }
     // The limits themselves are admissible.
-    check(&["plate_insert.steps=100000", "plate_insert.poissons_ratio=0.499", "plate_insert.load=0"]).unwrap();
+    check(&["plate_insert.steps=1000", "plate_insert.poissons_ratio=0.499", "plate_insert.load=0"]).unwrap();
 }
 
 #[test]

@@ -25,6 +25,7 @@ use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
+use crate::output::OutputDir;
 use crate::run::run_scene;
 use crate::scene::{ContactAlgorithm, Scene, SceneError};
 
@@ -177,6 +178,9 @@ impl BenchConfig {
         if cases.is_empty() || algorithms.is_empty() || levels.is_empty() {
             return Err(flag("--cases/--levels/--algorithms", "empty list".into()));
         }
+        if let Some(bad) = levels.iter().find(|n| **n == 0) {
+            return Err(flag("--levels", format!("{bad}: a mesh level is at least 1 (bundled: 16, 32, 64, 128)")));
+        }
         if args.repeats == 0 {
             return Err(flag("--repeats", "must be at least 1".into()));
         }
@@ -323,9 +327,60 @@ pub fn progress_bar(len: usize, quiet: bool) -> ProgressBar {
 /// Bad flags, an unloadable scene, or an output that cannot be written.
 pub fn run_command(args: &BenchArgs) -> Result<String, BenchError> {
     let config = BenchConfig::from_args(args)?;
+    check_meshes(&config)?;
+    // The output folder is checked and locked before the grid runs.
+    let out = OutputDir::prepare(&args.out, None).map_err(|e| out_err(&args.out, &e))?;
     let bar = progress_bar(config.combinations(), args.quiet);
     let measurements = run_bench(&config, &bar)?;
-    write_outputs(&args.out, &measurements)
+    if let Some(first) = measurements.first()
+        && measurements.iter().all(|m| m.status == "error")
+    {
+        return Err(BenchError::Flag {
+            flag: "--cases/--levels/--algorithms",
+            reason: format!("every combination failed; the first: {}", first.note),
+        });
+    }
+    write_outputs_into(out, &measurements)
+}
+
+/// Checks before any run that every (case, level) has its mesh file.
+///
+/// # Errors
+/// [`BenchError::Flag`] on `--levels` naming the missing mesh; [`BenchError::Scene`].
+pub fn check_meshes(config: &BenchConfig) -> Result<(), BenchError> {
+    for &case in &config.cases {
+        let path = config.scenes.join(case.scene_file());
+        let base = Scene::load(&path, &[])?;
+        for &level in &config.levels {
+            let Some(mesh) = mesh_for_level(&base.plate_insert.mesh, level) else { continue };
+            let mesh = base.base_dir.join(mesh);
+            if !mesh.is_file() {
+                return Err(BenchError::Flag {
+                    flag: "--levels",
+                    reason: format!(
+                        "no mesh for N = {level} of case {}: {} is not a file",
+                        case.name(),
+                        mesh.display()
+                    ),
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
+fn out_err(path: &Path, e: &dyn std::fmt::Display) -> BenchError {
+    BenchError::Output { path: path.display().to_string(), reason: e.to_string() }
+}
+
+/// Whether `name` is a file the bench writes (stale ones of an earlier bench are removed).
+fn is_bench_output(name: &str) -> bool {
+    name == "bench.csv"
+        || name == "bench.md"
+        || name
+            .strip_prefix("bench_")
+            .and_then(|n| n.rsplit_once('.'))
+            .is_some_and(|(case, ext)| BenchCase::ALL.iter().any(|c| c.name() == case) && ["svg", "png"].contains(&ext))
 }
 
 /// Writes `bench.csv`, `bench.md` and the figures into `dir`; returns the markdown.
@@ -333,18 +388,26 @@ pub fn run_command(args: &BenchArgs) -> Result<String, BenchError> {
 /// # Errors
 /// [`BenchError::Output`] naming the file.
 pub fn write_outputs(dir: &Path, measurements: &[Measurement]) -> Result<String, BenchError> {
-    let out_err = |path: &Path, e: &dyn std::fmt::Display| BenchError::Output {
-        path: path.display().to_string(),
-        reason: e.to_string(),
-    };
-    std::fs::create_dir_all(dir).map_err(|e| out_err(dir, &e))?;
+    let out = OutputDir::prepare(dir, None).map_err(|e| out_err(dir, &e))?;
+    write_outputs_into(out, measurements)
+}
+
+/// [`write_outputs`] into a prepared folder: each file atomic, stale bench files removed.
+///
+/// # Errors
+/// [`BenchError::Output`] naming the file.
+pub fn write_outputs_into(mut out: OutputDir, measurements: &[Measurement]) -> Result<String, BenchError> {
+    let dir = out.path().to_path_buf();
     let refs = report::references(measurements);
     let md = report::markdown(measurements, &refs);
-    for (name, text) in [("bench.csv", report::csv(measurements, &refs)), ("bench.md", md.clone())] {
-        let path = dir.join(name);
-        std::fs::write(&path, text).map_err(|e| out_err(&path, &e))?;
+    for (name, axes, series) in report::figure_specs(measurements, &refs) {
+        out.write_with(&name, |p| crate::output::chart::line_chart(p, &axes, &series))
+            .map_err(|e| out_err(&dir.join(&name), &e))?;
     }
-    report::figures(dir, measurements, &refs).map_err(|(path, e)| out_err(&path, &e))?;
+    for (name, text) in [("bench.md", md.clone()), ("bench.csv", report::csv(measurements, &refs))] {
+        out.write_bytes(name, text.as_bytes()).map_err(|e| out_err(&dir.join(name), &e))?;
+    }
+    out.finish(is_bench_output, |_| Ok(vec![])).map_err(|e| out_err(&dir, &e))?;
     Ok(md)
 }
 

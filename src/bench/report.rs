@@ -239,7 +239,21 @@ pub fn figures(
     measurements: &[Measurement],
     refs: &References,
 ) -> Result<(), (std::path::PathBuf, String)> {
-    use crate::output::chart::{Axes, Series, line_chart};
+    for (name, axes, series) in figure_specs(measurements, refs) {
+        let path = dir.join(name);
+        crate::output::chart::line_chart(&path, &axes, &series).map_err(|e| (path.clone(), e.to_string()))?;
+    }
+    Ok(())
+}
+
+/// The figures of [`figures`] as (file name, axes, series), for writers that place the files
+/// themselves.
+pub fn figure_specs(
+    measurements: &[Measurement],
+    refs: &References,
+) -> Vec<(String, crate::output::chart::Axes, Vec<crate::output::chart::Series>)> {
+    use crate::output::chart::{Axes, Series};
+    let mut specs = vec![];
     for case in refs.by_case.keys() {
         let mut series = Vec::new();
         for q in [Quantity::Pull, Quantity::Energy] {
@@ -268,9 +282,8 @@ pub fn figures(
             log_y: false,
         };
         for ext in ["svg", "png"] {
-            let path = dir.join(format!("bench_{}.{ext}", case.name()));
-            line_chart(&path, &axes, &series).map_err(|e| (path.clone(), e.to_string()))?;
+            specs.push((format!("bench_{}.{ext}", case.name()), axes.clone(), series.clone()));
         }
     }
-    Ok(())
+    specs
 }

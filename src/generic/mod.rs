@@ -22,6 +22,7 @@ use contact2d_mesh::read_msh;
 pub use results::{ContactResult, Kkt, Profile, StepResult};
 pub use scene::GenericScene;
 
+use crate::input_file::{InputFileError, MAX_MESH_BYTES, check_input_file};
 use crate::scene::SceneError;
 
 /// Errors of a generic run.
@@ -155,9 +156,7 @@ pub struct GenericOutcome {
 /// # Errors
 /// [`SceneError`] naming the file and what is wrong.
 pub fn load_scene(path: &Path, overrides: &[String]) -> Result<GenericScene, SceneError> {
-    let shown = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io { path: shown, source })?;
-    GenericScene::from_toml_str(&text, path, overrides)
+    GenericScene::from_toml_str(&crate::scene::read_scene_text(path)?, path, overrides)
 }
 
 /// Solves a generic scene, calling `on_step(done, total)` after each step.
@@ -171,6 +170,13 @@ pub fn solve_generic(
     let clock = Instant::now();
     let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
     let contact_error = |source| GenericError::Contact { scene: scene_name.clone(), mesh: mesh_name.clone(), source };
+    // A FIFO or an endless device is refused before reading; the reader reports the rest.
+    if let Err(e) = check_input_file(&scene.mesh_path(), MAX_MESH_BYTES)
+        && !matches!(e, InputFileError::Io { .. })
+    {
+        let reason = format!("cannot read {mesh_name}: {}", e.reason());
+        return Err(SceneError::Value { path: scene_name.clone(), key: "mesh".into(), reason }.into());
+    }
     let mesh = read_msh(scene.mesh_path()).map_err(|source| GenericError::Mesh {
         scene: scene_name.clone(),
         mesh: mesh_name.clone(),

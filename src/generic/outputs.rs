@@ -19,76 +19,95 @@ use contact2d_contact::ContactSolution;
 use super::GenericOutcome;
 use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::step_view::{NodeValues, StepView, state_code};
-use crate::output::{FIGURE_EXTENSIONS, OutputError, field_plot, mesh_plot, step_file_name, vtu};
+use crate::output::{
+    FIGURE_EXTENSIONS, OutputDir, OutputError, SUMMARY_FILE, atomic, field_plot, mesh_plot, step_file_name, vtu,
+};
 
-/// Writes every output of `outcome` into `dir` and returns the paths written.
+/// Writes every output of `outcome` into the prepared folder `out` (each file atomically, stale
+/// files of an earlier run removed, `summary.json` with the manifest last) and returns the paths
+/// written. A figure that cannot be drawn is skipped with a note in the summary.
 ///
 /// # Errors
-/// [`OutputError`] naming the first file that could not be written.
-pub fn write_generic_outputs(dir: &Path, outcome: &GenericOutcome) -> Result<Vec<PathBuf>, OutputError> {
-    std::fs::create_dir_all(dir).map_err(|e| OutputError::io(dir, e))?;
-    let mut written = vec![];
+/// [`OutputError`] naming the first file that could not be written; the folder then holds no
+/// summary.
+pub fn write_generic_outputs_into(mut out: OutputDir, outcome: &GenericOutcome) -> Result<Vec<PathBuf>, OutputError> {
     let name = &outcome.scene.name;
     let Some(last) = outcome.history.steps.last() else {
-        return Err(OutputError::MissingData { path: dir.to_path_buf(), reason: "no solved step".into() });
+        return Err(OutputError::MissingData { path: out.path().to_path_buf(), reason: "no solved step".into() });
     };
     let n = outcome.history.steps.len();
     let view = step_view(outcome, &last.solution);
+    let mut skipped = vec![];
     for ext in FIGURE_EXTENSIONS {
-        let path = dir.join(format!("mesh.{ext}"));
-        mesh_plot::draw_mesh(&path, &format!("{name}: mesh (step {n}/{n})"), &view)?;
-        written.push(path);
+        figure(&mut out, &format!("mesh.{ext}"), &mut skipped, |p| {
+            mesh_plot::draw_mesh(p, &format!("{name}: mesh (step {n}/{n})"), &view)
+        })?;
         for (iface, result) in &outcome.report.contacts {
-            let path = dir.join(format!("contact_{}.{ext}", file_safe(iface)));
-            draw_profile(&path, &format!("{name}: contact \"{iface}\" (step {n}/{n})"), result)?;
-            written.push(path);
+            figure(&mut out, &format!("contact_{}.{ext}", file_safe(iface)), &mut skipped, |p| {
+                draw_profile(p, &format!("{name}: contact \"{iface}\" (step {n}/{n})"), result)
+            })?;
         }
-        let path = dir.join(format!("von_mises.{ext}"));
-        field_plot::draw_von_mises(&path, &format!("{name}: von Mises stress (step {n}/{n})"), &view)?;
-        written.push(path);
+        figure(&mut out, &format!("von_mises.{ext}"), &mut skipped, |p| {
+            field_plot::draw_von_mises(p, &format!("{name}: von Mises stress (step {n}/{n})"), &view)
+        })?;
         if n > 1 {
-            let path = dir.join(format!("history.{ext}"));
-            draw_history(&path, &format!("{name}: contact forces over the steps"), outcome)?;
-            written.push(path);
+            figure(&mut out, &format!("history.{ext}"), &mut skipped, |p| {
+                draw_history(p, &format!("{name}: contact forces over the steps"), outcome)
+            })?;
         }
     }
     for (iface, result) in &outcome.report.contacts {
-        let path = dir.join(format!("contact_{}.csv", file_safe(iface)));
-        write_text(&path, &profile_csv(result))?;
-        written.push(path);
+        out.write_bytes(&format!("contact_{}.csv", file_safe(iface)), profile_csv(result).as_bytes())?;
     }
-    let path = dir.join("steps.csv");
-    write_text(&path, &steps_csv(outcome))?;
-    written.push(path);
+    out.write_bytes("steps.csv", steps_csv(outcome).as_bytes())?;
     let mut collection = vec![];
     for (k, step) in outcome.history.steps.iter().enumerate() {
         let file = step_file_name(k);
-        let path = dir.join(&file);
-        vtu::write_step_vtu(&path, &step_view(outcome, &step.solution))?;
-        written.push(path);
+        out.write_with(&file, |tmp| vtu::write_step_vtu(tmp, &step_view(outcome, &step.solution)))?;
         collection.push(((k + 1) as f64, file));
     }
-    let path = dir.join("steps.pvd");
-    vtu::write_pvd(&path, &collection)?;
-    written.push(path);
-    let path = dir.join("summary.json");
-    let text = serde_json::to_string_pretty(&outcome.report)
-        .map_err(|e| OutputError::Serialize { path: path.clone(), reason: e.to_string() })?;
-    write_text(&path, &(text + "\n"))?;
-    written.push(path);
-    Ok(written)
+    out.write_with("steps.pvd", |p| vtu::write_pvd(p, &collection))?;
+    let mut report = outcome.report.clone();
+    report.notes.extend(skipped);
+    let summary_path = out.path().join(SUMMARY_FILE);
+    out.finish(is_generic_output, |files| {
+        let value = serde_json::to_value(&report)
+            .map_err(|e| OutputError::Serialize { path: summary_path.clone(), reason: e.to_string() })?;
+        atomic::manifest_json(value, files, &summary_path)
+    })
+}
+
+/// Whether a file name is one a generic run writes (stale copies of it are removed).
+pub fn is_generic_output(name: &str) -> bool {
+    let (stem, ext) = name.rsplit_once('.').unwrap_or((name, ""));
+    let figure = (["mesh", "von_mises", "history"].contains(&stem) || stem.starts_with("contact_"))
+        && FIGURE_EXTENSIONS.contains(&ext);
+    let csv = ext == "csv" && (stem == "steps" || stem.starts_with("contact_"));
+    let step = ext == "vtu"
+        && stem.strip_prefix("step_").is_some_and(|k| k.len() >= 3 && k.bytes().all(|b| b.is_ascii_digit()));
+    figure || csv || step || ["steps.pvd", SUMMARY_FILE].contains(&name)
+}
+
+/// Draws one figure through `out`; one that cannot be drawn is noted in `skipped` instead.
+fn figure(
+    out: &mut OutputDir,
+    name: &str,
+    skipped: &mut Vec<String>,
+    draw: impl FnOnce(&Path) -> Result<(), OutputError>,
+) -> Result<(), OutputError> {
+    match out.write_with(name, draw) {
+        Ok(_) => Ok(()),
+        Err(OutputError::Undrawable { reason, .. }) => {
+            skipped.push(format!("{name} not drawn: {reason}"));
+            Ok(())
+        }
+        Err(e) => Err(e),
+    }
 }
 
 /// A name usable in a file name: letters, digits, `-` and `_` kept, anything else `_`.
 fn file_safe(name: &str) -> String {
     name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' || c == '_' { c } else { '_' }).collect()
-}
-
-/// Writes `text` to a temporary name beside `path` and renames it (whole or absent).
-fn write_text(path: &Path, text: &str) -> Result<(), OutputError> {
-    let tmp = path.with_extension("tmp-contact2d");
-    std::fs::write(&tmp, text).map_err(|e| OutputError::io(&tmp, e))?;
-    std::fs::rename(&tmp, path).map_err(|e| OutputError::io(path, e))
 }
 
 /// The writers' view of one step: master-side pressures on the master nodes.

@@ -5,6 +5,8 @@
 //! ```
 //! Axis ranges cover every finite point of every series (positive ones only on a log axis), with a
 //! 5 % margin on linear axes. Non-finite points are skipped, so a series may carry gaps as NaN.
+//! Data that cannot be drawn (no finite point, a range beyond [`DRAWABLE_MAGNITUDE`]) is refused
+//! with [`OutputError::Undrawable`], which writers turn into a note in place of the figure.
 
 use std::path::Path;
 use std::sync::OnceLock;
@@ -121,8 +123,20 @@ pub fn register_bundled_font() -> Result<(), OutputError> {
 pub fn line_chart(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), OutputError> {
     let format = ImageFormat::from_path(path)?;
     register_bundled_font()?;
-    let x_range = axis_range(series.iter().flat_map(|s| s.points.iter().map(|p| p.0)), axes.log_x);
-    let y_range = axis_range(series.iter().flat_map(|s| s.points.iter().map(|p| p.1)), axes.log_y);
+    let points = || series.iter().flat_map(|s| s.points.iter());
+    if points().next().is_some() && !points().any(|p| p.0.is_finite() && p.1.is_finite()) {
+        return Err(OutputError::Undrawable { path: path.to_path_buf(), reason: "no finite value to draw".into() });
+    }
+    // A point is drawn only when both coordinates are finite: only those set the ranges.
+    let drawn = || points().filter(|p| p.0.is_finite() && p.1.is_finite());
+    let x_range = axis_range(drawn().map(|p| p.0), axes.log_x);
+    let y_range = axis_range(drawn().map(|p| p.1), axes.log_y);
+    for (axis, (lo, hi)) in [("x", x_range), ("y", y_range)] {
+        drawable_range(lo, hi).map_err(|reason| OutputError::Undrawable {
+            path: path.to_path_buf(),
+            reason: format!("{axis} axis: {reason}"),
+        })?;
+    }
     let result = match format {
         ImageFormat::Png => {
             let root = BitMapBackend::new(path, FIGURE_SIZE).into_drawing_area();
@@ -134,6 +148,33 @@ pub fn line_chart(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), Out
         }
     };
     result.map_err(|reason| OutputError::draw(path, reason))
+}
+
+/// The largest magnitude an axis may reach and the smallest range it may span: the plotting
+/// backend computes tick positions by repeated steps of 10^⌊log10(range)⌋, which overflow,
+/// underflow to subnormals or never end outside these bounds.
+pub const DRAWABLE_MAGNITUDE: (f64, f64) = (1e-150, 1e150);
+
+/// Checks that an axis range `lo..hi` can be drawn: finite, `hi > lo`, within
+/// [`DRAWABLE_MAGNITUDE`] (|lo|, |hi| ≤ 1e150 and hi − lo ≥ 1e-150).
+///
+/// # Errors
+/// Why the range cannot be drawn, for a note in place of the figure.
+pub fn drawable_range(lo: f64, hi: f64) -> Result<(), String> {
+    let (small, large) = DRAWABLE_MAGNITUDE;
+    if !(lo.is_finite() && hi.is_finite()) {
+        return Err(format!("non-finite range [{lo}, {hi}]"));
+    }
+    if hi <= lo {
+        return Err(format!("zero range at {lo}"));
+    }
+    if lo.abs().max(hi.abs()) > large {
+        return Err(format!("values up to {:.3e} exceed ±{large:e}", lo.abs().max(hi.abs())));
+    }
+    if hi - lo < small {
+        return Err(format!("range {:.3e} is below {small:e}", hi - lo));
+    }
+    Ok(())
 }
 
 /// The range of an axis over the finite values (positive ones on a log axis), with a margin.
@@ -369,6 +410,28 @@ mod tests {
         // A rising diagonal crosses the upper-right and lower-left corners: the legend goes upper left.
         assert_eq!(legend_corner(&[rising], [(0.0, 1.0, false), (0.0, 1.0, false)]), 1);
         assert_eq!(legend_corner(&[], [(0.0, 1.0, false), (0.0, 1.0, false)]), 0);
+    }
+
+    #[test]
+    fn undrawable_data_is_refused_not_looped_on() {
+        let dir = temp_dir("undrawable");
+        let (axes, _) = sample();
+        for points in [
+            vec![(0.0, 1e-310), (1.0, 2e-310)],
+            vec![(0.0, 1e300), (1.0, 1e308)],
+            vec![(0.0, f64::NAN), (1.0, f64::INFINITY)],
+            vec![(1e-320, 0.0), (2e-320, 1.0)],
+        ] {
+            let s = Series { label: "s".into(), points: points.clone(), markers: true };
+            let r = line_chart(&dir.join("u.svg"), &axes, &[s]);
+            assert!(matches!(r, Err(OutputError::Undrawable { .. })), "{points:?}: {r:?}");
+        }
+        // Just inside the bounds both ends draw (the backend's tick loop terminates).
+        for points in [vec![(0.0, 1e-149), (1.0, 3e-149)], vec![(0.0, -1e140), (1.0, 1e140)]] {
+            let s = Series { label: "s".into(), points, markers: true };
+            line_chart(&dir.join("ok.svg"), &axes, &[s]).unwrap();
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]

@@ -50,6 +50,35 @@ pub enum OutputError {
         /// What is missing.
         reason: String,
     },
+    /// The output path exists and is not a directory.
+    #[error("{path}: exists and is not a directory (choose another --out)")]
+    NotADirectory {
+        /// The path given as the output folder.
+        path: PathBuf,
+    },
+    /// Another process writes into the folder (its lock file exists).
+    #[error(
+        "{dir}: another contact2d process{} is writing into this folder (lock file {lock}); wait for it, \
+         choose another folder, or delete the lock file if no such process runs",
+        pid.map_or(String::new(), |p| format!(" (pid {p})"))
+    )]
+    Locked {
+        /// The folder.
+        dir: PathBuf,
+        /// The lock file.
+        lock: PathBuf,
+        /// The process id recorded in the lock file, if readable.
+        pid: Option<u32>,
+    },
+    /// The data cannot be drawn (non-finite values, a zero or unrepresentable range); the writer
+    /// skips the figure and notes why.
+    #[error("{path}: not drawn: {reason}")]
+    Undrawable {
+        /// The figure file.
+        path: PathBuf,
+        /// Why.
+        reason: String,
+    },
     /// Recovering stresses or reactions from the solution failed.
     #[error("post-processing: {0}")]
     Fem(#[from] contact2d_fem::FemError),
@@ -62,6 +91,25 @@ impl OutputError {
     /// An [`OutputError::Io`] for `path`.
     pub fn io(path: impl Into<PathBuf>, source: std::io::Error) -> Self {
         Self::Io { path: path.into(), source }
+    }
+
+    /// The same error with the file `from` (a temporary name) replaced by `to` where it names it.
+    #[must_use]
+    pub fn at_path(mut self, from: &std::path::Path, to: &std::path::Path) -> Self {
+        match &mut self {
+            Self::UnsupportedFormat { path, .. }
+            | Self::Draw { path, .. }
+            | Self::Io { path, .. }
+            | Self::Serialize { path, .. }
+            | Self::MissingData { path, .. }
+            | Self::Undrawable { path, .. }
+                if path == from =>
+            {
+                *path = to.to_path_buf();
+            }
+            _ => {}
+        }
+        self
     }
 
     /// An [`OutputError::Draw`] for `path` from any displayable plotting error.

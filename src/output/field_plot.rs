@@ -15,7 +15,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::OutputError;
-use super::chart::{FIGURE_SIZE, ImageFormat, register_bundled_font};
+use super::chart::{FIGURE_SIZE, ImageFormat, drawable_range, register_bundled_font};
 use super::mesh_plot::{bounding_box, draw_plane_axes, equal_aspect_ranges};
 use super::step_view::StepView;
 
@@ -94,12 +94,37 @@ pub fn draw_von_mises(path: &Path, title: &str, step: &StepView) -> Result<(), O
     let format = ImageFormat::from_path(path)?;
     register_bundled_font()?;
     let cells = von_mises_cells(step)?;
+    let undrawable = |reason: String| OutputError::Undrawable { path: path.to_path_buf(), reason };
+    if cells.iter().any(|c| !c.value.is_finite() || c.corners.iter().any(|p| !(p.0.is_finite() && p.1.is_finite()))) {
+        return Err(undrawable("non-finite von Mises stress or geometry".into()));
+    }
+    let (lo, hi) = colour_range(&cells);
+    drawable_range(lo, hi).map_err(|r| undrawable(format!("colour bar: {r}")))?;
+    let bounds = bounding_box(step.problem.model.mesh.points.iter());
+    for (axis, k) in [("x1", 0), ("x2", 1)] {
+        drawable_range(bounds[0][k], bounds[1][k]).map_err(|r| undrawable(format!("mesh extent in {axis}: {r}")))?;
+    }
     let size = figure_size(bounding_box(step.problem.model.mesh.points.iter()));
     let result = match format {
         ImageFormat::Png => draw_on(&BitMapBackend::new(path, size).into_drawing_area(), title, step, &cells, true),
         ImageFormat::Svg => draw_on(&SVGBackend::new(path, size).into_drawing_area(), title, step, &cells, false),
     };
     result.map_err(|reason| OutputError::draw(path, reason))
+}
+
+/// The colour bar's range: the smallest to the largest finite sub-cell value (a constant field
+/// v gets [v, v + 1], no value [0, 1]).
+fn colour_range(cells: &[SubCell]) -> (f64, f64) {
+    let (lo, hi) = cells.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| {
+        if c.value.is_finite() { (lo.min(c.value), hi.max(c.value)) } else { (lo, hi) }
+    });
+    if lo < hi {
+        (lo, hi)
+    } else if lo.is_finite() {
+        (lo, lo + 1.0)
+    } else {
+        (0.0, 1.0)
+    }
 }
 
 /// A figure as wide as [`FIGURE_SIZE`] and as high as the geometry needs at equal scales (the
@@ -119,17 +144,10 @@ fn draw_on<DB: DrawingBackend>(
     outlines: bool,
 ) -> Result<(), String> {
     let err = |e: &dyn std::fmt::Display| e.to_string();
-    let (lo, hi) = cells.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), c| {
-        if c.value.is_finite() { (lo.min(c.value), hi.max(c.value)) } else { (lo, hi) }
-    });
-    let (lo, hi) = if lo < hi {
-        (lo, hi)
-    } else if lo.is_finite() {
-        (lo, lo + 1.0)
-    } else {
-        (0.0, 1.0)
-    };
-    let colour = |v: f64| ViridisRGB::get_color_normalized(v, lo, hi);
+    let (lo, hi) = colour_range(cells);
+    // The colour map indexes its table by the normalised value: keep it in [lo, hi] (a NaN
+    // is excluded by draw_von_mises; clamping guards the table anyway).
+    let colour = |v: f64| ViridisRGB::get_color_normalized(if v.is_nan() { lo } else { v.clamp(lo, hi) }, lo, hi);
 
     root.fill(&WHITE).map_err(|e| err(&e))?;
     let title = format!("{title}, {} in [{lo:.4}, {hi:.4}]", step.stress_label);
@@ -167,7 +185,7 @@ fn draw_on<DB: DrawingBackend>(
         .margin_bottom(50)
         .margin_right(10)
         .y_label_area_size(80)
-        .caption("σ_vM / E1", ("sans-serif", 16))
+        .caption(step.stress_label.as_str(), ("sans-serif", 16))
         .build_cartesian_2d(0.0..1.0, lo..hi)
         .map_err(|e| err(&e))?;
     bar_chart

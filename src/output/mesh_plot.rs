@@ -16,7 +16,7 @@ use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use super::OutputError;
-use super::chart::{FIGURE_SIZE, ImageFormat, register_bundled_font};
+use super::chart::{FIGURE_SIZE, ImageFormat, drawable_range, register_bundled_font};
 use super::step_view::StepView;
 
 /// Points per drawn element edge.
@@ -94,10 +94,12 @@ pub(crate) fn bounding_box<'a>(points: impl Iterator<Item = &'a [f64; 2]>) -> [[
     })
 }
 
-/// The exaggeration β of spec §7: the largest displacement component maps to 1 (0 if nothing moves).
+/// The exaggeration β of spec §7: the largest displacement component maps to 1 (0 if nothing
+/// moves, or if the displacements are too small for 1 / max to be finite, or not finite).
 pub fn exaggeration(u: &[f64]) -> f64 {
     let max = u.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    if max > 0.0 { 1.0 / max } else { 0.0 }
+    let beta = 1.0 / max;
+    if max > 0.0 && beta.is_finite() { beta } else { 0.0 }
 }
 
 /// Draws the axes of a chart of the bodies in the plane (x1, x2 labelled, no grid).
@@ -127,6 +129,14 @@ pub(crate) fn draw_plane_axes<DB: DrawingBackend>(
 pub fn draw_mesh(path: &Path, title: &str, step: &StepView) -> Result<(), OutputError> {
     let format = ImageFormat::from_path(path)?;
     register_bundled_font()?;
+    let undrawable = |reason: String| OutputError::Undrawable { path: path.to_path_buf(), reason };
+    if step.solution.displacement.iter().any(|v| !v.is_finite()) {
+        return Err(undrawable("non-finite displacements".into()));
+    }
+    let bounds = bounding_box(step.problem.model.mesh.points.iter());
+    for (axis, k) in [("x1", 0), ("x2", 1)] {
+        drawable_range(bounds[0][k], bounds[1][k]).map_err(|r| undrawable(format!("mesh extent in {axis}: {r}")))?;
+    }
     let result = match format {
         ImageFormat::Png => draw_on(&BitMapBackend::new(path, FIGURE_SIZE).into_drawing_area(), title, step),
         ImageFormat::Svg => draw_on(&SVGBackend::new(path, FIGURE_SIZE).into_drawing_area(), title, step),
@@ -228,6 +238,8 @@ mod tests {
     fn exaggeration_maps_the_largest_component_to_one() {
         assert_eq!(exaggeration(&[0.0, -0.5, 0.25]), 2.0);
         assert_eq!(exaggeration(&[0.0, 0.0]), 0.0);
+        assert_eq!(exaggeration(&[1e-310]), 0.0, "1/1e-310 overflows");
+        assert_eq!(exaggeration(&[f64::INFINITY]), 0.0);
     }
 
     #[test]

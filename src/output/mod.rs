@@ -3,7 +3,9 @@
 //! [`write_outputs`] writes the folder of `contact2d run SCENE --out DIR`:
 //!
 //! ```text
-//! summary.json                     the run's summary (the --json object)
+//! summary.json                     the run's summary (the --json object) plus "files", the list of
+//!                                  this run's files: written last, so a folder without it is
+//!                                  incomplete (see [`atomic`])
 //! mesh, hole_edge, insert_hoop,    figures (.png and .svg) of the last step; insert_hoop only for an
 //! von_mises, history               elastic insert, history only for more than one step
 //! hole_edge.csv, insert_edge.csv   contour profiles of the last step
@@ -14,6 +16,7 @@
 //! Library code here writes files and returns what it wrote; it never prints.
 //! [`chart`] is the shared line-chart API every figure of the project draws with.
 
+pub mod atomic;
 pub mod chart;
 pub mod csv;
 mod error;
@@ -27,6 +30,7 @@ pub mod vtu;
 
 use std::path::{Path, PathBuf};
 
+pub use atomic::OutputDir;
 pub use error::OutputError;
 
 use crate::run::RunOutcome;
@@ -35,24 +39,51 @@ use crate::scene::Scene;
 /// The figure formats written for every figure.
 pub const FIGURE_EXTENSIONS: [&str; 2] = ["png", "svg"];
 
-/// Writes every output of a solved scene into `dir` (created if missing) and returns the paths
-/// written, in the order of the module docs.
+/// The manifest of a run folder: the summary, written last, listing the run's files.
+pub const SUMMARY_FILE: &str = "summary.json";
+
+/// Writes every output of a solved scene into `dir` (see [`write_outputs_into`]); the folder is
+/// prepared (created, checked, locked) here. Prefer [`atomic::OutputDir::prepare`] before
+/// solving and [`write_outputs_into`] after, so that a bad folder fails before the work.
 ///
 /// # Errors
-/// [`OutputError`] naming the first file that could not be written.
+/// [`OutputError`] naming the folder or the first file that could not be written.
 pub fn write_outputs(dir: &Path, scene: &Scene, outcome: &RunOutcome) -> Result<Vec<PathBuf>, OutputError> {
-    std::fs::create_dir_all(dir).map_err(|e| OutputError::io(dir, e))?;
-    let last = outcome.steps.last().ok_or_else(|| OutputError::MissingData {
-        path: dir.to_path_buf(),
-        reason: "the run has no solved step".into(),
-    })?;
-    let mut written: Vec<PathBuf> = vec![];
+    write_outputs_into(OutputDir::prepare(dir, Some(SUMMARY_FILE))?, scene, outcome)
+}
 
-    let summary = dir.join("summary.json");
-    let text = serde_json::to_string_pretty(&outcome.report)
-        .map_err(|e| OutputError::Serialize { path: summary.clone(), reason: e.to_string() })?;
-    std::fs::write(&summary, text + "\n").map_err(|e| OutputError::io(&summary, e))?;
-    written.push(summary);
+/// Whether `name` is a file name [`write_outputs_into`] writes (the stale ones of an earlier run
+/// in the same folder are removed by name; other files are left alone).
+pub fn is_run_output(name: &str) -> bool {
+    let (stem, ext) = name.rsplit_once('.').unwrap_or((name, ""));
+    let figure = ["mesh", "hole_edge", "insert_hoop", "von_mises", "history"].contains(&stem)
+        && FIGURE_EXTENSIONS.contains(&ext);
+    let step = ext == "vtu"
+        && stem.strip_prefix("step_").is_some_and(|k| k.len() >= 3 && k.bytes().all(|b| b.is_ascii_digit()));
+    figure
+        || step
+        || ["hole_edge.csv", "insert_edge.csv", "steps.csv", "steps.pvd", "README.txt", SUMMARY_FILE].contains(&name)
+}
+
+/// Writes every output of a solved scene into the prepared folder `out` and returns the paths
+/// written, the summary last: each file atomically, stale files of an earlier run removed, the
+/// summary (with `"files"`, the manifest) last. A figure that cannot be drawn (non-finite or
+/// unrepresentable values) is skipped with a note in the summary's `notes` and the README.
+///
+/// # Errors
+/// [`OutputError`] naming the first file that could not be written; the folder then holds no
+/// summary and none of this run's files.
+pub fn write_outputs_into(
+    mut out: OutputDir,
+    scene: &Scene,
+    outcome: &RunOutcome,
+) -> Result<Vec<PathBuf>, OutputError> {
+    let dir = out.path().to_path_buf();
+    let last = outcome
+        .steps
+        .last()
+        .ok_or_else(|| OutputError::MissingData { path: dir.clone(), reason: "the run has no solved step".into() })?;
+    let mut skipped: Vec<String> = vec![];
 
     let n = outcome.steps.len();
     let step_label = format!("step {n}/{n}, w = {:.4}", last.solution.load_factor);
@@ -61,65 +92,87 @@ pub fn write_outputs(dir: &Path, scene: &Scene, outcome: &RunOutcome) -> Result<
         outcome.steps.iter().map(profiles::contour_profiles).collect::<Result<_, _>>()?;
     let final_profiles = profiles
         .last()
-        .ok_or_else(|| OutputError::MissingData { path: dir.to_path_buf(), reason: "no contour profile".into() })?;
+        .ok_or_else(|| OutputError::MissingData { path: dir.clone(), reason: "no contour profile".into() })?;
     let elastic_insert = last.case.problem.model.body("insert").is_some();
     let last_view = profiles::flagship_view(last, final_profiles);
 
     for ext in FIGURE_EXTENSIONS {
-        let path = dir.join(format!("mesh.{ext}"));
-        mesh_plot::draw_mesh(&path, &title("mesh"), &last_view)?;
-        written.push(path);
-        let path = dir.join(format!("hole_edge.{ext}"));
+        figure(&mut out, &format!("mesh.{ext}"), &mut skipped, |p| {
+            mesh_plot::draw_mesh(p, &title("mesh"), &last_view)
+        })?;
         let ends: Vec<(&str, f64)> = [("l", last.results.contact_end), ("b", last.results.stick_end)]
             .into_iter()
             .filter_map(|(name, v)| Some((name, v?)))
             .collect();
-        figures::draw_hole_edge(&path, &title("hole edge"), &final_profiles.hole, &ends)?;
-        written.push(path);
+        figure(&mut out, &format!("hole_edge.{ext}"), &mut skipped, |p| {
+            figures::draw_hole_edge(p, &title("hole edge"), &final_profiles.hole, &ends)
+        })?;
         if elastic_insert {
-            let path = dir.join(format!("insert_hoop.{ext}"));
-            figures::draw_insert_hoop(&path, &title("insert hoop stress"), &final_profiles.insert)?;
-            written.push(path);
+            figure(&mut out, &format!("insert_hoop.{ext}"), &mut skipped, |p| {
+                figures::draw_insert_hoop(p, &title("insert hoop stress"), &final_profiles.insert)
+            })?;
         }
-        let path = dir.join(format!("von_mises.{ext}"));
-        field_plot::draw_von_mises(&path, &title("von Mises stress"), &last_view)?;
-        written.push(path);
+        figure(&mut out, &format!("von_mises.{ext}"), &mut skipped, |p| {
+            field_plot::draw_von_mises(p, &title("von Mises stress"), &last_view)
+        })?;
         if n > 1 {
-            let path = dir.join(format!("history.{ext}"));
-            figures::draw_history(&path, &format!("{}: zone ends over the loading", scene.name), outcome)?;
-            written.push(path);
+            figure(&mut out, &format!("history.{ext}"), &mut skipped, |p| {
+                figures::draw_history(p, &format!("{}: zone ends over the loading", scene.name), outcome)
+            })?;
         }
     }
 
     let tags = &last.case.problem.model.mesh.node_tags;
-    let path = dir.join("hole_edge.csv");
-    csv::write_profile_csv(&path, csv::HOLE_EDGE_HEADER, &final_profiles.hole, tags)?;
-    written.push(path);
-    let path = dir.join("insert_edge.csv");
-    csv::write_profile_csv(&path, csv::INSERT_EDGE_HEADER, &final_profiles.insert, tags)?;
-    written.push(path);
-    let path = dir.join("steps.csv");
-    csv::write_steps_csv(&path, outcome)?;
-    written.push(path);
+    out.write_with("hole_edge.csv", |p| csv::write_profile_csv(p, csv::HOLE_EDGE_HEADER, &final_profiles.hole, tags))?;
+    out.write_with("insert_edge.csv", |p| {
+        csv::write_profile_csv(p, csv::INSERT_EDGE_HEADER, &final_profiles.insert, tags)
+    })?;
+    out.write_with("steps.csv", |p| csv::write_steps_csv(p, outcome))?;
 
     let mut collection = vec![];
     for (k, (step, p)) in outcome.steps.iter().zip(&profiles).enumerate() {
         let name = step_file_name(k);
-        let path = dir.join(&name);
-        vtu::write_step_vtu(&path, &profiles::flagship_view(step, p))?;
-        written.push(path);
+        out.write_with(&name, |tmp| vtu::write_step_vtu(tmp, &profiles::flagship_view(step, p)))?;
         collection.push((step.solution.load_factor, name));
     }
-    let path = dir.join("steps.pvd");
-    vtu::write_pvd(&path, &collection)?;
-    written.push(path);
+    out.write_with("steps.pvd", |p| vtu::write_pvd(p, &collection))?;
 
-    let path = dir.join("README.txt");
-    written.push(path.clone());
-    let names: Vec<String> =
-        written.iter().filter_map(|p| p.file_name().map(|f| f.to_string_lossy().into_owned())).collect();
-    std::fs::write(&path, readme::readme_text(scene, outcome, &names)).map_err(|e| OutputError::io(&path, e))?;
-    Ok(written)
+    let mut names: Vec<String> = out.written().to_vec();
+    names.extend(["README.txt".to_string(), SUMMARY_FILE.to_string()]);
+    let mut readme = readme::readme_text(scene, outcome, &names);
+    if !skipped.is_empty() {
+        readme.push_str("\nNot drawn (the data cannot be plotted; the CSV and VTU files hold the values):\n");
+        for note in &skipped {
+            readme.push_str(&format!("  {note}\n"));
+        }
+    }
+    out.write_bytes("README.txt", readme.as_bytes())?;
+
+    let mut report = outcome.report.clone();
+    report.notes.extend(skipped);
+    let summary_path = dir.join(SUMMARY_FILE);
+    out.finish(is_run_output, |files| {
+        let value = serde_json::to_value(&report)
+            .map_err(|e| OutputError::Serialize { path: summary_path.clone(), reason: e.to_string() })?;
+        atomic::manifest_json(value, files, &summary_path)
+    })
+}
+
+/// Draws one figure through `out`; a figure that cannot be drawn is noted in `skipped` instead.
+fn figure(
+    out: &mut OutputDir,
+    name: &str,
+    skipped: &mut Vec<String>,
+    draw: impl FnOnce(&Path) -> Result<(), OutputError>,
+) -> Result<(), OutputError> {
+    match out.write_with(name, draw) {
+        Ok(_) => Ok(()),
+        Err(OutputError::Undrawable { reason, .. }) => {
+            skipped.push(format!("{name} not drawn: {reason}"));
+            Ok(())
+        }
+        Err(e) => Err(e),
+    }
 }
 
 /// The VTU file name of step `k` (0-based): `step_000.vtu`, `step_001.vtu`, ...

@@ -116,7 +116,12 @@ pub fn write_step_vtu(path: &Path, step: &StepView) -> Result<(), OutputError> {
             },
         }),
     };
-    vtk.export(path).map_err(|e| OutputError::Serialize { path: path.to_path_buf(), reason: e.to_string() })
+    // Serialised in memory, then written: a write error (a full disk) is then reported as the
+    // operating system's error, not as a formatting failure inside the XML writer.
+    let mut bytes = Vec::new();
+    vtk.write_xml(&mut bytes)
+        .map_err(|e| OutputError::Serialize { path: path.to_path_buf(), reason: e.to_string() })?;
+    std::fs::write(path, bytes).map_err(|e| OutputError::io(path, e))
 }
 
 /// Writes a ParaView collection listing `(time, file name)` entries (file names relative to the

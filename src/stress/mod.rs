@@ -210,6 +210,12 @@ pub fn run_command(args: &StressArgs) -> Result<String, StressError> {
         strain_nu: extra(&args.strain_nu),
         distortions: extra(&args.distortions),
     });
+    // The output folder is checked and locked before the grid runs.
+    let file = |path: &Path, e: &dyn std::fmt::Display| StressError::File {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    };
+    let mut out = crate::output::OutputDir::prepare(&args.out, None).map_err(|e| file(&args.out, &e))?;
     let bar = progress_bar(cells.len(), args.quiet);
     let tmp = std::env::temp_dir().join(format!("contact2d-stress-{}", std::process::id()));
     let mut results = Vec::with_capacity(cells.len());
@@ -221,15 +227,10 @@ pub fn run_command(args: &StressArgs) -> Result<String, StressError> {
     bar.finish_and_clear();
     // Best effort: the temporary meshes are not needed any more.
     let _ = std::fs::remove_dir_all(&tmp);
-    let file = |path: &Path, e: &dyn std::fmt::Display| StressError::File {
-        path: path.display().to_string(),
-        reason: e.to_string(),
-    };
-    std::fs::create_dir_all(&args.out).map_err(|e| file(&args.out, &e))?;
     let md = report::markdown(&results, args.level);
     for (name, text) in [("stress.csv", report::csv(&results)), ("stress.md", md.clone())] {
-        let path = args.out.join(name);
-        std::fs::write(&path, text).map_err(|e| file(&path, &e))?;
+        out.write_bytes(name, text.as_bytes()).map_err(|e| file(&args.out.join(name), &e))?;
     }
+    out.finish(|name| name == "stress.csv" || name == "stress.md", |_| Ok(vec![])).map_err(|e| file(&args.out, &e))?;
     Ok(md)
 }

@@ -1,0 +1,479 @@
+//! Output folders that are whole or absent: the one way every writer of the project puts files
+//! into a folder.
+//!
+//! ```text
+//! OutputDir::prepare(dir, manifest)   before any work: create dir, check it is a writable
+//!                                     directory, take the lock file (create_new; stale lock of a
+//!                                     dead process replaced), read the previous manifest
+//! out.write_bytes(name, bytes)        each file: written to .contact2d-tmp-<pid>-<name> in the
+//! out.write_with(name, |tmp| ...)     same folder, synced, renamed onto <name> (atomic on one
+//!                                     file system); the first write removes the old manifest
+//! out.stream(name)                    a file that grows while the work goes on (rows flushed as
+//!                                     they finish) as <name>.partial, renamed by commit()
+//! out.finish(manifest_bytes, is_own)  remove stale files (listed by the previous manifest, or
+//!                                     named like our outputs by is_own) not written now, then
+//!                                     write the manifest last, then release the lock
+//! ```
+//! A folder therefore holds either a manifest and exactly the files it lists, or no manifest
+//! (a run that failed or was killed while writing). Dropping an [`OutputDir`] without
+//! [`OutputDir::finish`] removes the files this run wrote (except streamed `.partial` files,
+//! which keep what was finished), those the previous manifest listed if writing had started,
+//! and the lock. Nothing here knows what the files contain.
+//!
+//! A manifest is a JSON object with `"written_by"` (starting with `contact2d`) and `"files"` (the
+//! file names of the run, the manifest last); [`manifest_json`] adds both to any JSON object.
+
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+
+use super::OutputError;
+
+/// The lock file every writer creates in its folder while it writes.
+pub const LOCK_FILE: &str = ".contact2d.lock";
+
+/// The prefix of temporary files (`.contact2d-tmp-<pid>-<name>`: the extension stays the final
+/// one, so writers that choose the format by extension work on the temporary path).
+pub const TEMP_PREFIX: &str = ".contact2d-tmp-";
+
+/// The suffix of a streamed file until [`StreamedFile::commit`].
+pub const PARTIAL_SUFFIX: &str = ".partial";
+
+/// An output folder being written: locked against other writers, every file atomic.
+#[derive(Debug)]
+pub struct OutputDir {
+    dir: PathBuf,
+    lock: PathBuf,
+    manifest: Option<String>,
+    previous: Vec<String>,
+    written: Vec<String>,
+    manifest_removed: bool,
+    finished: bool,
+}
+
+impl OutputDir {
+    /// Creates `dir` if missing, checks that it is a writable directory, takes its lock and reads
+    /// the file list of a previous manifest named `manifest` (if any): call it before the work
+    /// whose results go there, so that a bad folder fails fast.
+    ///
+    /// # Errors
+    /// [`OutputError::NotADirectory`], [`OutputError::Io`] (cannot be created or written),
+    /// [`OutputError::Locked`] when another live process holds the lock.
+    pub fn prepare(dir: &Path, manifest: Option<&str>) -> Result<OutputDir, OutputError> {
+        if dir.exists() && !dir.is_dir() {
+            return Err(OutputError::NotADirectory { path: dir.to_path_buf() });
+        }
+        std::fs::create_dir_all(dir).map_err(|e| OutputError::io(dir, e))?;
+        let lock = dir.join(LOCK_FILE);
+        take_lock(dir, &lock)?;
+        let previous = manifest.map_or_else(Vec::new, |m| previous_files(&dir.join(m)));
+        Ok(OutputDir {
+            dir: dir.to_path_buf(),
+            lock,
+            manifest: manifest.map(String::from),
+            previous,
+            written: vec![],
+            manifest_removed: false,
+            finished: false,
+        })
+    }
+
+    /// The folder.
+    pub fn path(&self) -> &Path {
+        &self.dir
+    }
+
+    /// The file names written so far, in order.
+    pub fn written(&self) -> &[String] {
+        &self.written
+    }
+
+    /// Writes `bytes` to `name` atomically (temporary file, sync, rename); returns the final path.
+    ///
+    /// # Errors
+    /// [`OutputError::Io`] naming the file (the temporary file is removed).
+    pub fn write_bytes(&mut self, name: &str, bytes: &[u8]) -> Result<PathBuf, OutputError> {
+        self.write_with(name, |tmp| {
+            let mut f = std::fs::File::create(tmp).map_err(|e| OutputError::io(tmp, e))?;
+            f.write_all(bytes).map_err(|e| OutputError::io(tmp, e))
+        })
+    }
+
+    /// Runs `write` on a temporary path in the folder (same extension as `name`), then syncs and
+    /// renames it onto `name`; returns the final path. On any error the temporary file is removed
+    /// and `name` is left as it was; the error names `name`'s final path.
+    ///
+    /// # Errors
+    /// `write`'s error, or [`OutputError::Io`] when syncing or renaming fails.
+    pub fn write_with(
+        &mut self,
+        name: &str,
+        write: impl FnOnce(&Path) -> Result<(), OutputError>,
+    ) -> Result<PathBuf, OutputError> {
+        let target = self.target(name)?;
+        self.remove_old_manifest()?;
+        let tmp = self.dir.join(format!("{TEMP_PREFIX}{}-{name}", std::process::id()));
+        if let Err(e) = write(&tmp).and_then(|()| commit(&tmp, &target)) {
+            let _ = std::fs::remove_file(&tmp);
+            return Err(e.at_path(&tmp, &target));
+        }
+        self.record(name);
+        Ok(target)
+    }
+
+    /// Opens `name` + [`PARTIAL_SUFFIX`] for a file written piece by piece (each
+    /// [`StreamedFile::append`] is flushed, so an interrupted run keeps what was finished);
+    /// [`StreamedFile::commit`] renames it onto `name`.
+    ///
+    /// # Errors
+    /// [`OutputError::Io`] when the file cannot be created.
+    pub fn stream(&mut self, name: &str) -> Result<StreamedFile, OutputError> {
+        let target = self.target(name)?;
+        self.remove_old_manifest()?;
+        let partial = self.dir.join(format!("{name}{PARTIAL_SUFFIX}"));
+        let file = std::fs::File::create(&partial).map_err(|e| OutputError::io(&partial, e))?;
+        Ok(StreamedFile { file: std::io::BufWriter::new(file), partial, target })
+    }
+
+    /// Records a streamed file that was committed (so that it is kept and listed).
+    pub fn record_streamed(&mut self, file: &Path) {
+        if let Some(name) = file.file_name().and_then(|n| n.to_str()) {
+            self.record(name);
+        }
+    }
+
+    /// Ends the run: removes stale files — those the previous manifest listed, those `is_own`
+    /// recognises as this writer's outputs, temporary and `.partial` files — that this run did not
+    /// write, then writes the manifest (when the folder has one) from `manifest(files)` with the
+    /// run's file names (the manifest's own name last), then releases the lock. Returns the paths
+    /// of the run's files, the manifest last.
+    ///
+    /// # Errors
+    /// [`OutputError::Io`] when a stale file cannot be removed or the manifest cannot be written.
+    pub fn finish(
+        mut self,
+        is_own: impl Fn(&str) -> bool,
+        manifest: impl FnOnce(&[String]) -> Result<Vec<u8>, OutputError>,
+    ) -> Result<Vec<PathBuf>, OutputError> {
+        self.remove_stale(&is_own)?;
+        if let Some(name) = self.manifest.clone() {
+            let mut files = self.written.clone();
+            files.push(name.clone());
+            let bytes = manifest(&files)?;
+            self.write_bytes(&name, &bytes)?;
+        }
+        self.finished = true;
+        let _ = std::fs::remove_file(&self.lock);
+        Ok(self.written.iter().map(|n| self.dir.join(n)).collect())
+    }
+
+    fn target(&self, name: &str) -> Result<PathBuf, OutputError> {
+        if !plain_name(name) || name == LOCK_FILE {
+            return Err(OutputError::MissingData {
+                path: self.dir.join(name),
+                reason: "an output name must be a plain file name".into(),
+            });
+        }
+        Ok(self.dir.join(name))
+    }
+
+    fn record(&mut self, name: &str) {
+        if !self.written.iter().any(|w| w == name) {
+            self.written.push(name.to_string());
+        }
+    }
+
+    /// The first write invalidates the previous run's manifest, so that an interrupted run
+    /// leaves no manifest beside a mix of files.
+    fn remove_old_manifest(&mut self) -> Result<(), OutputError> {
+        if self.manifest_removed {
+            return Ok(());
+        }
+        if let Some(name) = &self.manifest {
+            let path = self.dir.join(name);
+            match std::fs::remove_file(&path) {
+                Ok(()) => {}
+                Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
+                Err(e) => return Err(OutputError::io(path, e)),
+            }
+        }
+        self.manifest_removed = true;
+        Ok(())
+    }
+
+    fn remove_stale(&self, is_own: &impl Fn(&str) -> bool) -> Result<(), OutputError> {
+        let entries = std::fs::read_dir(&self.dir).map_err(|e| OutputError::io(&self.dir, e))?;
+        for entry in entries.flatten() {
+            let Some(name) = entry.file_name().to_str().map(String::from) else { continue };
+            if self.written.contains(&name) || name == LOCK_FILE || self.manifest.as_deref() == Some(name.as_str()) {
+                continue;
+            }
+            let leftover = name.starts_with(TEMP_PREFIX)
+                || name
+                    .strip_suffix(PARTIAL_SUFFIX)
+                    .is_some_and(|stem| is_own(stem) || self.previous.iter().any(|p| p == stem));
+            if !(leftover || self.previous.contains(&name) || is_own(&name)) {
+                continue;
+            }
+            // Only regular files: a directory or link of the user's with an output's name stays.
+            if entry.file_type().is_ok_and(|t| t.is_file()) {
+                let path = entry.path();
+                std::fs::remove_file(&path).map_err(|e| OutputError::io(path, e))?;
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Drop for OutputDir {
+    fn drop(&mut self) {
+        if self.finished {
+            return;
+        }
+        // A failed run leaves no half folder: its files go (streamed .partial files stay), and
+        // once writing has started (the previous manifest removed) so do the previous run's.
+        let previous = if self.manifest_removed { self.previous.as_slice() } else { &[] };
+        for name in self.written.iter().chain(previous) {
+            let path = self.dir.join(name);
+            if std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+                let _ = std::fs::remove_file(path);
+            }
+        }
+        let _ = std::fs::remove_file(&self.lock);
+    }
+}
+
+/// A file growing while the work goes on, flushed after every piece: `<name>.partial` until
+/// [`StreamedFile::commit`].
+#[derive(Debug)]
+pub struct StreamedFile {
+    file: std::io::BufWriter<std::fs::File>,
+    partial: PathBuf,
+    target: PathBuf,
+}
+
+impl StreamedFile {
+    /// Appends `text` and flushes it to the operating system.
+    ///
+    /// # Errors
+    /// [`OutputError::Io`] naming the `.partial` file.
+    pub fn append(&mut self, text: &str) -> Result<(), OutputError> {
+        self.file
+            .write_all(text.as_bytes())
+            .and_then(|()| self.file.flush())
+            .map_err(|e| OutputError::io(&self.partial, e))
+    }
+
+    /// The `.partial` path being written.
+    pub fn partial_path(&self) -> &Path {
+        &self.partial
+    }
+
+    /// Syncs the file and renames it onto its final name; returns the final path (pass it to
+    /// [`OutputDir::record_streamed`]).
+    ///
+    /// # Errors
+    /// [`OutputError::Io`].
+    pub fn commit(mut self) -> Result<PathBuf, OutputError> {
+        self.file.flush().map_err(|e| OutputError::io(&self.partial, e))?;
+        commit(&self.partial, &self.target)?;
+        Ok(self.target)
+    }
+
+    /// Discards the streamed file (e.g. when the whole file is written afresh in another order).
+    pub fn discard(self) {
+        let _ = std::fs::remove_file(&self.partial);
+    }
+}
+
+/// A JSON manifest: `value` (an object; anything else is wrapped as `{"value": ...}`) with
+/// `"written_by": "contact2d <version>"` and `"files"`, pretty-printed with a final newline.
+///
+/// # Errors
+/// [`OutputError::Serialize`] if serde_json fails.
+pub fn manifest_json(value: serde_json::Value, files: &[String], path: &Path) -> Result<Vec<u8>, OutputError> {
+    let mut object = match value {
+        serde_json::Value::Object(o) => o,
+        other => std::iter::once(("value".to_string(), other)).collect(),
+    };
+    object.insert("written_by".into(), format!("contact2d {}", env!("CARGO_PKG_VERSION")).into());
+    object.insert("files".into(), files.iter().map(|f| serde_json::Value::from(f.as_str())).collect());
+    let text = serde_json::to_string_pretty(&object)
+        .map_err(|e| OutputError::Serialize { path: path.to_path_buf(), reason: e.to_string() })?;
+    Ok((text + "\n").into_bytes())
+}
+
+/// Syncs `tmp` to disk and renames it onto `target`.
+fn commit(tmp: &Path, target: &Path) -> Result<(), OutputError> {
+    let file = std::fs::File::open(tmp).map_err(|e| OutputError::io(tmp, e))?;
+    file.sync_all().map_err(|e| OutputError::io(tmp, e))?;
+    std::fs::rename(tmp, target).map_err(|e| OutputError::io(target, e))
+}
+
+/// A name without a directory part (no separator, not `.` or `..`, not empty, no NUL).
+fn plain_name(name: &str) -> bool {
+    !name.is_empty() && name != "." && name != ".." && !name.contains(['/', '\\', '\0'])
+}
+
+/// Creates the lock file with create_new; a lock left by a process that no longer runs is
+/// replaced once.
+fn take_lock(dir: &Path, lock: &Path) -> Result<(), OutputError> {
+    for attempt in 0..2 {
+        match std::fs::OpenOptions::new().write(true).create_new(true).open(lock) {
+            Ok(mut f) => {
+                return f
+                    .write_all(format!("{}\n", std::process::id()).as_bytes())
+                    .and_then(|()| f.sync_all())
+                    .map_err(|e| {
+                        let _ = std::fs::remove_file(lock);
+                        OutputError::io(lock, e)
+                    });
+            }
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
+                let pid = std::fs::read_to_string(lock).ok().and_then(|t| t.trim().parse::<u32>().ok());
+                let dead = pid.is_some_and(|p| p != std::process::id() && process_is_gone(p));
+                if attempt == 0 && dead {
+                    let _ = std::fs::remove_file(lock);
+                    continue;
+                }
+                return Err(OutputError::Locked { dir: dir.to_path_buf(), lock: lock.to_path_buf(), pid });
+            }
+            Err(e) => return Err(OutputError::io(dir, e)),
+        }
+    }
+    Err(OutputError::Locked { dir: dir.to_path_buf(), lock: lock.to_path_buf(), pid: None })
+}
+
+/// Whether no process `pid` runs (known on systems with `/proc`; elsewhere a lock is never
+/// taken for stale).
+fn process_is_gone(pid: u32) -> bool {
+    Path::new("/proc/self").exists() && !Path::new(&format!("/proc/{pid}")).exists()
+}
+
+/// The file names a previous contact2d manifest lists (plain names only; empty when there is no
+/// manifest or it is not ours).
+fn previous_files(manifest: &Path) -> Vec<String> {
+    // A manifest is small; a huge or unreadable file at that name is not one of ours.
+    let small = std::fs::metadata(manifest).is_ok_and(|m| m.is_file() && m.len() < 64 << 20);
+    let value: Option<serde_json::Value> =
+        small.then(|| std::fs::read(manifest).ok()).flatten().and_then(|b| serde_json::from_slice(&b).ok());
+    let Some(value) = value else { return vec![] };
+    let ours = value.get("written_by").and_then(|w| w.as_str()).is_some_and(|w| w.starts_with("contact2d"));
+    let files = value.get("files").and_then(|f| f.as_array());
+    match (ours, files) {
+        (true, Some(files)) => files
+            .iter()
+            .filter_map(|f| f.as_str())
+            .filter(|f| plain_name(f) && *f != LOCK_FILE)
+            .map(String::from)
+            .collect(),
+        _ => vec![],
+    }
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+
+    fn temp_dir(name: &str) -> PathBuf {
+        let dir = std::env::temp_dir().join(format!("contact2d_atomic_{name}_{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        dir
+    }
+
+    fn names(dir: &Path) -> Vec<String> {
+        let mut n: Vec<String> =
+            std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        n.sort();
+        n
+    }
+
+    fn manifest(files: &[String]) -> Result<Vec<u8>, OutputError> {
+        manifest_json(serde_json::json!({}), files, Path::new("m.json"))
+    }
+
+    #[test]
+    fn a_second_writer_is_refused_and_the_lock_goes_with_the_first() {
+        let dir = temp_dir("lock");
+        let first = OutputDir::prepare(&dir, Some("m.json")).unwrap();
+        assert!(matches!(OutputDir::prepare(&dir, Some("m.json")), Err(OutputError::Locked { .. })));
+        drop(first);
+        assert!(!dir.join(LOCK_FILE).exists());
+        // A lock of a process that no longer runs (pid beyond Linux's pid_max) is replaced.
+        std::fs::write(dir.join(LOCK_FILE), "4194305\n").unwrap();
+        let out = OutputDir::prepare(&dir, None).unwrap();
+        out.finish(|_| false, manifest).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn the_manifest_lists_exactly_the_files_and_stale_ones_go() {
+        let dir = temp_dir("stale");
+        let own = |n: &str| n.starts_with("step_");
+        let mut out = OutputDir::prepare(&dir, Some("m.json")).unwrap();
+        for name in ["a.txt", "step_000.vtu", "step_001.vtu"] {
+            out.write_bytes(name, b"x").unwrap();
+        }
+        out.finish(own, manifest).unwrap();
+        std::fs::write(dir.join("user_notes.txt"), "mine").unwrap();
+        // A shorter second run: a.txt and step_001.vtu are stale, the user's file stays.
+        let mut out = OutputDir::prepare(&dir, Some("m.json")).unwrap();
+        out.write_bytes("step_000.vtu", b"y").unwrap();
+        let written = out.finish(own, manifest).unwrap();
+        assert_eq!(written.len(), 2);
+        assert_eq!(names(&dir), ["m.json", "step_000.vtu", "user_notes.txt"]);
+        let m: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("m.json")).unwrap()).unwrap();
+        assert_eq!(m["files"], serde_json::json!(["step_000.vtu", "m.json"]));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_failed_write_leaves_neither_the_file_nor_a_manifest() {
+        let dir = temp_dir("fail");
+        let mut out = OutputDir::prepare(&dir, Some("m.json")).unwrap();
+        out.write_bytes("a.txt", b"old").unwrap();
+        out.finish(|_| false, manifest).unwrap();
+        let mut out = OutputDir::prepare(&dir, Some("m.json")).unwrap();
+        out.write_bytes("b.txt", b"new").unwrap();
+        let failed: Result<PathBuf, OutputError> = out.write_with("a.txt", |tmp| {
+            std::fs::write(tmp, "half").unwrap();
+            Err(OutputError::io(tmp, std::io::Error::other("disk full")))
+        });
+        let message = failed.unwrap_err().to_string();
+        assert!(message.contains("a.txt") && !message.contains(TEMP_PREFIX), "names the file: {message}");
+        assert_eq!(std::fs::read_to_string(dir.join("a.txt")).unwrap(), "old", "the old file is untouched");
+        drop(out);
+        // The run's own files, the previous run's (its manifest already gone) and the lock are
+        // gone: the folder is absent rather than half.
+        assert!(names(&dir).is_empty(), "{:?}", names(&dir));
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn streamed_rows_survive_until_commit() {
+        let dir = temp_dir("stream");
+        let mut out = OutputDir::prepare(&dir, None).unwrap();
+        let mut s = out.stream("rows.csv").unwrap();
+        s.append("a\n").unwrap();
+        assert_eq!(std::fs::read_to_string(dir.join("rows.csv.partial")).unwrap(), "a\n");
+        let path = s.commit().unwrap();
+        out.record_streamed(&path);
+        out.finish(|_| false, manifest).unwrap();
+        assert_eq!(names(&dir), ["rows.csv"]);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_file_where_the_folder_should_be_is_refused() {
+        let file = temp_dir("notdir");
+        std::fs::write(&file, "x").unwrap();
+        assert!(matches!(OutputDir::prepare(&file, None), Err(OutputError::NotADirectory { .. })));
+        assert!(matches!(OutputDir::prepare(&file.join("sub"), None), Err(OutputError::Io { .. })));
+        std::fs::remove_file(&file).unwrap();
+        let dir = temp_dir("names");
+        let mut out = OutputDir::prepare(&dir, None).unwrap();
+        assert!(out.write_bytes("../escape.txt", b"x").is_err());
+        drop(out);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+}
