@@ -85,6 +85,7 @@ enum Command {
     /// Examples:
     ///   contact2d sweep scenes/plate_insert_nogap_mu0.toml --vary plate_insert.friction=0,0.1,0.2,0.3
     ///   contact2d sweep scenes/plate_insert_nogap_mu03.toml --vary plate_insert.stiffness_ratio=0.01,0.1,1,10,100 --vary plate_insert.friction=0,0.3 --plot l,b,P,K --out out/stiffness
+    ///   contact2d sweep scenes/generic/pin_lug.toml --vary contact.bore.friction=0,0.1,0.2,0.4 --plot contacts.bore.contact_length,contacts.bore.max_pressure
     ///   contact2d sweep scenes/plate_insert_gap_v1_mu03.toml --vary plate_insert.steps=1,2,3,5,10,20 --set plate_insert.mesh='"../meshes/plate_insert/plate_insert_eps0.05_N32.msh"' --quiet
     #[command(verbatim_doc_comment)]
     Sweep {
@@ -98,9 +99,11 @@ enum Command {
         /// Override a scene value for every run, as in `run` (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
-        /// The outputs to plot, comma-separated: l, b, P, Phi_E1, Phi_E2, Phi_f, W, sigma_star, K,
-        /// insert_hoop_max.
-        #[arg(long, value_name = "NAMES", default_value = "l,b,P")]
+        /// The outputs to plot, comma-separated: for the flagship's scenes l, b, P, Phi_E1, Phi_E2,
+        /// Phi_f, W, sigma_star, K, insert_hoop_max; for generic scenes any number of the JSON summary
+        /// by its dotted path (e.g. contacts.hertz.max_pressure, reactions.block_bottom.1; default:
+        /// each interface's normal force and contact length).
+        #[arg(long, value_name = "NAMES", default_value = DEFAULT_PLOT)]
         plot: String,
         /// The output directory (default: out/sweep_<scene file name>).
         #[arg(long, value_name = "DIR")]
@@ -312,6 +315,9 @@ fn sweep(
     };
     use std::io::IsTerminal;
     let variations = vary.iter().map(|v| Variation::parse(v)).collect::<Result<Vec<_>, _>>()?;
+    if contact2d::generic::scene::is_generic(&contact2d::scene::read_scene_text(scene)?) {
+        return sweep_generic(scene, &variations, set, plot, out, quiet);
+    }
     // Unknown or repeated keys and oversized grids fail before any run.
     let runs = check_variations(&variations)?;
     let plots = plot.split(',').filter(|p| !p.trim().is_empty()).map(Quantity::parse).collect::<Result<Vec<_>, _>>()?;
@@ -364,6 +370,58 @@ fn sweep(
     }
     Ok(())
 }
+
+/// `sweep` on a generic scene: any key varied, any JSON number plotted by its dotted path.
+fn sweep_generic(
+    scene: &std::path::Path,
+    variations: &[contact2d::sweep::Variation],
+    set: &[String],
+    plot: &str,
+    out: Option<std::path::PathBuf>,
+    quiet: bool,
+) -> anyhow::Result<()> {
+    use contact2d::generic::sweep::{
+        check_generic_variations, csv_header, csv_row, default_quantities, markdown, run_generic_sweep,
+        write_generic_sweep,
+    };
+    check_generic_variations(scene, variations, set)?;
+    let base = contact2d::generic::load_scene(scene, set)?;
+    // The flagship's default plot list means "the default" here: each interface's resultants.
+    let quantities: Vec<String> = if plot == DEFAULT_PLOT {
+        default_quantities(&base.contact.iter().map(|c| c.name.clone()).collect::<Vec<_>>())
+    } else {
+        plot.split(',').map(|p| p.trim().to_string()).filter(|p| !p.is_empty()).collect()
+    };
+    let stem = scene.file_stem().map_or("scene".into(), |s| s.to_string_lossy().into_owned());
+    let dir = out.unwrap_or_else(|| std::path::PathBuf::from("out").join(format!("sweep_{stem}")));
+    let mut folder = contact2d::output::OutputDir::prepare(&dir, None)?;
+    let mut partial = folder.stream("sweep.csv")?;
+    partial.append(&csv_header(variations, &quantities))?;
+    let partial = std::sync::Mutex::new(partial);
+    let rows = run_generic_sweep(scene, variations, set, |row| {
+        if let Ok(mut file) = partial.lock() {
+            let _ = file.append(&csv_row(row, &quantities));
+        }
+    });
+    drop(partial);
+    let written = write_generic_sweep(folder, &base.name, variations, &rows, &quantities)?;
+    let mut stdout = std::io::stdout().lock();
+    if !quiet {
+        write!(stdout, "{}", markdown(variations, &rows, &quantities))?;
+    }
+    let failed = rows.iter().filter(|r| r.result.is_err()).count();
+    writeln!(stdout, "{} runs ({failed} failed); wrote {} files:", rows.len(), written.len())?;
+    for p in &written {
+        writeln!(stdout, "  {}", p.display())?;
+    }
+    if failed == rows.len() {
+        anyhow::bail!("every run of the sweep failed");
+    }
+    Ok(())
+}
+
+/// The `--plot` default of `sweep`.
+const DEFAULT_PLOT: &str = "l,b,P";
 
 fn print_report(out: &mut impl Write, r: &contact2d::run::RunReport) -> std::io::Result<()> {
     let opt = |v: Option<f64>| v.map_or("-".to_string(), |x| format!("{x:.4}"));

@@ -46,3 +46,41 @@ fn generic_outputs_are_listed_whole_and_replace_an_earlier_run() {
     assert!(!files.iter().any(|f| f.contains("joint") || f == "step_001.vtu" || f.starts_with("history")), "{files:?}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn a_generic_sweep_varies_an_array_entry_and_tabulates_dotted_quantities() {
+    // Coulomb: in gross sliding the tangential force is μ P, for each μ of the sweep (P = 1000).
+    let dir = std::env::temp_dir().join(format!("contact2d_generic_sweep_{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let out = Command::new(env!("CARGO_BIN_EXE_contact2d"))
+        .args(["sweep", "scenes/generic/two_blocks_press_slide.toml", "--quiet", "--vary"])
+        .arg("contact.joint.friction=0.1,0.2")
+        .args(["--plot", "contacts.joint.tangential_force,reactions.lower_bottom.1", "--out"])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let csv = std::fs::read_to_string(dir.join("sweep.csv")).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "contact.joint.friction,status,contacts.joint.tangential_force,reactions.lower_bottom.1,iterations,error"
+    );
+    for (line, mu) in lines.zip([0.1, 0.2]) {
+        let cells: Vec<&str> = line.split(',').collect();
+        assert_eq!(cells[1], "converged");
+        let tangential: f64 = cells[2].parse().unwrap();
+        assert!((tangential.abs() - mu * 1000.0).abs() < 1e-7 * 1000.0, "{line}");
+        let vertical: f64 = cells[3].parse().unwrap();
+        assert!((vertical - 1000.0).abs() < 1e-7 * 1000.0, "{line}");
+    }
+    assert!(dir.join("sweep_contacts_joint_tangential_force.svg").exists());
+    // An entry that does not exist is refused before any run.
+    let bad = Command::new(env!("CARGO_BIN_EXE_contact2d"))
+        .args(["sweep", "scenes/generic/two_blocks_press_slide.toml", "--vary", "contact.nope.friction=0.1"])
+        .output()
+        .unwrap();
+    assert_eq!(bad.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("nope"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -9,6 +9,7 @@
 pub mod outputs;
 pub mod results;
 pub mod scene;
+pub mod sweep;
 
 use std::collections::BTreeMap;
 use std::path::Path;
