@@ -21,16 +21,14 @@
 //! supernodal when worthwhile, global parallelism), so that the symbolic and numeric times and the
 //! size of `L` can be reported separately.
 //!
-//! Prototypes, to measure what a change in the library would gain:
-//! * `--assembly pattern`: the rigid-mode check with a `Vec` union-find, then the CSC pattern of
-//!   `K_ff` from the node graph and element matrices added in place, in parallel over column
-//!   blocks (no triplets, no sort); `--verify` compares it entry by entry with `assemble`.
-//! * `--ordering amd-nodes`: AMD on the node graph (each node's DOFs together) instead of the DOF graph.
-//! * `--ordering nd`: the library's nested dissection (`contact2d_fem::fill_reducing_permutation`);
-//!   `--ordering nd-proto`: its first prototype (leaves of 8 nodes in the order they come).
+//! Variants, to measure what a change would gain:
+//! * `--ordering nd`: the library's nested dissection (`contact2d_fem::fill_reducing_permutation`)
+//!   instead of faer's AMD.
 //! * `--index u32`: the factorisation with 32-bit instead of 64-bit sparse indices.
-//! * `--breakdown`: the pieces of `assemble` timed one by one through the public API, the triplet
-//!   sort on its own, and a refill of a kept pattern (`new_from_argsort`).
+//!
+//! (The prototypes of the pattern assembly and the nested dissection that docs/benchmarks.md
+//! measured first are now the library's own `assemble` and `fill_reducing_permutation`; their
+//! copies here were removed.)
 //!
 //! The peak resident set size after each phase is read from `/proc/self/status` (Linux).
 //!
@@ -51,22 +49,6 @@ use faer::sparse::linalg::cholesky::{LltRef, SymbolicCholeskyRaw, SymmetricOrder
 use faer::sparse::{SparseColMat, SparseColMatRef, SymbolicSparseColMat};
 use faer::{Conj, Mat, Side};
 
-#[path = "bench_linear/prototypes.rs"]
-mod prototypes;
-
-use prototypes::{
-    assemble_pattern, breakdown, check_rigid_modes_fast, nested_dissection, node_amd, tip_load, verify_against_crate,
-};
-
-/// How `K_ff` is assembled.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-enum Assembly {
-    /// `contact2d_fem::assemble` (triplets summed by `SparseColMat::try_new_from_triplets`).
-    Crate,
-    /// The prototype [`assemble_pattern`].
-    Pattern,
-}
-
 /// The integer type of the sparse indices handed to the factorisation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum IndexWidth {
@@ -81,12 +63,8 @@ enum IndexWidth {
 enum Ordering {
     /// faer's default, approximate minimum degree.
     Amd,
-    /// The prototype [`node_amd`]: AMD on the node graph.
-    AmdNodes,
     /// The library's nested dissection (`contact2d_fem::fill_reducing_permutation`).
     Nd,
-    /// The first prototype of the nested dissection (leaves of 8 nodes, one axis per split).
-    NdProto,
 }
 
 /// The cell type of the structured mesh.
@@ -110,21 +88,12 @@ struct Args {
     /// Cell type.
     #[arg(long, value_enum, default_value_t = Cell::Q9)]
     cell: Cell,
-    /// Assembly of `K_ff`.
-    #[arg(long, value_enum, default_value_t = Assembly::Crate)]
-    assembly: Assembly,
     /// Fill-reducing ordering.
     #[arg(long, value_enum, default_value_t = Ordering::Amd)]
     ordering: Ordering,
     /// Index width of the factorisation.
     #[arg(long, value_enum, default_value_t = IndexWidth::U64)]
     index: IndexWidth,
-    /// With `--assembly pattern`: also run `assemble` and compare the two matrices.
-    #[arg(long)]
-    verify: bool,
-    /// Time the pieces of `assemble` one by one instead of solving.
-    #[arg(long)]
-    breakdown: bool,
 }
 
 /// Wall-clock time, CPU time and peak RSS after each phase.
@@ -184,27 +153,13 @@ fn main() -> Result<()> {
 
     let model = setup_model(mesh)?;
     phases.lap("model setup (add_body)");
-    if args.breakdown {
-        return breakdown(&model);
-    }
-
-    let (k, rhs, dofs) = match args.assembly {
-        Assembly::Crate => {
-            let system = assemble(&model)?;
-            let rhs = system.rhs(system.dofs.prescribed_values());
-            (system.stiffness, rhs, system.dofs)
-        }
-        Assembly::Pattern => {
-            let dofs = model.dof_map()?;
-            check_rigid_modes_fast(&model, &dofs)?;
-            (assemble_pattern(&model, &dofs)?, tip_load(&model, &dofs)?, dofs)
-        }
-    };
+    let system = assemble(&model)?;
+    let rhs = system.rhs(system.dofs.prescribed_values());
+    let (k, dofs) = (system.stiffness, system.dofs);
     phases.lap("assembly");
 
     let perm = match args.ordering {
         Ordering::Amd => None,
-        Ordering::AmdNodes => Some(node_amd(&model, &dofs)?),
         Ordering::Nd => {
             let forward = fill_reducing_permutation(&model, &dofs, &k, FemOrdering::NestedDissection, &[])?;
             let mut inverse = vec![0; forward.len()];
@@ -213,7 +168,6 @@ fn main() -> Result<()> {
             }
             Some((forward, inverse))
         }
-        Ordering::NdProto => Some(nested_dissection(&model, &dofs)),
     };
     if perm.is_some() {
         phases.lap("ordering");
@@ -228,9 +182,6 @@ fn main() -> Result<()> {
         }
     };
     report(&args, &model, &k, &dofs, &stats, &u, &rhs, &phases);
-    if args.verify && args.assembly == Assembly::Pattern {
-        verify_against_crate(&model, &k)?;
-    }
     Ok(())
 }
 
@@ -350,7 +301,7 @@ fn report(
 ) {
     let nnz_lower = k.compute_nnz();
     println!("requested DOFs       {}", args.dofs);
-    println!("assembly/order/index {:?}, {:?}, {:?}", args.assembly, args.ordering, args.index);
+    println!("order/index {:?}, {:?}", args.ordering, args.index);
     println!("rayon threads        {}", rayon::current_num_threads());
     println!("nodes                {}", model.mesh.num_nodes());
     println!("elements ({:?})       {}", args.cell, model.bodies.iter().map(|b| b.num_cells()).sum::<usize>());

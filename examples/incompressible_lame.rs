@@ -18,7 +18,7 @@ use contact2d::element::{Formulation, LOCKING_POISSON_THRESHOLD, PlaneCondition}
 use contact2d::mesh::CellKind;
 use contact2d::run::run_scene;
 use contact2d::scene::Scene;
-use contact2d::verify::lame::{LameLevel, LameSetup, lame_study, standard_levels};
+use contact2d_verification::lame::{LameLevel, LameSetup, lame_study, standard_levels};
 
 const LAME_NUS: [f64; 4] = [0.3, 0.45, 0.49, 0.4999];
 const FLAGSHIP_NUS: [f64; 6] = [0.3, 0.45, 0.49, 0.499, 0.4999, 0.4999999];

@@ -11,7 +11,7 @@
 use std::time::Instant;
 
 use contact2d::mesh::CellKind;
-use contact2d::verify::{balance, kirsch, lame, patch, report};
+use contact2d_verification::{balance, kirsch, lame, patch, report};
 
 const BEGIN: &str = "<!-- BEGIN plane-elasticity -->";
 const END: &str = "<!-- END plane-elasticity -->";

@@ -50,8 +50,8 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use contact2d::verify::analytic::KirschPlate;
-use contact2d::verify::kirsch::{
+use contact2d_verification::analytic::KirschPlate;
+use contact2d_verification::kirsch::{
     PlateWithHole, STANDARD_KIND, STANDARD_LEVELS, howland_studies, kirsch_studies, solve_scf,
 };
 
@@ -85,8 +85,8 @@ fn square_plate_tends_to_kirsch() {
     for s in &studies {
         assert!(s.mesh_change() < 5e-3, "a/W = {}: SCF changed by {:.3} %", s.plate.radius, 100.0 * s.mesh_change());
     }
-    let scf_gap = |s: &contact2d::verify::kirsch::ScfStudy| s.scf() - KirschPlate::SCF;
-    let hoop_gap = |s: &contact2d::verify::kirsch::ScfStudy| s.levels.last().unwrap().hoop_at_zero + 1.0;
+    let scf_gap = |s: &contact2d_verification::kirsch::ScfStudy| s.scf() - KirschPlate::SCF;
+    let hoop_gap = |s: &contact2d_verification::kirsch::ScfStudy| s.levels.last().unwrap().hoop_at_zero + 1.0;
     for w in studies.windows(2) {
         let (big, small) = (&w[0], &w[1]);
         let ratio = big.plate.radius / small.plate.radius;

@@ -48,7 +48,7 @@
 
 use contact2d::element::PlaneCondition;
 use contact2d::mesh::CellKind;
-use contact2d::verify::lame::{LameSetup, LameStudy, lame_study, standard_levels, theoretical_rates};
+use contact2d_verification::lame::{LameSetup, LameStudy, lame_study, standard_levels, theoretical_rates};
 
 const RATE_TOLERANCE: f64 = 0.15;
 

@@ -52,8 +52,8 @@
 
 use contact2d::element::{Formulation, PlaneCondition};
 use contact2d::mesh::CellKind;
-use contact2d::verify::lame::{LameLevel, LameSetup, LameStudy, lame_study, standard_levels, theoretical_rates};
-use contact2d::verify::patch::{PatchSetup, PatchVariant, run_patch_test_with};
+use contact2d_verification::lame::{LameLevel, LameSetup, LameStudy, lame_study, standard_levels, theoretical_rates};
+use contact2d_verification::patch::{PatchSetup, PatchVariant, run_patch_test_with};
 
 const NU: f64 = 0.4999;
 const RATE_TOLERANCE: f64 = 0.15;

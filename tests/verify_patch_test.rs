@@ -43,7 +43,7 @@
 
 use contact2d::element::PlaneCondition;
 use contact2d::mesh::CellKind;
-use contact2d::verify::patch::{PatchSetup, PatchVariant, distorted_rectangle, run_patch_test};
+use contact2d_verification::patch::{PatchSetup, PatchVariant, distorted_rectangle, run_patch_test};
 
 const TOLERANCE: f64 = 1e-10;
 

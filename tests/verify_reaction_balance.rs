@@ -42,7 +42,7 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use contact2d::verify::balance::balance_cases;
+use contact2d_verification::balance::balance_cases;
 
 #[test]
 fn reactions_balance_the_applied_loads() {

@@ -7,7 +7,7 @@
 //!   M = Σ_n (x_n - o) × (f_n + r_n)          = 0     (× the scalar 2D cross product)
 //! ```
 //!
-//! Two models: the Lamé quarter cylinder of [`crate::verify::lame`] under internal pressure
+//! Two models: the Lamé quarter cylinder of [`crate::lame`] under internal pressure
 //! (resultant of the pressure `p a (1, 1)`, moment about the centre zero, both exact for any
 //! chain of edges whose end nodes lie on the arc) and a cantilever with an end shear.
 
@@ -16,8 +16,8 @@ use contact2d_fem::{Component, EdgeLoad, LinearSystem, Model, Solution, solve_li
 use contact2d_mesh::CellKind;
 use contact2d_mesh::generate::rectangle;
 
-use crate::verify::VerifyError;
-use crate::verify::lame::{LameSetup, lame_model};
+use crate::VerifyError;
+use crate::lame::{LameSetup, lame_model};
 
 /// Resultants of the applied loads and the reactions, about a reference point.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -39,7 +39,7 @@
 
 use contact2d_element::PlaneCondition;
 
-use crate::verify::VerifyError;
+use crate::VerifyError;
 
 /// A displacement field known in closed form, with its strain.
 pub trait ElasticField {
@@ -91,12 +91,12 @@ impl LameCylinder {
     ///
     /// # Examples
     /// ```
-    /// use contact2d::verify::analytic::LameCylinder;
+    /// use contact2d_verification::analytic::LameCylinder;
     /// use contact2d::element::PlaneCondition;
     /// let c = LameCylinder::new(1.0, 2.0, 3.0, 1000.0, 0.3, PlaneCondition::Strain)?;
     /// assert!((c.radial_stress(1.0) + 3.0).abs() < 1e-14); // σ_rr(a) = -p
     /// assert!(c.radial_stress(2.0).abs() < 1e-14); // free outer surface
-    /// # Ok::<(), contact2d::verify::VerifyError>(())
+    /// # Ok::<(), contact2d_verification::VerifyError>(())
     /// ```
     pub fn new(
         inner_radius: f64,

@@ -16,8 +16,8 @@
 use contact2d_element::{ElementType, GaussRule, map_point};
 use contact2d_fem::{BodyId, Model};
 
-use crate::verify::VerifyError;
-use crate::verify::analytic::ElasticField;
+use crate::VerifyError;
+use crate::analytic::ElasticField;
 
 /// Absolute and reference norms of one solution.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -114,7 +114,7 @@ pub fn error_norms(
 ///
 /// # Examples
 /// ```
-/// use contact2d::verify::norms::convergence_rate;
+/// use contact2d_verification::norms::convergence_rate;
 /// // Halving h divides the error by 8: third order.
 /// assert!((convergence_rate(0.2, 8e-3, 0.1, 1e-3) - 3.0).abs() < 1e-12);
 /// ```
@@ -126,7 +126,7 @@ pub fn convergence_rate(h_coarse: f64, error_coarse: f64, h_fine: f64, error_fin
 #[allow(clippy::unwrap_used)]
 mod tests {
     use super::*;
-    use crate::verify::analytic::AffineField;
+    use crate::analytic::AffineField;
     use contact2d_element::{Material, PlaneCondition};
     use contact2d_mesh::{CellKind, generate::rectangle};
 

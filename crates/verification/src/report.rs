@@ -5,10 +5,10 @@ use std::fmt::Write;
 use contact2d_element::PlaneCondition;
 use contact2d_mesh::CellKind;
 
-use crate::verify::analytic::KirschPlate;
-use crate::verify::kirsch::ScfStudy;
-use crate::verify::lame::{LameStudy, theoretical_rates};
-use crate::verify::patch::{PatchResult, PatchVariant};
+use crate::analytic::KirschPlate;
+use crate::kirsch::ScfStudy;
+use crate::lame::{LameStudy, theoretical_rates};
+use crate::patch::{PatchResult, PatchVariant};
 
 /// Short element name: `T3`, `T6`, `Q4`, `Q8`, `Q9`.
 pub fn kind_name(kind: CellKind) -> &'static str {
@@ -138,7 +138,7 @@ pub fn patch_table(results: &[PatchResult]) -> String {
 }
 
 /// The balance checks: residuals of forces and moment, and the load against its closed form.
-pub fn balance_table(cases: &[crate::verify::balance::BalanceCase]) -> String {
+pub fn balance_table(cases: &[crate::balance::BalanceCase]) -> String {
     let mut s = String::from(
         "| model | element | plane | (F + R)₁ / ‖F‖ | (F + R)₂ / ‖F‖ | (M_F + M_R) / (‖F‖ L) | ‖F − F_exact‖ / ‖F_exact‖ |\n\
          |---|---|---|---|---|---|---|\n",
@@ -167,7 +167,7 @@ pub fn balance_table(cases: &[crate::verify::balance::BalanceCase]) -> String {
 #[allow(clippy::unwrap_used)]
 mod tests {
     use super::*;
-    use crate::verify::patch::{PatchSetup, run_patch_test};
+    use crate::patch::{PatchSetup, run_patch_test};
 
     #[test]
     fn tables_have_a_header_a_rule_and_one_row_per_result() {

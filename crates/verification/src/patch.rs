@@ -38,9 +38,9 @@ use contact2d_fem::{
 use contact2d_mesh::generate::rectangle;
 use contact2d_mesh::{CellKind, Mesh};
 
-use crate::verify::VerifyError;
-use crate::verify::analytic::{AffineField, ElasticField};
-use crate::verify::norms::error_rule;
+use crate::VerifyError;
+use crate::analytic::{AffineField, ElasticField};
+use crate::norms::error_rule;
 
 /// Which boundary conditions drive the patch.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -307,7 +307,7 @@ pub fn run_patch_test_with(
     })
 }
 
-/// Every kind of [`crate::verify::balance::KINDS`] in both plane conditions and both variants on
+/// Every kind of [`crate::balance::KINDS`] in both plane conditions and both variants on
 /// the default setup.
 ///
 /// # Errors
@@ -315,8 +315,8 @@ pub fn run_patch_test_with(
 pub fn all_patch_tests() -> Result<Vec<PatchResult>, VerifyError> {
     let setup = PatchSetup::default();
     let mut out = vec![];
-    for kind in crate::verify::balance::KINDS {
-        for plane in crate::verify::balance::PLANES {
+    for kind in crate::balance::KINDS {
+        for plane in crate::balance::PLANES {
             for variant in [PatchVariant::Dirichlet, PatchVariant::Traction] {
                 out.push(run_patch_test(kind, plane, variant, &setup)?);
             }

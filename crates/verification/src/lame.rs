@@ -15,7 +15,7 @@
 //! ```
 //!
 //! Measured: relative L2 and energy-norm errors against [`LameCylinder`] (see
-//! [`crate::verify::norms`]) and the radial stress at the inner wall from the extrapolated
+//! [`crate::norms`]) and the radial stress at the inner wall from the extrapolated
 //! nodal stresses, which must tend to `-p`. A priori estimates for elements of degree `k`
 //! reproducing the complete polynomials of degree `k` on a smooth (asymptotically affine) mesh
 //! family: `‖e‖_L2 = O(h^{k+1})`, `‖e‖_E = O(h^k)`; the isoparametric boundary (chords for
@@ -27,9 +27,9 @@ use contact2d_fem::{BodyId, Component, EdgeLoad, Model, Solution, StressRecovery
 use contact2d_mesh::CellKind;
 use contact2d_mesh::generate::annulus_sector;
 
-use crate::verify::VerifyError;
-use crate::verify::analytic::{LameCylinder, cartesian_to_polar};
-use crate::verify::norms::{ErrorNorms, convergence_rate, error_norms, error_rule};
+use crate::VerifyError;
+use crate::analytic::{LameCylinder, cartesian_to_polar};
+use crate::norms::{ErrorNorms, convergence_rate, error_norms, error_rule};
 
 /// Geometry, load and material of the study.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -180,7 +180,7 @@ pub fn solve_lame(
 }
 
 /// `‖σ_h − σ‖_L2 / ‖σ‖_L2` (Voigt components, unit weights) with the stresses of the body's
-/// formulation, integrated with the error rule of [`crate::verify::norms::error_rule`].
+/// formulation, integrated with the error rule of [`crate::norms::error_rule`].
 fn stress_l2_error(model: &Model, body: BodyId, u: &[f64], exact: &LameCylinder) -> Result<f64, VerifyError> {
     let b = &model.bodies[body.0];
     let (mut err, mut norm) = (0.0, 0.0);

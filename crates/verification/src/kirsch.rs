@@ -30,8 +30,8 @@ use contact2d_fem::{Component, EdgeLoad, Model, StressRecovery, nodal_stresses, 
 use contact2d_mesh::generate::{MappedGrid, Side, mapped_grid};
 use contact2d_mesh::{CellKind, Mesh};
 
-use crate::verify::VerifyError;
-use crate::verify::analytic::{HOWLAND_KT_GROSS, heywood_kt_gross};
+use crate::VerifyError;
+use crate::analytic::{HOWLAND_KT_GROSS, heywood_kt_gross};
 
 /// The quarter plate `[0, L] × [0, B]` minus the quarter hole `r < a`.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -163,8 +163,8 @@ pub fn solve_scf(kind: CellKind, plate: &PlateWithHole, n: usize) -> Result<ScfR
     model.add_edge_load(EdgeLoad::Traction { group: "loaded".into(), traction: [1.0, 0.0] })?;
     let (system, _, solution) = solve_linear(&model)?;
     let tolerance = 1e-9 * plate.radius;
-    let top = crate::verify::node_at(&model.mesh, [0.0, plate.radius], tolerance)?;
-    let side = crate::verify::node_at(&model.mesh, [plate.radius, 0.0], tolerance)?;
+    let top = crate::node_at(&model.mesh, [0.0, plate.radius], tolerance)?;
+    let side = crate::node_at(&model.mesh, [plate.radius, 0.0], tolerance)?;
     let extrapolated = nodal_stresses(&model, body, &solution.displacement, StressRecovery::Extrapolated)?;
     let direct = nodal_stresses(&model, body, &solution.displacement, StressRecovery::Direct)?;
     let missing = |p: [f64; 2]| VerifyError::MissingNode { x: p[0], y: p[1], tolerance };
