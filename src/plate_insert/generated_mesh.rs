@@ -8,7 +8,7 @@ use contact2d_contact::{
 
 use super::PlateInsertProblem;
 use super::contour_history::ContourHistory;
-use super::zone_ends::{PlacedLoading, PlacedStep, eta_order};
+use super::placed::{PlacedLoading, PlacedStep, eta_order};
 
 /// The contact end of the active-set solution at load `w` on the generated mesh.
 pub(super) fn estimate_contact_end(

@@ -20,14 +20,16 @@ mod contour_history;
 mod corners;
 mod generated_mesh;
 mod group_geometry;
+mod placed;
 pub mod published;
 mod results;
 mod roots;
 mod zone_ends;
 pub use contour_history::ContourHistory;
 pub use group_geometry::{MisplacedGroup, check_group_geometry};
+pub use placed::{PlacedLoading, PlacedStep, ZoneEndSearch};
 pub use results::{PLATE_HALF_HEIGHT, PlateInsertResults};
-pub use zone_ends::{PlacedLoading, PlacedStep, ZoneEndSearch, place_zone_ends, solve_placed_history};
+pub use zone_ends::{place_zone_ends, solve_placed_history};
 
 /// Which contour is the master of the pairs (the paper's two variants).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

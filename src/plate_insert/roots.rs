@@ -6,9 +6,23 @@
 //! Illinois:  the same step inside the bracket; the end kept twice has its f halved
 //! ```
 
-use contact2d_contact::ContactError;
+use contact2d_contact::{ContactError, PairState};
 
-use super::zone_ends::Miss;
+/// Why one pass of the zone-end search stopped.
+pub(super) enum Miss {
+    /// A failure to report.
+    Contact(ContactError),
+    /// l* lies beyond its corner's range, about at this η.
+    ContactEnd(f64),
+    /// b* lies beyond its corner's range, about at `towards`, with l at `contact_end`.
+    StickEnd { towards: f64, slip: PairState, contact_end: f64 },
+}
+
+impl From<ContactError> for Miss {
+    fn from(e: ContactError) -> Self {
+        Miss::Contact(e)
+    }
+}
 
 /// Why a root was not found.
 pub(super) enum RootMiss {

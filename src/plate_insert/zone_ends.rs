@@ -22,7 +22,7 @@
 
 use contact2d_contact::{BoussinesqLoading, ContactProblem};
 use contact2d_contact::{
-    BoussinesqStep, ContactError, ContactStatus, Interface, IterationRecord, PairState, StepStart, Zones, finish_zones,
+    ContactError, ContactStatus, Interface, IterationRecord, PairState, StepStart, Zones, finish_zones,
     solve_boussinesq_step, solve_given_zones, stick_end,
 };
 use contact2d_mesh::Mesh;
@@ -30,72 +30,9 @@ use contact2d_mesh::Mesh;
 use super::contour_history::ContourHistory;
 use super::corners::{above, assign_corners, below, placement_limits};
 use super::generated_mesh::{estimate_contact_end, on_generated_mesh};
-use super::roots::find_root;
+use super::placed::{PlacedLoading, PlacedStep, ZoneEndSearch, eta_order};
+use super::roots::{Miss, find_root};
 use super::{NodePlacement, PlateInsert, PlateInsertProblem};
-
-/// How a step with placed zone ends is loaded.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum PlacedLoading {
-    /// The load w is given; l* follows from the Boussinesq condition p(l*) = 0 at the placed node.
-    Load(f64),
-    /// The contact end l* is given (η on the master's own coordinate, the paper's steps in l);
-    /// w follows from the Boussinesq condition.
-    ContactEnd(f64),
-}
-
-/// Tolerances of the zone-end search.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ZoneEndSearch {
-    /// Tolerance on l* and b* in η (default 1e-9: the root finders converge superlinearly, so
-    /// a tight tolerance costs a mesh or two and leaves residuals near round-off).
-    pub tolerance: f64,
-    /// Largest number of meshes solved for one step.
-    pub max_evaluations: usize,
-}
-
-impl Default for ZoneEndSearch {
-    fn default() -> Self {
-        ZoneEndSearch { tolerance: 1e-9, max_evaluations: 80 }
-    }
-}
-
-/// One step solved with nodes placed at its zone ends.
-#[derive(Debug, Clone)]
-pub struct PlacedStep {
-    /// l* on the master's own coordinate.
-    pub contact_end: f64,
-    /// b* on the master's own coordinate (l* when nothing slips: the stick zone is the whole
-    /// contact zone).
-    pub stick_end: f64,
-    /// Whether a node was placed at l* (false when the search failed and the step was solved on
-    /// the generated mesh instead, see `placement_failure`).
-    pub contact_end_placed: bool,
-    /// Why the zone-end search failed, when it did: the step was then solved by the Boussinesq
-    /// algorithm on the generated mesh (zone ends at its nodes, l and b interpolated).
-    pub placement_failure: Option<String>,
-    /// Whether a node was placed at b* (false when nothing slips, or when b* is closer to l*
-    /// than two corners can be placed; b is then interpolated between the pairs like the slip).
-    pub stick_end_placed: bool,
-    /// l* on the hole-edge angle η = 1 − φ/π (the paired hole point's in variant 2).
-    pub contact_end_hole: f64,
-    /// b* likewise.
-    pub stick_end_hole: f64,
-    /// The load w (given, or from the Boussinesq condition).
-    pub load: f64,
-    /// |p(l*)| left by the search, relative to the largest contact pressure.
-    pub residual_pressure: f64,
-    /// |σ q − μ|p|| at b* left by the search, relative to the largest contact pressure.
-    pub residual_cone: f64,
-    /// Meshes solved.
-    pub evaluations: usize,
-    /// The step's start on the adjusted mesh's pairs (the history carried over), for checks
-    /// by other algorithms on the same discrete problem.
-    pub start: StepStart,
-    /// The problem on the adjusted mesh.
-    pub case: PlateInsertProblem,
-    /// Its Boussinesq step (solution, zones, violated inequalities).
-    pub step: BoussinesqStep,
-}
 
 /// A mesh evaluation during the search.
 struct Evaluation {
@@ -229,14 +166,6 @@ fn singular(l: f64) -> ContactError {
     ContactError::InvalidInput(format!("problem A is singular with the contact zone ending at η = {l}"))
 }
 
-/// Pair indices sorted by η on the master coordinate.
-pub(super) fn eta_order(case: &PlateInsertProblem) -> Vec<usize> {
-    let eta = case.eta_master();
-    let mut order: Vec<usize> = (0..eta.len()).collect();
-    order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
-    order
-}
-
 /// Solves one step with nodes placed at l* and b* from `history` (see the module docs).
 ///
 /// `mesh` is the generated mesh of `template` (read once by the caller); `template`'s own
@@ -311,22 +240,6 @@ fn search_placed(
         "zone-end search: no corner holds the zone ends (last l ≈ {l_estimate:.5})"
     ));
     Err((e, run.evaluations))
-}
-
-/// Why one pass of the zone-end search stopped.
-pub(super) enum Miss {
-    /// A failure to report.
-    Contact(ContactError),
-    /// l* lies beyond its corner's range, about at this η.
-    ContactEnd(f64),
-    /// b* lies beyond its corner's range, about at `towards`, with l at `contact_end`.
-    StickEnd { towards: f64, slip: PairState, contact_end: f64 },
-}
-
-impl From<ContactError> for Miss {
-    fn from(e: ContactError) -> Self {
-        Miss::Contact(e)
-    }
 }
 
 /// How the stick end of a step was found.
