@@ -144,7 +144,7 @@ pub fn certify(problem: &ContactProblem, solution: &ContactSolution) -> Result<(
         Check::SlipInsideCone,
         Check::DissipationSign,
     ];
-    match checks.iter().zip(worst).find(|(_, v)| !(*v <= RESIDUAL_TOLERANCE)) {
+    match checks.iter().zip(worst).find(|(_, v)| v.is_nan() || *v > RESIDUAL_TOLERANCE) {
         Some((check, value)) => Err(FailedCheck { check: *check, value, tolerance: RESIDUAL_TOLERANCE }),
         None => Ok(()),
     }
