@@ -97,11 +97,11 @@ pub struct RunReport {
     /// Algorithm.
     pub algorithm: ContactAlgorithm,
     /// Outcome: the first step's that did not converge, else `converged`; `numerical` also
-    /// when a step's answer fails [`contact2d_contact::certify`] or the history's energy
+    /// when a step's answer fails [`contact2d_contact::certify()`] or the history's energy
     /// balance `W = Φ_E1 + Φ_E2 + Φ_f` fails [`contact2d_contact::check_energy_balance`].
     pub status: String,
     /// Why the status is `numerical`: the check that failed, with its value and tolerance
-    /// (e.g. "step 1: complementarity … = 2.1e-3 exceeds 1e-6"); `null` when the status is
+    /// (e.g. "step 1: complementarity … = 2.1e-3 exceeds 1e-4"); `null` when the status is
     /// not `numerical` or the algorithm itself broke down without a residual to report.
     pub failed_check: Option<String>,
     /// Iterations of the algorithm, summed over the steps.

@@ -7,12 +7,12 @@
 //! Fc = max λ  (F if no pair carries a load)        (contact-force scale)
 //!
 //! finite            every u, λ, τ, gap, slip and the dissipation finite
-//! penetration       max (−gap)⁺ / U                          ≤ 1e-6
-//! tension           max (−λ)⁺ / F                            ≤ 1e-6
-//! complementarity   max min(λ⁺ / F, gap⁺ / U)                ≤ 1e-6
-//! cone              max (|τ| − μλ)⁺ / Fc                     ≤ 1e-6
-//! slip inside cone  max (μλ − |τ|)⁺/Fc · |Δs|/U              ≤ 1e-6
-//! dissipation sign  min over slipping pairs of −τ Δs / (Fc U) ≥ −1e-6
+//! penetration       max (−gap)⁺ / U                          ≤ 1e-4
+//! tension           max (−λ)⁺ / F                            ≤ 1e-4
+//! complementarity   max min(λ⁺ / F, gap⁺ / U)                ≤ 1e-4
+//! cone              max (|τ| − μλ)⁺ / Fc                     ≤ 1e-4
+//! slip inside cone  max (μλ − |τ|)⁺/Fc · |Δs|/U              ≤ 1e-4
+//! dissipation sign  min over slipping pairs of −τ Δs / (Fc U) ≥ −1e-4
 //! ```
 //!
 //! The scales are the problem's own, so the tests are unit-free: multiplying every length (or
@@ -21,9 +21,11 @@
 //! complementarity residual is the min-function residual of `λ ≥ 0, gap ≥ 0, λ gap = 0`,
 //! pair by pair, so a large gap carrying a small spurious force fails as it should.
 //!
-//! 1e-6 leaves two orders of magnitude above the residuals of the algorithms on the bundled
-//! flagship scenes (the active sets and the Boussinesq iteration end at round-off, Clarabel at
-//! its interior-point tolerance) and is far below any error an engineer would accept.
+//! The active sets and the Boussinesq iteration end at round-off (residuals ~1e-16); Clarabel
+//! ends at its interior-point tolerance, which leaves residuals up to 1.3e-6 on sound answers
+//! (`tests/verify_boussinesq_agrees.rs`) and 9e-3 to 1.3e-2 on the wrong ones of issue 15
+//! (clearances 1e3 and 1e6, P 1.7 % and 100-fold off). 1e-4 lies in the geometric middle, two
+//! orders from either.
 
 use std::fmt;
 
@@ -32,7 +34,7 @@ use crate::report::force_scale;
 use crate::solution::{ContactSolution, PairState};
 
 /// The tolerance of every dimensionless residual of [`certify`].
-pub const RESIDUAL_TOLERANCE: f64 = 1e-6;
+pub const RESIDUAL_TOLERANCE: f64 = 1e-4;
 
 /// A condition of [`certify`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -144,7 +146,7 @@ pub fn certify(problem: &ContactProblem, solution: &ContactSolution) -> Result<(
         Check::SlipInsideCone,
         Check::DissipationSign,
     ];
-    match checks.iter().zip(worst).find(|(_, v)| !(*v <= RESIDUAL_TOLERANCE)) {
+    match checks.iter().zip(worst).find(|(_, v)| v.is_nan() || *v > RESIDUAL_TOLERANCE) {
         Some((check, value)) => Err(FailedCheck { check: *check, value, tolerance: RESIDUAL_TOLERANCE }),
         None => Ok(()),
     }

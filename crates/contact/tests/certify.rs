@@ -9,8 +9,8 @@
 //!   └────────────────────────┘  bottom clamped
 //! ```
 //! The active set's answer is exact to round-off (residuals ~1e-16 of the scales), so it must
-//! pass; each tampered copy violates one condition by 10 % of its scale, five orders above the
-//! tolerance 1e-6, so it must fail with that condition named.
+//! pass; each tampered copy violates one condition by 10 % of its scale, three orders above the
+//! tolerance 1e-4, so it must fail with that condition named.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use contact2d_contact::{
@@ -87,9 +87,9 @@ fn exact_answer_passes_and_each_wrong_one_fails_with_its_check() {
 fn energy_balance_is_exact_for_one_step_and_loose_for_the_trapezoid_rule() {
     // W = Φ_E + Φ_f exactly.
     check_energy_balance(1.0, 0.75, 0.25, true).unwrap();
-    // 1e-5 off: a failure when W is exact, round-off-free trapezoid error when not.
-    assert_eq!(check_energy_balance(1.0, 0.75, 0.25 + 1e-5, true).unwrap_err().check, Check::EnergyBalance);
-    check_energy_balance(1.0, 0.75, 0.25 + 1e-5, false).unwrap();
+    // 1e-3 off: a failure when W is exact, within the trapezoid rule's error when not.
+    assert_eq!(check_energy_balance(1.0, 0.75, 0.25 + 1e-3, true).unwrap_err().check, Check::EnergyBalance);
+    check_energy_balance(1.0, 0.75, 0.25 + 1e-3, false).unwrap();
     // A strain energy 60 times the work (Clarabel at c = 1e6 before issue 15) fails either way.
     assert_eq!(check_energy_balance(0.84, 53.5, 0.0, false).unwrap_err().check, Check::EnergyBalance);
     assert_eq!(check_energy_balance(f64::NAN, 1.0, 0.0, false).unwrap_err().check, Check::Finite);
