@@ -5,7 +5,8 @@
 //! w = 0.3838 in three steps), clearance c varied. The independent truth for huge c is the
 //! Boussinesq algorithm at c = 1e6: with the paper's gap `c(1 + cos φ)/ρ`, every pair but the one
 //! at φ = π is then open by more than 1e4 times the displacements, so the contact zone is that
-//! single pair for every c ≥ 1e6, and the active set (at c = 1e12 or 1e300) must solve the same
+//! single pair for every c ≥ 1e6, and the active set (at c = 1e12 or 1e100, the largest clearance
+//! a scene accepts) must solve the same
 //! linear system. Agreement to 1e-9 relative allows for the two algorithms' different orders of
 //! operations (round-off ~1e-15 amplified by the condition of the interface matrix).
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -34,7 +35,7 @@ fn number(v: &Value, key: &str) -> f64 {
 fn huge_clearances_solve_to_the_single_point_contact() {
     let truth = run(&["solver.algorithm=boussinesq", "plate_insert.clearance=1e6"]);
     assert_eq!(truth["status"], "converged");
-    for clearance in ["1e12", "1e300"] {
+    for clearance in ["1e12", "1e100"] {
         let got = run(&["solver.algorithm=active_set", &format!("plate_insert.clearance={clearance}")]);
         assert_eq!(got["status"], "converged", "c = {clearance}: {got}");
         for key in ["P", "K", "Phi_E1", "Phi_E2"] {

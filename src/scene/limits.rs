@@ -40,7 +40,7 @@ pub const STIFFNESS_RATIO_RANGE: (f64, f64) = (1e-8, 1e8);
 pub const MAX_FRICTION: f64 = 1000.0;
 
 /// Every key a scene (and `--set`) accepts, as a dotted path.
-pub const SCENE_KEYS: [&str; 19] = [
+pub const SCENE_KEYS: [&str; 20] = [
     "name",
     "description",
     "plate_insert.mesh",
@@ -57,6 +57,7 @@ pub const SCENE_KEYS: [&str; 19] = [
     "plate_insert.steps",
     "plate_insert.l_steps",
     "plate_insert.pairs",
+    "plate_insert.formulation",
     "solver.algorithm",
     "solver.max_iterations",
     "solver.place_zone_ends",

@@ -92,7 +92,7 @@ impl LameCylinder {
     /// # Examples
     /// ```
     /// use contact2d_verification::analytic::LameCylinder;
-    /// use contact2d::element::PlaneCondition;
+    /// use contact2d_element::PlaneCondition;
     /// let c = LameCylinder::new(1.0, 2.0, 3.0, 1000.0, 0.3, PlaneCondition::Strain)?;
     /// assert!((c.radial_stress(1.0) + 3.0).abs() < 1e-14); // σ_rr(a) = -p
     /// assert!(c.radial_stress(2.0).abs() < 1e-14); // free outer surface
