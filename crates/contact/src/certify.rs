@@ -2,7 +2,8 @@
 //! tolerances, whatever the algorithm's own stopping test said.
 //!
 //! ```text
-//! U  = max |u|                       (displacement scale; initial gaps excluded)
+//! U  = max(|u|, |s_start|)           (displacement scale: the solution's displacements and the
+//!                                     relative slips the step started from; gaps excluded)
 //! F  = max(|λ|, |τ|, |w f|, k̄ U)     (force scale, crate::report::force_scale)
 //! Fc = max λ  (F if no pair carries a load)        (contact-force scale)
 //!
@@ -113,7 +114,10 @@ pub fn certify(problem: &ContactProblem, solution: &ContactSolution) -> Result<(
     if !finite {
         return Err(FailedCheck { check: Check::Finite, value: f64::NAN, tolerance: 0.0 });
     }
-    let u = s.displacement.iter().fold(0.0f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
+    // The start slips s − Δs keep the scale of a step that unloads to zero: its answer is
+    // judged against the motion it undoes, not against its own round-off.
+    let start_slip = s.slip.iter().zip(&s.slip_increment).map(|(x, dx)| (x - dx).abs());
+    let u = s.displacement.iter().map(|v| v.abs()).chain(start_slip).fold(0.0f64, f64::max).max(f64::MIN_POSITIVE);
     let (lambda, tau) = (&s.normal_force, &s.tangential_force);
     let f = force_scale(problem, s.load_factor, lambda, tau, u);
     let fc = lambda.iter().fold(0.0f64, |a, l| a.max(*l));

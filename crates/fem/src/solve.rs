@@ -74,9 +74,9 @@ impl fmt::Debug for CholeskySolver {
 /// for bit whatever `RAYON_NUM_THREADS` is and however rayon schedules. faer's parallel kernels
 /// split their work by the thread count, which changes the rounding (measured: the N = 128
 /// flagship differed in the 14th digit between 1 and 2 threads). On the flagship scenes the
-/// sequential kernels cost nothing measurable (N = 64 no-gap scene, median of 5: 0.34 s
-/// sequential against 0.36–0.39 s before, on a loaded two-core machine); assembly, ordering
-/// and stress recovery stay parallel (their results do not depend on the split).
+/// sequential kernels cost nothing (N = 64 no-gap scene, median of 5 on two cores: 0.157 s
+/// against 0.231 s with the thread pool's parallelism); assembly, ordering and stress
+/// recovery stay parallel (their results do not depend on the split).
 pub fn parallelism() -> Par {
     Par::Seq
 }
