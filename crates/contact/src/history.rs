@@ -8,11 +8,11 @@
 //! Decreasing loads (unloading) are allowed: the algorithms here do not assume a growing
 //! contact zone.
 
-use crate::friction::solve_frictional_active_set;
+use crate::algorithms::clarabel_tresca::solve_frictional_qp;
+use crate::algorithms::frictional_active_set::solve_frictional_active_set;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
-use crate::tresca_qp::solve_frictional_qp;
 
 /// An algorithm that solves one step of a history.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

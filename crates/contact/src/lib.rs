@@ -9,26 +9,21 @@
 //! compressive normal force on the master node; the paper's pressure is `p = −λ / w` with `w` the
 //! master node's tributary length, so `p < 0` in contact.
 
-pub mod active_set;
-pub mod boussinesq;
+pub mod algorithms;
 pub mod builder;
 pub mod certify;
 pub mod error;
-pub mod friction;
 pub mod history;
 pub mod interface;
 pub mod loading;
 pub mod pairing;
 pub mod post;
 pub mod problem;
-pub mod qp;
 pub mod report;
 pub mod solution;
 pub mod solve;
-mod state_equations;
-pub mod tresca_qp;
 
-pub use active_set::solve_frictionless_active_set;
+pub use algorithms::{boussinesq, clarabel_qp, clarabel_tresca, frictional_active_set, frictionless_active_set};
 pub use boussinesq::{
     BoussinesqLoading, BoussinesqStep, ZoneForces, Zones, finish_zones, solve_boussinesq_history,
     solve_boussinesq_step, solve_given_zones,
@@ -38,16 +33,17 @@ pub use builder::{
     LoadDescription, Pairing, ProblemDescription,
 };
 pub use certify::{Check, FailedCheck, certify, check_energy_balance};
+pub use clarabel_qp::solve_frictionless_qp;
+pub use clarabel_tresca::solve_frictional_qp;
 pub use error::ContactError;
-pub use friction::solve_frictional_active_set;
+pub use frictional_active_set::solve_frictional_active_set;
+pub use frictionless_active_set::solve_frictionless_active_set;
 pub use history::{HistoryStep, StepAlgorithm, equal_steps, solve_history, solve_history_with};
 pub use interface::Interface;
 pub use loading::LoadSchedule;
 pub use pairing::{ContactPair, node_to_node_targets, pair_contours, tributary_weights};
 pub use post::{contact_end, contact_end_from_pressure, pair_tractions, stick_end};
 pub use problem::{BuildTimes, ContactProblem, LoadPattern, PairRow};
-pub use qp::solve_frictionless_qp;
 pub use report::{RawSolution, fem_solution, finish_from_displacement, finish_from_forces};
 pub use solution::{ContactSolution, ContactStatus, IterationRecord, KktResiduals, PairState, StepStart, Violation};
 pub use solve::{ContactAlgorithm, History, SolvedStep, SolverSettings, solve, solve_with};
-pub use tresca_qp::solve_frictional_qp;

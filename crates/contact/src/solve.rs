@@ -27,14 +27,14 @@
 //! the residual does not fall, and the step fails with [`ContactError::BodyNotHeld`] naming the
 //! body and its free rigid motions.
 
-use crate::boussinesq::{BoussinesqLoading, solve_boussinesq_step};
+use crate::algorithms::boussinesq::{BoussinesqLoading, solve_boussinesq_step};
+use crate::algorithms::clarabel_tresca::solve_frictional_qp;
+use crate::algorithms::frictional_active_set::solve_frictional_active_set;
 use crate::error::ContactError;
-use crate::friction::solve_frictional_active_set;
 use crate::interface::Interface;
 use crate::loading::LoadSchedule;
 use crate::problem::ContactProblem;
 use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
-use crate::tresca_qp::solve_frictional_qp;
 
 /// Which algorithm solves each step. Adding an algorithm is one file plus one variant here.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]

@@ -27,12 +27,12 @@
 
 use std::time::Instant;
 
+use crate::algorithms::state_equations::{combine, state_system};
 use crate::error::ContactError;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
 use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart, Violation};
-use crate::state_equations::{combine, state_system};
 
 /// How a Boussinesq step is loaded.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -24,8 +24,8 @@ use std::time::Instant;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT};
 
+use crate::algorithms::clarabel_qp::{map_status, solve_frictionless_qp};
 use crate::problem::ContactProblem;
-use crate::qp::{map_status, solve_frictionless_qp};
 use crate::report::{RawSolution, finish_from_displacement, force_scale};
 use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
 

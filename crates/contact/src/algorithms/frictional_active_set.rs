@@ -25,11 +25,11 @@ use std::time::Instant;
 
 use nalgebra::{DMatrix, DVector};
 
+use crate::algorithms::state_equations::{combine, state_system};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
 use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
-use crate::state_equations::{combine, state_system};
 
 /// Solves one frictional step to load factor `w` from the history `start`, starting from the
 /// state guess `guess` (e.g. the previous step's states; `None`: all in contact and sticking).

@@ -1,0 +1,19 @@
+//! The contact algorithms, each one file, all taking the same [`crate::ContactProblem`] (and the
+//! condensed [`crate::Interface`] where they work on it) and returning the same
+//! [`crate::ContactSolution`]; [`crate::solve`] dispatches to them by [`crate::ContactAlgorithm`].
+//!
+//! ```text
+//! frictionless_active_set   primal-dual active set on the condensed interface, μ = 0
+//! frictional_active_set     the same with Coulomb friction (stick / slip± states)
+//! boussinesq                the paper's paired-node algorithm: zones assumed, (5.1) checked
+//! clarabel_qp               the frictionless QP in the full displacement space (Clarabel)
+//! clarabel_tresca           Tresca QPs to the Coulomb fixed point (Clarabel)
+//! state_equations           the linear system of a given zone configuration (shared)
+//! ```
+
+pub mod boussinesq;
+pub mod clarabel_qp;
+pub mod clarabel_tresca;
+pub mod frictional_active_set;
+pub mod frictionless_active_set;
+pub(crate) mod state_equations;
