@@ -28,7 +28,7 @@
 //!
 //! Parameters: a = 1, b = 2, p = 100, E = 200 000, ν = 0.3, thickness 1.
 //!
-//! Reference values (closed form, `src/verify/analytic.rs`): with A = p a²/(b² − a²),
+//! Reference values (closed form, `crates/verification/src/analytic.rs`): with A = p a²/(b² − a²),
 //! u_r = C1 r + C2/r, plane stress C1 = A(1 − ν)/E, plane strain C1 = A(1 + ν)(1 − 2ν)/E,
 //! C2 = A(1 + ν) b²/E in both; σ_rr = A(1 − b²/r²), so σ_rr(a) = −p. Errors are relative,
 //! ‖u_h − u‖/‖u‖, integrated with 5×5 Gauss points (quads) or the degree-5 rule (triangles) over

@@ -51,7 +51,7 @@ pub enum GenericError {
         /// The mesh file.
         mesh: String,
         /// Why.
-        source: ContactError,
+        source: Box<ContactError>,
     },
     /// Evaluating results.
     #[error("scene {scene}: {source}")]
@@ -170,7 +170,8 @@ pub fn solve_generic(
 ) -> Result<GenericOutcome, GenericError> {
     let clock = Instant::now();
     let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
-    let contact_error = |source| GenericError::Contact { scene: scene_name.clone(), mesh: mesh_name.clone(), source };
+    let contact_error =
+        |source| GenericError::Contact { scene: scene_name.clone(), mesh: mesh_name.clone(), source: Box::new(source) };
     // A FIFO or an endless device is refused before reading; the reader reports the rest.
     if let Err(e) = check_input_file(&scene.mesh_path(), MAX_MESH_BYTES)
         && !matches!(e, InputFileError::Io { .. })

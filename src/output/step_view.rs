@@ -28,7 +28,7 @@ pub struct StepView<'a> {
     pub node_contact: Vec<Option<NodeValues>>,
     /// Axis labels of plane figures.
     pub axes: [String; 2],
-    /// The stress quantity's label in figure titles (e.g. "σ_vM / E1", "σ_vM [MPa]").
+    /// The stress quantity's label in figure titles (e.g. "σ_vM / E1", "σ_vM in MPa").
     pub stress_label: String,
 }
 

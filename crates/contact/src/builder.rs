@@ -393,7 +393,7 @@ fn edge_load(mesh: &Mesh, load: &LoadDescription) -> Result<EdgeLoad, ContactErr
                 return Err(bad());
             }
             let length = group_length(mesh, &load.group)?;
-            if !(length > 0.0) {
+            if length.is_nan() || length <= 0.0 {
                 return Err(ContactError::InvalidInput(format!(
                     "force on \"{}\": the group has no length",
                     load.group

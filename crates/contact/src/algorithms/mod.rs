@@ -1,6 +1,6 @@
 //! The contact algorithms, each one file, all taking the same [`crate::ContactProblem`] (and the
 //! condensed [`crate::Interface`] where they work on it) and returning the same
-//! [`crate::ContactSolution`]; [`crate::solve`] dispatches to them by [`crate::ContactAlgorithm`].
+//! [`crate::ContactSolution`]; [`crate::solve()`] dispatches to them by [`crate::ContactAlgorithm`].
 //!
 //! ```text
 //! frictionless_active_set   primal-dual active set on the condensed interface, μ = 0
