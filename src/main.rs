@@ -255,17 +255,7 @@ fn run_generic(
 }
 
 fn print_generic(out: &mut impl Write, r: &contact2d::generic::GenericReport) -> std::io::Result<()> {
-    writeln!(
-        out,
-        "scene {}  ({} DOFs, {} pairs, {:?}, {} after {} iterations in {} step(s))",
-        r.scene,
-        r.dofs,
-        r.pairs,
-        r.algorithm,
-        r.status,
-        r.iterations,
-        r.steps.len()
-    )?;
+    heading(out, &r.scene, (r.dofs, r.pairs), &format!("{:?}", r.algorithm), &r.status, (r.iterations, r.steps.len()))?;
     for (name, c) in &r.contacts {
         writeln!(
             out,
@@ -420,22 +410,27 @@ fn sweep_generic(
     Ok(())
 }
 
+/// The first line of a run's text report.
+fn heading(
+    out: &mut impl Write,
+    scene: &str,
+    (dofs, pairs): (usize, usize),
+    algorithm: &str,
+    status: &str,
+    (iterations, steps): (usize, usize),
+) -> std::io::Result<()> {
+    writeln!(
+        out,
+        "scene {scene}  ({dofs} DOFs, {pairs} pairs, {algorithm}, {status} after {iterations} iterations in {steps} step(s))"
+    )
+}
+
 /// The `--plot` default of `sweep`.
 const DEFAULT_PLOT: &str = "l,b,P";
 
 fn print_report(out: &mut impl Write, r: &contact2d::run::RunReport) -> std::io::Result<()> {
     let opt = |v: Option<f64>| v.map_or("-".to_string(), |x| format!("{x:.4}"));
-    writeln!(
-        out,
-        "scene {}  ({} DOFs, {} pairs, {:?}, {} after {} iterations in {} step(s))",
-        r.scene,
-        r.dofs,
-        r.pairs,
-        r.algorithm,
-        r.status,
-        r.iterations,
-        r.steps.len()
-    )?;
+    heading(out, &r.scene, (r.dofs, r.pairs), &format!("{:?}", r.algorithm), &r.status, (r.iterations, r.steps.len()))?;
     writeln!(out, "  w      = {}   mu = {}", r.w, r.mu)?;
     // Where a zone end sits: a node placed there, or between two nodes (then interpolated).
     let bracket = |b: Option<[f64; 2]>| match b {

@@ -505,25 +505,9 @@ fn status_name(status: ContactStatus) -> &'static str {
     }
 }
 
-/// Scales a solution of a problem that is linear in the load (no gap): forces, displacements,
-/// slips linearly, the dissipation quadratically.
+/// Scales a solution of a problem that is linear in the load (no gap), solved at w = 1, to the
+/// load w ([`contact2d_contact::solve::scale_solution`] of one step from the unloaded state).
 fn scale_solution(s: &mut ContactSolution, w: f64) {
+    contact2d_contact::solve::scale_solution(s, w, 0.0);
     s.load_factor = w;
-    for v in s
-        .displacement
-        .iter_mut()
-        .chain(&mut s.normal_force)
-        .chain(&mut s.tangential_force)
-        .chain(&mut s.gap)
-        .chain(&mut s.slip)
-        .chain(&mut s.slip_increment)
-    {
-        *v *= w;
-    }
-    s.dissipation *= w * w;
-    s.kkt.max_penetration *= w;
-    s.kkt.max_complementarity *= w * w;
-    s.kkt.max_tension *= w;
-    s.kkt.max_cone_violation *= w;
-    // max_slip_inside_cone is dimensionless (scale-free).
 }

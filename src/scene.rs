@@ -320,30 +320,7 @@ impl Scene {
     /// assert!(Scene::from_toml_str(text, path, &["plate_insert.poissons_ratio=0.5".into()]).is_err());
     /// ```
     pub fn from_toml_str(text: &str, path: &Path, overrides: &[String]) -> Result<Scene, SceneError> {
-        let shown = path.display().to_string();
-        let invalid = |reason: String| SceneError::Invalid { path: shown.clone(), reason };
-        let mut value: toml::Value = toml::from_str(text).map_err(|e| invalid(spanned_reason(text, &e)))?;
-        for assignment in overrides {
-            apply_override(&mut value, assignment)?;
-        }
-        let mut scene: Scene = match value.try_into() {
-            Ok(scene) => scene,
-            Err(e) => {
-                let e: toml::de::Error = e;
-                let shown_error = e.to_string();
-                let key =
-                    shown_error.rsplit_once("\nin `").map(|(_, k)| k.trim_end().trim_end_matches('`').to_string());
-                let at = key.map_or(String::new(), |k| format!("{k}: "));
-                // Without overrides the text itself is at fault: give its line too.
-                return Err(invalid(match (overrides.is_empty(), toml::from_str::<Scene>(text)) {
-                    (true, Err(spanned)) if spanned.message() == e.message() => {
-                        format!("{}{at}{}", line_of(text, &spanned), e.message())
-                    }
-                    (true, _) => format!("{at}{}", e.message()),
-                    (false, _) => format!("{at}{} (after the --set overrides)", e.message()),
-                }));
-            }
-        };
+        let mut scene: Scene = parse_scene_toml(text, path, overrides)?;
         scene.file = path.to_path_buf();
         scene.base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         scene.validate()?;
@@ -523,6 +500,38 @@ impl Scene {
     pub fn mesh_path(&self) -> PathBuf {
         self.base_dir.join(&self.plate_insert.mesh)
     }
+}
+
+/// Parses scene TOML `text` (read from `path`, named in errors) into `T` after applying the
+/// `--set` `overrides`: syntax errors with their line, unknown keys and wrong types with their
+/// dotted key (and the line when the file itself is at fault).
+///
+/// # Errors
+/// [`SceneError::Invalid`] or [`SceneError::Override`].
+pub(crate) fn parse_scene_toml<T: serde::de::DeserializeOwned>(
+    text: &str,
+    path: &Path,
+    overrides: &[String],
+) -> Result<T, SceneError> {
+    let shown = path.display().to_string();
+    let invalid = |reason: String| SceneError::Invalid { path: shown.clone(), reason };
+    let mut value: toml::Value = toml::from_str(text).map_err(|e| invalid(spanned_reason(text, &e)))?;
+    for assignment in overrides {
+        apply_override(&mut value, assignment)?;
+    }
+    value.try_into().map_err(|e: toml::de::Error| {
+        let shown_error = e.to_string();
+        let key = shown_error.rsplit_once("\nin `").map(|(_, k)| k.trim_end().trim_end_matches('`').to_string());
+        let at = key.map_or(String::new(), |k| format!("{k}: "));
+        // Without overrides the text itself is at fault: give its line too.
+        invalid(match (overrides.is_empty(), toml::from_str::<T>(text)) {
+            (true, Err(spanned)) if spanned.message() == e.message() => {
+                format!("{}{at}{}", line_of(text, &spanned), e.message())
+            }
+            (true, _) => format!("{at}{}", e.message()),
+            (false, _) => format!("{at}{} (after the --set overrides)", e.message()),
+        })
+    })
 }
 
 /// The text of a scene file: a regular file of at most [`crate::input_file::MAX_SCENE_BYTES`],

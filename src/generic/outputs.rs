@@ -20,7 +20,7 @@ use super::GenericOutcome;
 use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::step_view::{NodeValues, StepView, state_code};
 use crate::output::{
-    FIGURE_EXTENSIONS, OutputDir, OutputError, SUMMARY_FILE, atomic, field_plot, mesh_plot, step_file_name, vtu,
+    FIGURE_EXTENSIONS, OutputDir, OutputError, SUMMARY_FILE, atomic, field_plot, figure, mesh_plot, step_file_name, vtu,
 };
 
 /// Writes every output of `outcome` into the prepared folder `out` (each file atomically, stale
@@ -86,23 +86,6 @@ pub fn is_generic_output(name: &str) -> bool {
     let step = ext == "vtu"
         && stem.strip_prefix("step_").is_some_and(|k| k.len() >= 3 && k.bytes().all(|b| b.is_ascii_digit()));
     figure || csv || step || ["steps.pvd", SUMMARY_FILE].contains(&name)
-}
-
-/// Draws one figure through `out`; one that cannot be drawn is noted in `skipped` instead.
-fn figure(
-    out: &mut OutputDir,
-    name: &str,
-    skipped: &mut Vec<String>,
-    draw: impl FnOnce(&Path) -> Result<(), OutputError>,
-) -> Result<(), OutputError> {
-    match out.write_with(name, draw) {
-        Ok(_) => Ok(()),
-        Err(OutputError::Undrawable { reason, .. }) => {
-            skipped.push(format!("{name} not drawn: {reason}"));
-            Ok(())
-        }
-        Err(e) => Err(e),
-    }
 }
 
 /// A name usable in a file name: letters, digits, `-` and `_` kept, anything else `_`.

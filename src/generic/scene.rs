@@ -38,13 +38,14 @@ use serde::Deserialize;
 
 use contact2d_contact::{
     BodyDescription, ContactAlgorithm, ContactDescription, EdgeLoadKind, FixDescription, GapDescription,
-    LoadDescription, LoadSchedule, Pairing, ProblemDescription, SolverSettings, builder::DEFAULT_PATTERN,
+    LoadDescription, LoadSchedule, Pairing, ProblemDescription, SolverSettings,
+    builder::{DEFAULT_PATTERN, pattern_order},
 };
 use contact2d_element::{Formulation, PlaneCondition, locking_warning};
 use contact2d_fem::Component;
 use contact2d_mesh::Mesh;
 
-use crate::scene::{SceneError, apply_override, line_of, spanned_reason};
+use crate::scene::{SceneError, parse_scene_toml};
 
 /// The plane condition as spelled in scene files.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -294,29 +295,7 @@ impl GenericScene {
     /// # Errors
     /// [`SceneError`] naming the file and the line, key or override at fault.
     pub fn from_toml_str(text: &str, path: &Path, overrides: &[String]) -> Result<GenericScene, SceneError> {
-        let shown = path.display().to_string();
-        let invalid = |reason: String| SceneError::Invalid { path: shown.clone(), reason };
-        let mut value: toml::Value = toml::from_str(text).map_err(|e| invalid(spanned_reason(text, &e)))?;
-        for assignment in overrides {
-            apply_override(&mut value, assignment)?;
-        }
-        let mut scene: GenericScene = match value.try_into() {
-            Ok(scene) => scene,
-            Err(e) => {
-                let e: toml::de::Error = e;
-                let shown_error = e.to_string();
-                let key =
-                    shown_error.rsplit_once("\nin `").map(|(_, k)| k.trim_end().trim_end_matches('`').to_string());
-                let at = key.map_or(String::new(), |k| format!("{k}: "));
-                return Err(invalid(match (overrides.is_empty(), toml::from_str::<GenericScene>(text)) {
-                    (true, Err(spanned)) if spanned.message() == e.message() => {
-                        format!("{}{at}{}", line_of(text, &spanned), e.message())
-                    }
-                    (true, _) => format!("{at}{}", e.message()),
-                    (false, _) => format!("{at}{} (after the --set overrides)", e.message()),
-                }));
-            }
-        };
+        let mut scene: GenericScene = parse_scene_toml(text, path, overrides)?;
         scene.file = path.to_path_buf();
         scene.base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         scene.validate()?;
@@ -413,28 +392,15 @@ impl GenericScene {
         self.schedule().map(|_| ())
     }
 
-    /// The pattern names the scene's values and loads use, `main` first.
+    /// The pattern names the scene's values and loads use, `main` first
+    /// ([`contact2d_contact::builder::pattern_order`], the order the built problem has).
     pub fn pattern_names(&self) -> Vec<String> {
-        let mut names: Vec<String> = vec![];
-        let used = self
+        let values = self
             .fix
             .iter()
             .filter(|f| f.u1.is_some_and(|v| v != 0.0) || f.u2.is_some_and(|v| v != 0.0))
-            .map(|f| &f.pattern)
-            .chain(self.load.iter().map(|l| &l.pattern));
-        for n in used {
-            if !names.contains(n) {
-                names.push(n.clone());
-            }
-        }
-        if let Some(at) = names.iter().position(|n| n == DEFAULT_PATTERN) {
-            let m = names.remove(at);
-            names.insert(0, m);
-        }
-        if names.is_empty() {
-            names.push(DEFAULT_PATTERN.into());
-        }
-        names
+            .map(|f| f.pattern.as_str());
+        pattern_order(values.chain(self.load.iter().map(|l| l.pattern.as_str())))
     }
 
     /// The load schedule: `steps = N` ramps every pattern; a `schedule` lists each step's

@@ -159,7 +159,7 @@ pub fn write_outputs_into(
 }
 
 /// Draws one figure through `out`; a figure that cannot be drawn is noted in `skipped` instead.
-fn figure(
+pub(crate) fn figure(
     out: &mut OutputDir,
     name: &str,
     skipped: &mut Vec<String>,

@@ -19,7 +19,7 @@ use std::ops::Range;
 use contact2d_element::{Formulation, Material, PlaneCondition};
 use contact2d_fem::{Component, DofKind, EdgeLoad, Model, assemble_edge_loads};
 use contact2d_mesh::morph::move_nodes;
-use contact2d_mesh::{CellKind, Contour, Mesh};
+use contact2d_mesh::{Contour, Mesh, line_cell_length};
 
 use crate::error::ContactError;
 use crate::pairing::{ContactPair, node_to_node_targets, pair_contours};
@@ -317,28 +317,10 @@ impl ProblemDescription {
         Ok((pairs, slave, region))
     }
 
-    /// The pattern names: `main` first when anything uses it, then in order of appearance.
+    /// The pattern names of the non-zero prescribed values and the loads ([`pattern_order`]).
     fn pattern_names(&self) -> Vec<String> {
-        let used = self
-            .fixes
-            .iter()
-            .filter(|f| f.value != 0.0)
-            .map(|f| &f.pattern)
-            .chain(self.loads.iter().map(|l| &l.pattern));
-        let mut names: Vec<String> = vec![];
-        for name in used {
-            if !names.contains(name) {
-                names.push(name.clone());
-            }
-        }
-        if let Some(at) = names.iter().position(|n| n == DEFAULT_PATTERN) {
-            let main = names.remove(at);
-            names.insert(0, main);
-        }
-        if names.is_empty() {
-            names.push(DEFAULT_PATTERN.to_string());
-        }
-        names
+        let values = self.fixes.iter().filter(|f| f.value != 0.0).map(|f| f.pattern.as_str());
+        pattern_order(values.chain(self.loads.iter().map(|l| l.pattern.as_str())))
     }
 
     /// Every pattern's right-hand side and prescribed values on the built problem.
@@ -382,6 +364,27 @@ impl ProblemDescription {
     }
 }
 
+/// The order of the load patterns named by `used` (non-zero prescribed values and loads, in
+/// order of appearance): `main` first when used, then the others as they first appear; `main`
+/// alone when nothing names one. The factors of a schedule and of a [`crate::SolvedStep`] follow
+/// this order.
+pub fn pattern_order<'a>(used: impl Iterator<Item = &'a str>) -> Vec<String> {
+    let mut names: Vec<String> = vec![];
+    for name in used {
+        if !names.iter().any(|n| n == name) {
+            names.push(name.to_string());
+        }
+    }
+    if let Some(at) = names.iter().position(|n| n == DEFAULT_PATTERN) {
+        let main = names.remove(at);
+        names.insert(0, main);
+    }
+    if names.is_empty() {
+        names.push(DEFAULT_PATTERN.to_string());
+    }
+    names
+}
+
 /// The fem edge load of a description (a total force becomes a uniform traction).
 fn edge_load(mesh: &Mesh, load: &LoadDescription) -> Result<EdgeLoad, ContactError> {
     let group = load.group.clone();
@@ -416,40 +419,20 @@ fn edge_load(mesh: &Mesh, load: &LoadDescription) -> Result<EdgeLoad, ContactErr
     })
 }
 
-/// The length of a 1D group: every line cell's arc length (5-point Gauss on the isoparametric
-/// edge; exact for straight and parabolic edges up to round-off).
+/// The length of a 1D group: the sum of its line cells' lengths
+/// ([`contact2d_mesh::line_cell_length`]).
 ///
 /// # Errors
 /// An unknown group, or one that is not 1D.
 pub fn group_length(mesh: &Mesh, group: &str) -> Result<f64, ContactError> {
-    const GAUSS5: [(f64, f64); 5] = [
-        (-0.906_179_845_938_664, 0.236_926_885_056_189),
-        (-0.538_469_310_105_683, 0.478_628_670_499_366),
-        (0.0, 0.568_888_888_888_889),
-        (0.538_469_310_105_683, 0.478_628_670_499_366),
-        (0.906_179_845_938_664, 0.236_926_885_056_189),
-    ];
     if mesh.group(group)?.dim != 1 {
         return Err(ContactError::InvalidInput(format!("\"{group}\" is not a 1D group (a curve)")));
     }
     let mut length = 0.0;
     for block in mesh.blocks_in_group(group)? {
         for cell in block.cells() {
-            let p: Vec<[f64; 2]> = cell.iter().map(|n| mesh.points[n.0]).collect();
-            length += match (block.kind, p.as_slice()) {
-                (CellKind::Line2, [a, b, ..]) => (b[0] - a[0]).hypot(b[1] - a[1]),
-                (CellKind::Line3, [a, b, m, ..]) => GAUSS5
-                    .iter()
-                    .map(|(xi, w)| {
-                        // dN/dξ of (ξ(ξ−1)/2, ξ(ξ+1)/2, 1 − ξ²).
-                        let d = [xi - 0.5, xi + 0.5, -2.0 * xi];
-                        let dx = d[0] * a[0] + d[1] * b[0] + d[2] * m[0];
-                        let dy = d[0] * a[1] + d[1] * b[1] + d[2] * m[1];
-                        w * dx.hypot(dy)
-                    })
-                    .sum::<f64>(),
-                _ => 0.0,
-            };
+            let points: Vec<[f64; 2]> = cell.iter().map(|n| mesh.points[n.0]).collect();
+            length += line_cell_length(block.kind, &points);
         }
     }
     Ok(length)

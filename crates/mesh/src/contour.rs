@@ -15,6 +15,26 @@
 use crate::error::MeshError;
 use crate::mesh::{CellKind, Mesh, NodeId};
 
+/// The length of a line cell (Line2 end to end; Line3 by 5-point Gauss on `|dx/dξ|`, exact to
+/// round-off for straight and parabolic edges) from its nodes in Gmsh order (ends, then mid);
+/// 0 for other kinds.
+pub fn line_cell_length(kind: CellKind, points: &[[f64; 2]]) -> f64 {
+    match (kind, points) {
+        (CellKind::Line2, [a, b, ..]) => (b[0] - a[0]).hypot(b[1] - a[1]),
+        (CellKind::Line3, [a, b, m, ..]) => GAUSS5
+            .iter()
+            .map(|(xi, w)| {
+                // dN/dξ of (ξ(ξ−1)/2, ξ(ξ+1)/2, 1 − ξ²).
+                let d = [xi - 0.5, xi + 0.5, -2.0 * xi];
+                let dx = d[0] * a[0] + d[1] * b[0] + d[2] * m[0];
+                let dy = d[0] * a[1] + d[1] * b[1] + d[2] * m[1];
+                w * dx.hypot(dy)
+            })
+            .sum(),
+        _ => 0.0,
+    }
+}
+
 /// One edge of a contour, traversed in the contour's direction.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContourEdge {
