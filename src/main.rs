@@ -255,7 +255,7 @@ fn run_generic(
 }
 
 fn print_generic(out: &mut impl Write, r: &contact2d::generic::GenericReport) -> std::io::Result<()> {
-    heading(out, &r.scene, (r.dofs, r.pairs), &format!("{:?}", r.algorithm), &r.status, (r.iterations, r.steps.len()))?;
+    heading(out, &r.scene, (r.dofs, r.pairs), &format!("{:?}", r.algorithm), r.status, (r.iterations, r.steps.len()))?;
     for (name, c) in &r.contacts {
         writeln!(
             out,

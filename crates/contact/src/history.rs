@@ -53,17 +53,45 @@ pub fn solve_history_with(
     max_iterations: usize,
     on_step: &mut dyn FnMut(&HistoryStep),
 ) -> Vec<HistoryStep> {
-    let mut start = StepStart::initial(problem.num_pairs());
+    let solved = march::<f64, std::convert::Infallible>(
+        loads,
+        problem.num_pairs(),
+        |&w, start, guess| {
+            Ok(match algorithm {
+                StepAlgorithm::ActiveSet => {
+                    solve_frictional_active_set(problem, interface, w, start, guess, max_iterations)
+                }
+                StepAlgorithm::Clarabel => solve_frictional_qp(problem, w, start, max_iterations),
+            })
+        },
+        on_step,
+    );
+    match solved {
+        Ok(steps) => steps,
+        Err(never) => match never {},
+    }
+}
+
+/// The loop every loading history shares (the active set's and Clarabel's here, the Boussinesq
+/// algorithm's, and [`crate::solve()`]'s): each step solved by `solve_step(loading, start,
+/// guess)` from the state the previous one ended in (`StepStart`: slips and tangential forces;
+/// `guess`: its pair states), Φ_f accumulated, `on_step` told, and the loop stopped after the
+/// first step that does not converge (which is returned last, with its status).
+///
+/// # Errors
+/// The first error of `solve_step`.
+pub fn march<L, E>(
+    loadings: &[L],
+    pairs: usize,
+    mut solve_step: impl FnMut(&L, &StepStart, Option<&[PairState]>) -> Result<ContactSolution, E>,
+    on_step: &mut dyn FnMut(&HistoryStep),
+) -> Result<Vec<HistoryStep>, E> {
+    let mut start = StepStart::initial(pairs);
     let mut guess: Option<Vec<PairState>> = None;
     let mut dissipated = 0.0;
-    let mut steps = Vec::with_capacity(loads.len());
-    for &w in loads {
-        let solution = match algorithm {
-            StepAlgorithm::ActiveSet => {
-                solve_frictional_active_set(problem, interface, w, &start, guess.as_deref(), max_iterations)
-            }
-            StepAlgorithm::Clarabel => solve_frictional_qp(problem, w, &start, max_iterations),
-        };
+    let mut steps = Vec::with_capacity(loadings.len());
+    for loading in loadings {
+        let solution = solve_step(loading, &start, guess.as_deref())?;
         dissipated += solution.dissipation;
         start = StepStart::after(&solution);
         guess = Some(solution.state.clone());
@@ -75,7 +103,7 @@ pub fn solve_history_with(
             break;
         }
     }
-    steps
+    Ok(steps)
 }
 
 /// `steps` equal increments from 0 to `w`.

@@ -31,6 +31,7 @@ use crate::algorithms::boussinesq::{BoussinesqLoading, solve_boussinesq_step};
 use crate::algorithms::clarabel_tresca::solve_frictional_qp;
 use crate::algorithms::frictional_active_set::solve_frictional_active_set;
 use crate::error::ContactError;
+use crate::history::{HistoryStep, march};
 use crate::interface::Interface;
 use crate::loading::LoadSchedule;
 use crate::problem::ContactProblem;
@@ -182,28 +183,35 @@ pub fn solve_with(
     let mut interface = Interface::new(&loaded);
     let condense_time = clock.elapsed();
     let order = boussinesq_order(problem);
-    let mut start = StepStart::initial(problem.num_pairs());
-    let mut guess: Option<Vec<PairState>> = None;
     let mut previous_free = vec![0.0; problem.system.dofs.num_free()];
-    let mut dissipated = 0.0;
-    let mut solved = Vec::with_capacity(targets.len());
-    for (i, target) in targets.iter().enumerate() {
-        let context = StepContext { order: &order, start: &start, guess: guess.as_deref(), step: i + 1 };
-        let (solution, floating_iterations, floating_residual) =
-            solve_floating_step(&mut loaded, &mut interface, settings, target, &context, &mut previous_free)?;
-        dissipated += solution.dissipation;
-        start = StepStart::after(&solution);
-        guess = Some(solution.state.clone());
-        let converged = solution.status == ContactStatus::Converged;
-        let step = SolvedStep { factors: target.clone(), solution, dissipated, floating_iterations, floating_residual };
-        if scaled.is_none() {
-            on_step(i, &step);
-        }
-        solved.push(step);
-        if !converged {
-            break;
-        }
-    }
+    // (iterations, residual) of the floating bodies' proximal iteration, per step.
+    let floating = std::cell::RefCell::new(Vec::with_capacity(targets.len()));
+    let step_of = |i: usize, h: &HistoryStep| SolvedStep {
+        factors: targets[i].clone(),
+        solution: h.solution.clone(),
+        dissipated: h.dissipated,
+        floating_iterations: floating.borrow().get(i).map_or(0, |f: &(usize, f64)| f.0),
+        floating_residual: floating.borrow().get(i).map_or(0.0, |f: &(usize, f64)| f.1),
+    };
+    let history = march(
+        &targets,
+        problem.num_pairs(),
+        |target, start, guess| {
+            let step = floating.borrow().len() + 1;
+            let context = StepContext { order: &order, start, guess, step };
+            let (solution, iterations, residual) =
+                solve_floating_step(&mut loaded, &mut interface, settings, target, &context, &mut previous_free)?;
+            floating.borrow_mut().push((iterations, residual));
+            Ok::<_, ContactError>(solution)
+        },
+        &mut |h| {
+            if scaled.is_none() {
+                let i = floating.borrow().len() - 1;
+                on_step(i, &step_of(i, h));
+            }
+        },
+    )?;
+    let solved: Vec<SolvedStep> = history.iter().enumerate().map(|(i, h)| step_of(i, h)).collect();
     let is_scaled = scaled.is_some();
     let steps = match scaled {
         Some((_, multipliers)) => scale_steps(&solved, &multipliers, on_step),

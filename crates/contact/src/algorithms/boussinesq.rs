@@ -354,18 +354,13 @@ pub fn solve_boussinesq_history(
             )));
         }
     }
-    let mut start = StepStart::initial(problem.num_pairs());
-    let mut dissipated = 0.0;
-    let mut steps = Vec::with_capacity(loadings.len());
-    for &loading in loadings {
-        let step = solve_boussinesq_step(problem, interface, order, loading, &start, max_iterations);
-        dissipated += step.solution.dissipation;
-        start = StepStart::after(&step.solution);
-        let converged = step.solution.status == ContactStatus::Converged;
-        steps.push(crate::history::HistoryStep { solution: step.solution, dissipated });
-        if !converged {
-            break;
-        }
-    }
-    Ok(steps)
+    // The zones are assumed from the pair order, not guessed from the previous states.
+    crate::history::march(
+        loadings,
+        problem.num_pairs(),
+        |&loading, start, _| {
+            Ok(solve_boussinesq_step(problem, interface, order, loading, start, max_iterations).solution)
+        },
+        &mut |_| {},
+    )
 }
