@@ -33,6 +33,9 @@ fn the_flagship_in_the_generic_schema_gives_the_presets_numbers() {
     close(g.energies["plate"], r.Phi_E1, "Φ_E1");
     close(g.energies["insert"], r.Phi_E2, "Φ_E2");
     close(g.contacts["hole"].dissipation, r.Phi_f, "Φ_f");
+    // The work of the prescribed pull, ½ f·u over every DOF (the reactions times the prescribed
+    // displacements), is the preset's W = P w / 2.
+    close(g.steps.last().unwrap().work, r.W, "W");
     // Profiles: the same pairs (node-to-node on the same morphed mesh), pair by pair.
     let last = preset.steps.last().unwrap();
     let (p, q) = contact2d::contact::pair_tractions(&last.case.problem, &last.solution);

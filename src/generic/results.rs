@@ -96,6 +96,12 @@ pub struct StepResult {
     pub reactions: BTreeMap<String, [f64; 2]>,
     /// Per body: strain energy.
     pub energies: BTreeMap<String, f64>,
+    /// Work of the loads and prescribed displacements up to this step, `W = Σ ½ (f_{i−1} + f_i) ·
+    /// (u_i − u_{i−1})` with `f` the nodal loads plus the reactions (trapezoid rule; exact for
+    /// a history solved once and scaled).
+    pub work: f64,
+    /// Friction dissipation of every interface up to this step.
+    pub dissipated: f64,
     /// KKT residuals.
     pub kkt: Kkt,
 }
@@ -125,6 +131,7 @@ pub fn step_results(
     let names: Vec<String> = problem.patterns().iter().map(|p| p.name.clone()).collect();
     let mut dissipated = vec![0.0; built.interfaces.len()];
     let mut previous: Option<&ContactSolution> = None;
+    let (mut work, mut previous_force) = (0.0, vec![0.0; problem.system.dofs.num_global()]);
     let mut out = Vec::with_capacity(history.steps.len());
     for (i, step) in history.steps.iter().enumerate() {
         let s = &step.solution;
@@ -134,6 +141,15 @@ pub fn step_results(
             dissipated[k] += interface_dissipation(iface, s, previous);
             contacts.insert(iface.name.clone(), contact_result(built, iface, s, dissipated[k], last));
         }
+        let force = external_force(built, s, &step.factors);
+        let before = previous.map(|p| p.displacement.as_slice());
+        work += s
+            .displacement
+            .iter()
+            .enumerate()
+            .map(|(d, u)| 0.5 * (previous_force[d] + force[d]) * (u - before.map_or(0.0, |b| b[d])))
+            .sum::<f64>();
+        previous_force = force;
         let mut energies = BTreeMap::new();
         for (b, body) in problem.model.bodies.iter().enumerate() {
             energies.insert(body.name.clone(), strain_energy(&problem.model, BodyId(b), &s.displacement)?);
@@ -145,6 +161,8 @@ pub fn step_results(
             contacts,
             reactions: reactions(built, s, &step.factors, fixed_groups),
             energies,
+            work,
+            dissipated: step.dissipated,
             kkt: Kkt {
                 max_penetration: s.kkt.max_penetration,
                 max_complementarity: s.kkt.max_complementarity,
@@ -157,6 +175,21 @@ pub fn step_results(
         previous = Some(s);
     }
     Ok(out)
+}
+
+/// The external nodal forces of a step in global DOF order: the loads of its pattern factors plus
+/// the reactions at the prescribed DOFs.
+fn external_force(built: &BuiltProblem, s: &ContactSolution, factors: &[f64]) -> Vec<f64> {
+    let problem = &built.problem;
+    let mut f = vec![0.0; problem.system.dofs.num_global()];
+    for (pattern, factor) in problem.patterns().iter().zip(factors) {
+        f.iter_mut().zip(&pattern.nodal).for_each(|(f, v)| *f += factor * v);
+    }
+    let r = problem.reactions(&s.displacement, factors);
+    for (j, d) in problem.system.dofs.constrained_dofs().iter().enumerate() {
+        f[d.0] += r[j];
+    }
+    f
 }
 
 /// `[f1, f2]` summed over the constrained DOFs of each group's nodes.

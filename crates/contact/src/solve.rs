@@ -51,6 +51,10 @@ pub enum ContactAlgorithm {
     Boussinesq,
 }
 
+/// The largest iteration limit per step: every iteration of the condensed algorithms factors a
+/// dense matrix of the pairs, so the bound keeps a run's time finite and known up front.
+pub const MAX_ITERATIONS: usize = 10_000;
+
 /// Validated solver settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverSettings {
@@ -70,11 +74,11 @@ impl SolverSettings {
     /// Sets the iteration limit of the algorithm per step.
     ///
     /// # Errors
-    /// Zero, or more than 1 000 000.
+    /// Zero, or more than [`MAX_ITERATIONS`].
     pub fn with_max_iterations(mut self, max_iterations: usize) -> Result<SolverSettings, ContactError> {
-        if !(1..=1_000_000).contains(&max_iterations) {
+        if !(1..=MAX_ITERATIONS).contains(&max_iterations) {
             return Err(ContactError::InvalidInput(format!(
-                "max_iterations = {max_iterations} must lie in 1 ..= 1000000"
+                "max_iterations = {max_iterations} must lie in 1 ..= {MAX_ITERATIONS}"
             )));
         }
         self.max_iterations = max_iterations;
