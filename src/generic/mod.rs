@@ -229,8 +229,8 @@ pub fn solve_generic(
     let mut notes = scene.element_warnings();
     if !balance_checked {
         notes.push(
-            "energy balance not checked: a body held only by contact crosses a gap under a force, and the work of \
-             the force on its rigid travel is stored nowhere in a quasi-static model"
+            "energy balance not checked: a body held only by contact meets initial gaps under a force, and the work \
+             of the force on any rigid travel before contact is stored nowhere in a quasi-static model"
                 .into(),
         );
     }
