@@ -3,7 +3,8 @@
 #
 #   pip install gmsh                 # gmsh 4.15.2 was used for the committed files
 #   meshes/generic/generate.sh       # writes two_blocks.msh, cylinder_on_block_L{1,2,3}.msh,
-#                                    # cylinder_on_block_big_L2.msh, pin_lug.msh
+#                                    # cylinder_on_block_big_L2.msh, pin_lug.msh,
+#                                    # interference_fit.msh
 #   meshes/generic/generate.sh --no-check
 #
 # Environment: GMSH (default: gmsh), PYTHON (default: python3, must import gmsh for the check).
@@ -41,4 +42,5 @@ done
 mesh cylinder_on_block.geo cylinder_on_block_big_L2.msh cylinder,block "$cob_curves" \
   cylinder_arc:6.21 block_top:6.21 -- -setnumber level 2 -setnumber scale 2
 mesh pin_lug.geo pin_lug.msh lug,pin hole,pin_contact,pin_back,symmetry,lug_fixed,lug_end,lug_top
+mesh interference_fit.geo interference_fit.msh disk,ring disk_rim,ring_bore,ring_outer,sym_x,sym_y
 exit $status
