@@ -320,7 +320,7 @@ impl Scene {
     /// assert!(Scene::from_toml_str(text, path, &["plate_insert.poissons_ratio=0.5".into()]).is_err());
     /// ```
     pub fn from_toml_str(text: &str, path: &Path, overrides: &[String]) -> Result<Scene, SceneError> {
-        let mut scene: Scene = parse_scene_toml(text, path, overrides)?;
+        let mut scene: Scene = parse_scene_toml(text, path, overrides, &[])?;
         scene.file = path.to_path_buf();
         scene.base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         scene.validate()?;
@@ -512,10 +512,17 @@ pub(crate) fn parse_scene_toml<T: serde::de::DeserializeOwned>(
     text: &str,
     path: &Path,
     overrides: &[String],
+    optional_tables: &[&str],
 ) -> Result<T, SceneError> {
     let shown = path.display().to_string();
     let invalid = |reason: String| SceneError::Invalid { path: shown.clone(), reason };
     let mut value: toml::Value = toml::from_str(text).map_err(|e| invalid(spanned_reason(text, &e)))?;
+    // Sections the file may leave out (all their keys have defaults) exist for `--set`.
+    if let Some(table) = value.as_table_mut() {
+        for name in optional_tables {
+            table.entry(*name).or_insert_with(|| toml::Value::Table(toml::Table::new()));
+        }
+    }
     for assignment in overrides {
         apply_override(&mut value, assignment)?;
     }

@@ -136,3 +136,23 @@ fn an_unheld_body_is_a_typed_error_naming_it() {
     let err = solve_generic(&scene, &mut |_, _| {}).unwrap_err().to_string();
     assert!(err.contains("\"cylinder\"") && err.contains("u2 translation"), "{err}");
 }
+
+#[test]
+fn a_scene_without_contact_is_plain_elasticity_and_optional_sections_take_overrides() {
+    // The lower block alone under a pressure of 1 on its top (length 4): the clamped bottom
+    // carries 4 (equilibrium, to round-off), with no pair to solve for.
+    let text = "name = \"block\"\nmesh = \"../meshes/generic/two_blocks.msh\"\n[[body]]\nregion = \"lower\"\n\
+                youngs_modulus = 1000.0\npoissons_ratio = 0.3\n[[fix]]\ngroup = \"lower_bottom\"\nu1 = 0.0\nu2 = 0.0\n\
+                [[load]]\ngroup = \"lower_top\"\npressure = 1.0\n";
+    let path = Path::new("scenes/block_without_contact.toml");
+    for algorithm in ["active_set", "clarabel"] {
+        let scene =
+            contact2d::generic::GenericScene::from_toml_str(text, path, &[format!("solver.algorithm={algorithm}")])
+                .unwrap();
+        let out = solve_generic(&scene, &mut |_, _| {}).unwrap();
+        assert_eq!(out.report.status, "converged");
+        assert_eq!(out.report.pairs, 0);
+        let r = out.report.reactions["lower_bottom"];
+        assert!(r[0].abs() < 1e-12 && (r[1] - 4.0).abs() < 1e-12, "{r:?}");
+    }
+}

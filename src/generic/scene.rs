@@ -295,7 +295,7 @@ impl GenericScene {
     /// # Errors
     /// [`SceneError`] naming the file and the line, key or override at fault.
     pub fn from_toml_str(text: &str, path: &Path, overrides: &[String]) -> Result<GenericScene, SceneError> {
-        let mut scene: GenericScene = parse_scene_toml(text, path, overrides)?;
+        let mut scene: GenericScene = parse_scene_toml(text, path, overrides, &["loading", "solver"])?;
         scene.file = path.to_path_buf();
         scene.base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         scene.validate()?;

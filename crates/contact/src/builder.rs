@@ -185,7 +185,14 @@ impl ProblemDescription {
             let model = self.model(mesh.clone())?;
             for c in self.contacts.iter().filter(|c| c.pairing == Pairing::NodeToNode) {
                 let (pairs, slave, _) = self.pair(&model, c)?;
-                let targets = node_to_node_targets(&pairs, &slave)?;
+                let targets = node_to_node_targets(&pairs, &slave).map_err(|e| match e {
+                    ContactError::Pairing { reason, .. } => ContactError::Pairing {
+                        master: c.master.clone(),
+                        slave: c.slave.clone(),
+                        reason: format!("contact \"{}\": {reason} (use pairing = \"node_to_segment\")", c.name),
+                    },
+                    other => other,
+                })?;
                 move_nodes(&mut mesh, &targets, 2).map_err(|e| ContactError::Pairing {
                     master: c.master.clone(),
                     slave: c.slave.clone(),

@@ -35,6 +35,7 @@ use crate::history::{HistoryStep, march};
 use crate::interface::Interface;
 use crate::loading::LoadSchedule;
 use crate::problem::ContactProblem;
+use crate::report::{RawSolution, finish_from_displacement};
 use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
 
 /// Which algorithm solves each step. Adding an algorithm is one file plus one variant here.
@@ -392,6 +393,20 @@ fn solve_step(
     settings: &SolverSettings,
     context: &StepContext,
 ) -> ContactSolution {
+    if problem.num_pairs() == 0 {
+        // No contact pair: the bodies' linear problem, one solve with the factorisation.
+        let clock = std::time::Instant::now();
+        let u_free = interface.free_displacement(1.0, &[], &[]);
+        let raw = RawSolution {
+            load_factor: 1.0,
+            normal_force: vec![],
+            tangential_force: vec![],
+            status: ContactStatus::Converged,
+            iterations: 0,
+            time: clock.elapsed(),
+        };
+        return finish_from_displacement(problem, &u_free, raw, context.start);
+    }
     let max = settings.max_iterations;
     match settings.algorithm {
         ContactAlgorithm::ActiveSet => {
