@@ -15,19 +15,27 @@ use std::process::Command;
 
 use serde_json::Value;
 
-/// The `--json` summary of one run with `threads` rayon threads, timing fields removed.
-fn run(algorithm: &str, threads: &str) -> Value {
+/// The `--json` summary of `contact2d run ARGS` with `threads` rayon threads, timing fields
+/// removed.
+fn summary(args: &[&str], threads: &str) -> Value {
     let out = Command::new(env!("CARGO_BIN_EXE_contact2d"))
         .env("RAYON_NUM_THREADS", threads)
-        .args(["run", "scenes/plate_insert_gap_v1_mu03.toml", "--json", "--set"])
-        .arg("plate_insert.mesh=../meshes/plate_insert/plate_insert_eps0.05_N16.msh")
-        .args(["--set", &format!("solver.algorithm={algorithm}")])
+        .arg("run")
+        .args(args)
+        .arg("--json")
         .output()
         .unwrap();
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let mut summary: Value = serde_json::from_slice(&out.stdout).unwrap();
     strip_times(&mut summary);
     summary
+}
+
+/// The flagship's U(1) history on the N = 16 mesh with `algorithm`.
+fn run(algorithm: &str, threads: &str) -> Value {
+    let algorithm = format!("solver.algorithm={algorithm}");
+    let mesh = "plate_insert.mesh=../meshes/plate_insert/plate_insert_eps0.05_N16.msh";
+    summary(&["scenes/plate_insert_gap_v1_mu03.toml", "--set", mesh, "--set", &algorithm], threads)
 }
 
 /// Removes every field whose name ends in `time_s` (wall times), at any depth.
@@ -62,28 +70,15 @@ fn active_set_history_is_the_same_every_run_and_thread_count() {
     assert_repeatable("active_set");
 }
 
-/// The `--json` summary of a generic scene with `threads` rayon threads, times removed.
-fn run_generic(scene: &str, threads: &str) -> Value {
-    let out = Command::new(env!("CARGO_BIN_EXE_contact2d"))
-        .env("RAYON_NUM_THREADS", threads)
-        .args(["run", scene, "--json"])
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let mut summary: Value = serde_json::from_slice(&out.stdout).unwrap();
-    strip_times(&mut summary);
-    summary
-}
-
 #[test]
 fn generic_histories_with_floating_bodies_are_the_same_every_run_and_thread_count() {
     // Press-then-slide (two patterns, a floating block) and the pin in a lug (clearance,
     // friction, a floating pin): the proximal iterations and the schedules add no randomness.
     for scene in ["scenes/generic/two_blocks_press_slide.toml", "scenes/generic/pin_lug.toml"] {
-        let first = run_generic(scene, "1");
+        let first = summary(&[scene], "1");
         assert_eq!(first["status"], "converged", "{scene}");
         for threads in ["1", "2"] {
-            assert_eq!(run_generic(scene, threads), first, "{scene} with {threads} thread(s)");
+            assert_eq!(summary(&[scene], threads), first, "{scene} with {threads} thread(s)");
         }
     }
 }

@@ -26,6 +26,7 @@ pub use results::{ContactResult, Kkt, Profile, StepResult};
 pub use scene::GenericScene;
 
 use crate::input_file::{InputFileError, MAX_MESH_BYTES, check_input_file};
+use crate::output::mesh_plot::bounding_box;
 use crate::scene::SceneError;
 
 /// Errors of a generic run.
@@ -340,10 +341,8 @@ fn group_reports(
     for name in unique(names) {
         let group = mesh.group(&name)?;
         let nodes = mesh.group_nodes(&name)?;
-        let bbox =
-            nodes.iter().map(|n| mesh.points[n.0]).fold([[f64::INFINITY; 2], [f64::NEG_INFINITY; 2]], |[lo, hi], p| {
-                [[lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])]]
-            });
+        let points: Vec<[f64; 2]> = nodes.iter().map(|n| mesh.points[n.0]).collect();
+        let bbox = bounding_box(points.iter());
         let length = if group.dim == 1 { group_length(mesh, &name)? } else { 0.0 };
         out.insert(name, GroupReport { dim: group.dim, length, bbox });
     }

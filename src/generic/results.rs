@@ -79,6 +79,8 @@ pub struct Kkt {
     pub max_slip_inside_cone: f64,
     /// The force the floating bodies' stabilising springs still carry (0 without floating bodies).
     pub floating_residual: f64,
+    /// Proximal iterations of the floating bodies in the step (0 without floating bodies).
+    pub floating_iterations: usize,
 }
 
 /// One step's results.
@@ -141,7 +143,8 @@ pub fn step_results(
             dissipated[k] += interface_dissipation(iface, s, previous);
             contacts.insert(iface.name.clone(), contact_result(built, iface, s, dissipated[k], last));
         }
-        let force = external_force(built, s, &step.factors);
+        let reactions = reactions_at_dofs(built, s, &step.factors);
+        let force = external_force(built, &reactions, &step.factors);
         let before = previous.map(|p| p.displacement.as_slice());
         work += s
             .displacement
@@ -159,7 +162,7 @@ pub fn step_results(
             status: status_name(s.status),
             iterations: s.iterations,
             contacts,
-            reactions: reactions(built, s, &step.factors, fixed_groups),
+            reactions: group_reactions(built, &reactions, fixed_groups),
             energies,
             work,
             dissipated: step.dissipated,
@@ -170,6 +173,7 @@ pub fn step_results(
                 min_dissipation: s.kkt.min_dissipation,
                 max_slip_inside_cone: s.kkt.max_slip_inside_cone,
                 floating_residual: step.floating_residual,
+                floating_iterations: step.floating_iterations,
             },
         });
         previous = Some(s);
@@ -177,39 +181,33 @@ pub fn step_results(
     Ok(out)
 }
 
-/// The external nodal forces of a step in global DOF order: the loads of its pattern factors plus
-/// the reactions at the prescribed DOFs.
-fn external_force(built: &BuiltProblem, s: &ContactSolution, factors: &[f64]) -> Vec<f64> {
+/// The reactions of a step in global DOF order (zero at free DOFs).
+fn reactions_at_dofs(built: &BuiltProblem, s: &ContactSolution, factors: &[f64]) -> Vec<f64> {
     let problem = &built.problem;
-    let mut f = vec![0.0; problem.system.dofs.num_global()];
-    for (pattern, factor) in problem.patterns().iter().zip(factors) {
-        f.iter_mut().zip(&pattern.nodal).for_each(|(f, v)| *f += factor * v);
-    }
+    let mut at_dof = vec![0.0; problem.system.dofs.num_global()];
     let r = problem.reactions(&s.displacement, factors);
     for (j, d) in problem.system.dofs.constrained_dofs().iter().enumerate() {
-        f[d.0] += r[j];
+        at_dof[d.0] = r[j];
+    }
+    at_dof
+}
+
+/// The external nodal forces of a step in global DOF order: the loads of its pattern factors plus
+/// the reactions.
+fn external_force(built: &BuiltProblem, reactions: &[f64], factors: &[f64]) -> Vec<f64> {
+    let mut f = reactions.to_vec();
+    for (pattern, factor) in built.problem.patterns().iter().zip(factors) {
+        f.iter_mut().zip(&pattern.nodal).for_each(|(f, v)| *f += factor * v);
     }
     f
 }
 
-/// `[f1, f2]` summed over the constrained DOFs of each group's nodes.
-fn reactions(
-    built: &BuiltProblem,
-    s: &ContactSolution,
-    factors: &[f64],
-    groups: &[String],
-) -> BTreeMap<String, [f64; 2]> {
-    let problem = &built.problem;
-    let dofs = &problem.system.dofs;
-    let r = problem.reactions(&s.displacement, factors);
-    let mut at_dof = vec![0.0; dofs.num_global()];
-    for (j, d) in dofs.constrained_dofs().iter().enumerate() {
-        at_dof[d.0] = r[j];
-    }
+/// `[f1, f2]` summed over the reactions (global DOF order) of each group's nodes.
+fn group_reactions(built: &BuiltProblem, at_dof: &[f64], groups: &[String]) -> BTreeMap<String, [f64; 2]> {
     groups
         .iter()
         .filter_map(|g| {
-            let nodes = problem.model.mesh.group_nodes(g).ok()?;
+            let nodes = built.problem.model.mesh.group_nodes(g).ok()?;
             let sum = nodes.iter().fold([0.0, 0.0], |a, n| [a[0] + at_dof[2 * n.0], a[1] + at_dof[2 * n.0 + 1]]);
             Some((g.clone(), sum))
         })

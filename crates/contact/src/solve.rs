@@ -121,7 +121,8 @@ impl SolverSettings {
 pub struct SolvedStep {
     /// The factors of the problem's load patterns (in [`ContactProblem::patterns`] order).
     pub factors: Vec<f64>,
-    /// The solution (its `load_factor` is 1: the load is the factors' combination).
+    /// The solution (its `load_factor` is 1: the load is the factors' combination; with floating
+    /// bodies its iterations and time are summed over the proximal iterations).
     pub solution: ContactSolution,
     /// Φ_f accumulated up to and including this step.
     pub dissipated: f64,
@@ -304,6 +305,10 @@ fn solve_floating_step(
         return Ok((solve_step(loaded, interface, settings, context), 0, 0.0));
     }
     let mut residuals: Vec<f64> = vec![];
+    // The step's time is every proximal iteration's (load update and contact solve), its
+    // iterations the algorithm's summed over them.
+    let clock = std::time::Instant::now();
+    let mut inner_iterations = 0;
     for iteration in 1..=settings.max_floating_iterations {
         let mut extra = vec![0.0; previous_free.len()];
         for &(i, k) in &springs {
@@ -311,7 +316,10 @@ fn solve_floating_step(
         }
         loaded.apply_load(factors, Some(&extra))?;
         interface.update_load(loaded);
-        let solution = solve_step(loaded, interface, settings, context);
+        let mut solution = solve_step(loaded, interface, settings, context);
+        inner_iterations += solution.iterations;
+        solution.iterations = inner_iterations;
+        solution.time = clock.elapsed();
         let free = loaded.system.dofs.restrict_free(&solution.displacement);
         // The springs' total force (ℓ1): its resultant bounds the error of every resultant.
         let residual: f64 = springs.iter().map(|&(i, k)| (k * (free[i] - previous_free[i])).abs()).sum();

@@ -12,52 +12,13 @@
 //! Node counts differ between the blocks, so pairs are node-to-segment.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use contact2d_contact::{
-    ContactProblem, ContactStatus, Interface, PairState, pair_contours, solve_frictionless_active_set,
-    solve_frictionless_qp,
-};
-use contact2d_element::{Material, PlaneCondition};
-use contact2d_fem::{Component, Model};
-use contact2d_mesh::generate::{MappedGrid, Side, append_prefixed, mapped_grid, rectangle};
-use contact2d_mesh::{CellKind, Contour};
+use contact2d_contact::{ContactStatus, Interface, PairState, solve_frictionless_active_set, solve_frictionless_qp};
+use contact2d_mesh::CellKind;
 use proptest::prelude::*;
 
-fn two_blocks(kind: CellKind, gap: f64, tilt: f64, ratio: f64, push: f64, na: usize, nb: usize) -> ContactProblem {
-    let mut mesh = rectangle(kind, [0.0, 3.0], [-1.0, 0.0], na, 2);
-    for g in &mut mesh.groups {
-        g.name = format!("a_{}", g.name);
-    }
-    let upper = mapped_grid(
-        &MappedGrid { kind, nx: nb, ny: 2, region: "domain" },
-        |u, v| {
-            let x = 0.5 + 2.0 * u;
-            [x, gap + tilt * (x - 1.5) + 0.8 * v]
-        },
-        |side, _| {
-            Some(
-                match side {
-                    Side::Bottom => "bottom",
-                    Side::Top => "top",
-                    Side::Left => "left",
-                    Side::Right => "right",
-                }
-                .to_string(),
-            )
-        },
-    );
-    append_prefixed(&mut mesh, &upper, "b_");
-    let mut model = Model::new(mesh);
-    model.add_body("a_domain", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
-    model.add_body("b_domain", Material::new(ratio, 0.25, PlaneCondition::Strain).unwrap(), 1.0).unwrap();
-    model.fix("a_bottom", Component::X, 0.0).unwrap();
-    model.fix("a_bottom", Component::Y, 0.0).unwrap();
-    model.fix("b_top", Component::X, 0.0).unwrap();
-    model.fix("b_top", Component::Y, -push).unwrap();
-    let master = Contour::from_group(&model.mesh, "b_bottom").unwrap();
-    let slave = Contour::from_group(&model.mesh, "a_top").unwrap();
-    let pairs = pair_contours(&model, &master, &slave, "a_domain").unwrap();
-    ContactProblem::new(model, pairs).unwrap()
-}
+#[path = "fixtures/two_blocks.rs"]
+mod fixture;
+use fixture::two_blocks;
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
