@@ -23,6 +23,7 @@ pub mod run;
 pub mod scene;
 pub mod stress;
 pub mod sweep;
+pub mod verify;
 
 // The README's library example is compiled and run as a doctest.
 #[doc = include_str!("../README.md")]

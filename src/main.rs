@@ -126,6 +126,15 @@ enum Command {
     ///   contact2d stress --ratios 1e-4,1e6 --frictions 0,1.5 --eps 0 --no-extra
     #[command(verbatim_doc_comment)]
     Stress(contact2d::stress::StressArgs),
+    /// The verification gallery: closed-form and published cases, measured against their
+    /// references, PASS/FAIL per quantity (exit status 3 when a check fails).
+    ///
+    /// Examples:
+    ///   contact2d verify
+    ///   contact2d verify --level full --out verify-out
+    ///   contact2d verify --cases hertz,incline --markdown
+    #[command(verbatim_doc_comment)]
+    Verify(contact2d::verify::VerifyArgs),
 }
 
 fn run(cli: Cli) -> anyhow::Result<()> {
@@ -198,6 +207,13 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         }
         Command::Sweep { scene, vary, set, plot, out, quiet } => sweep(&scene, &vary, &set, &plot, out, quiet)?,
         Command::Bench(args) => writeln!(std::io::stdout().lock(), "{}", contact2d::bench::run_command(&args)?)?,
+        Command::Verify(args) => {
+            let (table, passed) = contact2d::verify::run_command(&args)?;
+            write!(std::io::stdout().lock(), "{table}")?;
+            if !passed {
+                return Err(VerificationFailed.into());
+            }
+        }
         Command::Stress(args) => writeln!(std::io::stdout().lock(), "{}", contact2d::stress::run_command(&args)?)?,
     }
     Ok(())
@@ -542,6 +558,18 @@ impl contact2d::run::Progress for StepBar {
     }
 }
 
+/// `contact2d verify` ran and a check failed (exit status 3).
+#[derive(Debug)]
+struct VerificationFailed;
+
+impl std::fmt::Display for VerificationFailed {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("a verification check failed")
+    }
+}
+
+impl std::error::Error for VerificationFailed {}
+
 fn main() -> ExitCode {
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
@@ -549,6 +577,8 @@ fn main() -> ExitCode {
         Err(e) if e.downcast_ref::<std::io::Error>().is_some_and(|e| e.kind() == std::io::ErrorKind::BrokenPipe) => {
             ExitCode::SUCCESS
         }
+        // The table is printed; the status says that a check failed.
+        Err(e) if e.downcast_ref::<VerificationFailed>().is_some() => ExitCode::from(3),
         Err(e) => {
             print_stderr(&format!("error: {}", error_line(&e)));
             ExitCode::FAILURE

@@ -133,3 +133,17 @@ fn a_closed_stdout_ends_quietly_without_a_panic() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success() && !stderr.contains("panicked"), "{:?} {stderr}", out.status);
 }
+
+/// `contact2d verify` prints one PASS/FAIL line per check and a count, and exits 0 when every
+/// check passes; an unknown case is an error (exit 1).
+#[test]
+fn verify_prints_the_table_and_counts() {
+    let (ok, stdout, stderr) = contact2d(&["verify", "--cases", "interference_fit,incline"]);
+    assert!(ok, "{stderr}");
+    assert!(stdout.contains("== interference_fit") && stdout.contains("== incline"), "{stdout}");
+    let checks = stdout.lines().filter(|l| l.ends_with("PASS") || l.ends_with("FAIL")).count();
+    assert!(stdout.contains(&format!("{checks} of {checks} checks passed")), "{stdout}");
+    let out = Command::new(env!("CARGO_BIN_EXE_contact2d")).args(["verify", "--cases", "nonsense"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no such case"));
+}

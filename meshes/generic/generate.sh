@@ -4,7 +4,8 @@
 #   pip install gmsh                 # gmsh 4.15.2 was used for the committed files
 #   meshes/generic/generate.sh       # writes two_blocks.msh, cylinder_on_block_L{1,2,3}.msh,
 #                                    # cylinder_on_block_big_L2.msh, pin_lug.msh,
-#                                    # interference_fit.msh
+#                                    # interference_fit.msh, cattaneo_mindlin_L{1,2,3}.msh,
+#                                    # incline.msh
 #   meshes/generic/generate.sh --no-check
 #
 # Environment: GMSH (default: gmsh), PYTHON (default: python3, must import gmsh for the check).
@@ -43,4 +44,9 @@ mesh cylinder_on_block.geo cylinder_on_block_big_L2.msh cylinder,block "$cob_cur
   cylinder_arc:6.21 block_top:6.21 -- -setnumber level 2 -setnumber scale 2
 mesh pin_lug.geo pin_lug.msh lug,pin hole,pin_contact,pin_back,symmetry,lug_fixed,lug_end,lug_top
 mesh interference_fit.geo interference_fit.msh disk,ring disk_rim,ring_bore,ring_outer,sym_x,sym_y
+for level in 1 2 3; do
+  mesh cattaneo_mindlin.geo "cattaneo_mindlin_L$level.msh" cylinder,block \
+    cylinder_arc,cylinder_top,block_top,block_bottom,block_side -- -setnumber level "$level"
+done
+mesh incline.geo incline.msh block,ground block_bottom,block_left,block_right,block_top,ground_top
 exit $status

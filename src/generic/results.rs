@@ -222,7 +222,11 @@ fn sorted_pairs(built: &BuiltProblem, iface: &InterfaceInfo) -> Vec<usize> {
     order
 }
 
-fn contact_result(
+/// One interface's results for the solution `s` of a step: forces, zone lengths, the largest
+/// pressure, the given accumulated dissipation and, if asked, the profile
+/// (`p_k = λ_k / (w_k t_h)`, `q_k = τ_k / (w_k t_h)` with `w_k` the master node's tributary
+/// length and `t_h` the thickness).
+pub fn contact_result(
     built: &BuiltProblem,
     iface: &InterfaceInfo,
     s: &ContactSolution,

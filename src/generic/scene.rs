@@ -13,8 +13,8 @@
 //! group = "block_bottom"
 //! u1 = 0.0
 //! u2 = 0.0
-//! [[load]]                          # force (total, per unit thickness), traction or pressure
-//! group = "cylinder_top"
+//! [[load]]                          # force (total, per unit thickness), traction, pressure, or
+//! group = "cylinder_top"            # body_force (per unit volume) with group = a body's region
 //! force = [0.0, -35000.0]
 //! pattern = "press"                 # default "main"
 //! [[contact]]
@@ -121,7 +121,8 @@ pub struct FixEntry {
     pub pattern: String,
 }
 
-/// One `[[load]]`: exactly one of `force`, `traction`, `pressure`.
+/// One `[[load]]`: exactly one of `force`, `traction`, `pressure` (on a 1D group) or
+/// `body_force` (on a body's 2D region).
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LoadEntry {
@@ -133,6 +134,9 @@ pub struct LoadEntry {
     pub traction: Option<[f64; 2]>,
     /// Pressure, positive against the body.
     pub pressure: Option<f64>,
+    /// Body force `[b1, b2]` per unit volume (e.g. the weight `[0, -ρ g]`); `group` names the
+    /// body's region.
+    pub body_force: Option<[f64; 2]>,
     /// The load pattern (default `main`).
     #[serde(default = "main")]
     pub pattern: String,
@@ -350,12 +354,23 @@ impl GenericScene {
             }
         }
         for (i, l) in self.load.iter().enumerate() {
-            let given =
-                usize::from(l.force.is_some()) + usize::from(l.traction.is_some()) + usize::from(l.pressure.is_some());
+            let given = usize::from(l.force.is_some())
+                + usize::from(l.traction.is_some())
+                + usize::from(l.pressure.is_some())
+                + usize::from(l.body_force.is_some());
             if given != 1 {
                 return Err(self.fail(
                     &format!("load.{i}"),
-                    format!("give exactly one of force, traction, pressure on \"{}\" ({given} given)", l.group),
+                    format!(
+                        "give exactly one of force, traction, pressure, body_force on \"{}\" ({given} given)",
+                        l.group
+                    ),
+                ));
+            }
+            if l.body_force.is_some() && !self.body.iter().any(|b| b.region == l.group) {
+                return Err(self.fail(
+                    &format!("load.{i}.body_force"),
+                    format!("\"{}\" is no [[body]] region: a body force acts on a body", l.group),
                 ));
             }
         }
@@ -485,10 +500,11 @@ impl GenericScene {
             .iter()
             .map(|l| LoadDescription {
                 group: l.group.clone(),
-                kind: match (l.force, l.traction, l.pressure) {
-                    (Some(f), _, _) => EdgeLoadKind::Force(f),
-                    (_, Some(t), _) => EdgeLoadKind::Traction(t),
-                    (_, _, p) => EdgeLoadKind::Pressure(p.unwrap_or(0.0)),
+                kind: match (l.force, l.traction, l.body_force, l.pressure) {
+                    (Some(f), _, _, _) => EdgeLoadKind::Force(f),
+                    (_, Some(t), _, _) => EdgeLoadKind::Traction(t),
+                    (_, _, Some(b), _) => EdgeLoadKind::BodyForce(b),
+                    (_, _, _, p) => EdgeLoadKind::Pressure(p.unwrap_or(0.0)),
                 },
                 pattern: l.pattern.clone(),
             })
@@ -579,6 +595,10 @@ schedule = [{ press = 1.0 }, { press = 1.0, slide = 1.0 }]
         assert!(err("loading.steps=3").contains("not both"));
         let text = SCENE.replace("pressure = 1.0", "pressure = 1.0\nforce = [1.0, 0.0]");
         assert!(GenericScene::from_toml_str(&text, path, &[]).unwrap_err().to_string().contains("exactly one"));
+        let text = SCENE.replace("group = \"top\"\npressure = 1.0", "group = \"top\"\nbody_force = [0.0, -1.0]");
+        assert!(GenericScene::from_toml_str(&text, path, &[]).unwrap_err().to_string().contains("no [[body]] region"));
+        let text = SCENE.replace("group = \"top\"\npressure = 1.0", "group = \"b\"\nbody_force = [0.0, -1.0]");
+        assert!(GenericScene::from_toml_str(&text, path, &[]).is_ok());
         let text = SCENE.replace("{ press = 1.0 }, ", "{ pres = 1.0 }, ");
         assert!(GenericScene::from_toml_str(&text, path, &[]).unwrap_err().to_string().contains("pres"));
         let text = format!("{SCENE}\nbogus = 1\n");

@@ -17,7 +17,7 @@
 use std::ops::Range;
 
 use contact2d_element::{Formulation, Material, PlaneCondition};
-use contact2d_fem::{Component, DofKind, EdgeLoad, Model, assemble_edge_loads};
+use contact2d_fem::{Component, DofKind, EdgeLoad, Model, assemble_body_forces, assemble_edge_loads};
 use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, Mesh, line_cell_length};
 
@@ -69,12 +69,16 @@ pub enum EdgeLoadKind {
     Traction([f64; 2]),
     /// A pressure, positive against the body.
     Pressure(f64),
+    /// A constant body force `b` (force per unit volume, e.g. the weight `[0, -ρ g]`) on every
+    /// cell of the body whose region the load's group names:
+    /// `f_a = ∫_Ω N_a b t_h dΩ` ([`contact2d_fem::assemble_body_forces`]).
+    BodyForce([f64; 2]),
 }
 
-/// An edge load on a 1D group.
+/// A load on a group: an edge load on a 1D group, or a body force on a body's 2D region.
 #[derive(Debug, Clone, PartialEq)]
 pub struct LoadDescription {
-    /// The 1D physical group.
+    /// The 1D physical group (the body's 2D region for [`EdgeLoadKind::BodyForce`]).
     pub group: String,
     /// What is applied.
     pub kind: EdgeLoadKind,
@@ -357,13 +361,21 @@ impl ProblemDescription {
         }
         let mut patterns = Vec::with_capacity(names.len());
         for (p, name) in names.iter().enumerate() {
-            let loads: Vec<EdgeLoad> = self
-                .loads
-                .iter()
-                .filter(|l| l.pattern == *name)
+            let mine = || self.loads.iter().filter(|l| l.pattern == *name);
+            let loads: Vec<EdgeLoad> = mine()
+                .filter(|l| !matches!(l.kind, EdgeLoadKind::BodyForce(_)))
                 .map(|l| edge_load(&model.mesh, l))
                 .collect::<Result<_, _>>()?;
-            let nodal = assemble_edge_loads(model, &loads)?;
+            let body_forces: Vec<(String, [f64; 2])> = mine()
+                .filter_map(|l| match l.kind {
+                    EdgeLoadKind::BodyForce(b) => Some((l.group.clone(), b)),
+                    _ => None,
+                })
+                .collect();
+            let mut nodal = assemble_edge_loads(model, &loads)?;
+            for (f, b) in nodal.iter_mut().zip(assemble_body_forces(model, &body_forces)?) {
+                *f += b;
+            }
             let rhs = problem.system.rhs_with(&nodal, &prescribed[p]);
             patterns.push(LoadPattern { name: name.clone(), rhs, prescribed: prescribed[p].clone(), nodal });
         }
@@ -422,6 +434,9 @@ fn edge_load(mesh: &Mesh, load: &LoadDescription) -> Result<EdgeLoad, ContactErr
                 return Err(bad());
             }
             EdgeLoad::Pressure { group, pressure: p }
+        }
+        EdgeLoadKind::BodyForce(_) => {
+            return Err(ContactError::InvalidInput(format!("\"{}\": a body force is no edge load", load.group)));
         }
     })
 }

@@ -13,7 +13,7 @@
 //! the Cholesky factorisation reads that side. `K_fc` and `K_cc` are kept so that the right-hand side and the
 //! reactions can be formed for any prescribed values without assembling again.
 
-use contact2d_element::{EdgeType, GaussRule, edge_traction_load, element_stiffness_with};
+use contact2d_element::{EdgeType, GaussRule, body_force_load, edge_traction_load, element_stiffness_with};
 use std::collections::HashMap;
 
 use contact2d_mesh::{CellKind, NodeId};
@@ -216,6 +216,42 @@ pub fn assemble_edge_loads(model: &Model, loads: &[EdgeLoad]) -> Result<Vec<f64>
                     f[2 * node.0] += fe[2 * a];
                     f[2 * node.0 + 1] += fe[2 * a + 1];
                 }
+            }
+        }
+    }
+    Ok(f)
+}
+
+/// Consistent nodal forces of constant body forces `b` (force per unit volume, e.g. the weight
+/// `ρ g`) on whole bodies, in global DOF order:
+///
+/// ```text
+/// f_a = Σ_e ∫_Ωe N_a b t_h dΩ      (every cell of the body named by the region, thickness t_h)
+/// ```
+///
+/// The total of a body's forces is `b t_h |Ω|` (the shape functions sum to one), whatever its
+/// element types.
+///
+/// # Errors
+/// [`FemError::InvalidInput`] for a region that is no body or a non-finite force; an element
+/// error for a degenerate cell.
+pub fn assemble_body_forces(model: &Model, forces: &[(String, [f64; 2])]) -> Result<Vec<f64>, FemError> {
+    let mut f = vec![0.0; 2 * model.mesh.num_nodes()];
+    for (region, b) in forces {
+        if !b.iter().all(|v| v.is_finite()) {
+            return Err(FemError::InvalidInput(format!("body force on \"{region}\" is not finite")));
+        }
+        let (_, body) = model
+            .body(region)
+            .ok_or_else(|| FemError::InvalidInput(format!("body force on \"{region}\": no body has that region")))?;
+        for i in 0..body.num_cells() {
+            let element = body.elements[i];
+            let rule = GaussRule::stiffness_rule(element);
+            let fe = body_force_load(element, &body.cell_coords(&model.mesh, i), body.thickness, *b, &rule)
+                .map_err(|source| FemError::Element { body: body.name.clone(), cell: body.cell_tags[i], source })?;
+            for (a, node) in body.cell_nodes(i).iter().enumerate() {
+                f[2 * node.0] += fe[2 * a];
+                f[2 * node.0 + 1] += fe[2 * a + 1];
             }
         }
     }

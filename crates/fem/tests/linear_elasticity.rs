@@ -137,3 +137,21 @@ fn an_unsupported_piece_of_a_body_is_reported() {
         other => panic!("expected the free piece to be reported, got {other:?}"),
     }
 }
+
+/// A body force sums to `b t_h |Ω|` on every element type (the shape functions are a partition
+/// of unity and the rule integrates them exactly on straight cells), to round-off; a region that
+/// is no body is an error.
+#[test]
+fn body_forces_sum_to_the_weight() {
+    use contact2d_fem::assemble_body_forces;
+    for kind in [CellKind::Tri3, CellKind::Tri6, CellKind::Quad4, CellKind::Quad8, CellKind::Quad9] {
+        let mut model = Model::new(rectangle(kind, [0.0, 2.0], [0.0, 1.5], 3, 2));
+        model.add_body("domain", Material::new(200.0, 0.3, PlaneCondition::Stress).unwrap(), 0.5).unwrap();
+        let f = assemble_body_forces(&model, &[("domain".into(), [0.25, -2.0])]).unwrap();
+        let (fx, fy) = f.chunks(2).fold((0.0, 0.0), |(x, y), c| (x + c[0], y + c[1]));
+        let volume = 2.0 * 1.5 * 0.5;
+        assert!((fx - 0.25 * volume).abs() < 1e-13 && (fy + 2.0 * volume).abs() < 1e-13, "{kind:?}: ({fx}, {fy})");
+        assert!(assemble_body_forces(&model, &[("nowhere".into(), [0.0, 1.0])]).is_err());
+        assert!(assemble_body_forces(&model, &[("domain".into(), [f64::NAN, 1.0])]).is_err());
+    }
+}
