@@ -5,7 +5,7 @@
 #   meshes/generic/generate.sh       # writes two_blocks.msh, cylinder_on_block_L{1,2,3}.msh,
 #                                    # cylinder_on_block_big_L2.msh, pin_lug.msh,
 #                                    # interference_fit.msh, cattaneo_mindlin_L{1,2,3}.msh,
-#                                    # incline.msh
+#                                    # incline.msh, pin_lug_L1.msh, pin_lug_L3.msh
 #   meshes/generic/generate.sh --no-check
 #
 # Environment: GMSH (default: gmsh), PYTHON (default: python3, must import gmsh for the check).
@@ -42,7 +42,12 @@ for level in 1 2 3; do
 done
 mesh cylinder_on_block.geo cylinder_on_block_big_L2.msh cylinder,block "$cob_curves" \
   cylinder_arc:6.21 block_top:6.21 -- -setnumber level 2 -setnumber scale 2
-mesh pin_lug.geo pin_lug.msh lug,pin hole,pin_contact,pin_back,symmetry,lug_fixed,lug_end,lug_top
+pin_curves=hole,pin_contact,pin_back,pin_arc,symmetry,lug_fixed,lug_end,lug_top
+mesh pin_lug.geo pin_lug_L1.msh lug,pin "$pin_curves" -- -setnumber n_contact 20 -setnumber n_back 6 \
+  -setnumber h_lug 8 -setnumber h_pin_centre 4
+mesh pin_lug.geo pin_lug.msh lug,pin "$pin_curves"
+mesh pin_lug.geo pin_lug_L3.msh lug,pin "$pin_curves" -- -setnumber n_contact 80 -setnumber n_back 20 \
+  -setnumber h_lug 2 -setnumber h_pin_centre 1
 mesh interference_fit.geo interference_fit.msh disk,ring disk_rim,ring_bore,ring_outer,sym_x,sym_y
 for level in 1 2 3; do
   mesh cattaneo_mindlin.geo "cattaneo_mindlin_L$level.msh" cylinder,block \

@@ -13,6 +13,7 @@
 // Lug: [-40, 25] x [0, 25] minus the half disc r < 10 about the origin.  Pin: the half disc
 // r <= 9.9 about the origin (radial clearance 0.1).  hole: the lug's arc (two curves, split at
 // 120 deg); pin_contact: the pin's arc for 0 <= theta <= 120 deg; pin_back: 120..180 deg;
+// pin_arc: both (the whole pin arc, 0..180 deg);
 // symmetry: the y = 0 lines of BOTH bodies.  The bodies share no point (AutoCoherence = 0).
 // Both arcs: n_contact elements over 0..120 deg, n_back over 120..180 deg (uniform in theta).
 // Quadrangles everywhere (Frontal-Delaunay for quads + Blossom full-quad), sizes from the points.
@@ -78,6 +79,7 @@ Physical Surface("pin") = {2};
 Physical Curve("hole") = {2, 3};
 Physical Curve("pin_contact") = {11};
 Physical Curve("pin_back") = {12};
+Physical Curve("pin_arc") = {11, 12};                 // the whole pin arc (a rigid pin as the slave)
 Physical Curve("symmetry") = {1, 4, 13, 14};
 Physical Curve("lug_fixed") = {7};
 Physical Curve("lug_end") = {5};

@@ -18,6 +18,7 @@ pub mod flagship;
 pub mod hertz;
 pub mod incline;
 pub mod interference_fit;
+pub mod pin_lug;
 mod profile;
 pub mod report;
 
@@ -147,7 +148,7 @@ pub enum VerifyError {
 }
 
 /// The names of the gallery's cases, in the order they run.
-pub const CASES: [&str; 5] = ["hertz", "cattaneo_mindlin", "interference_fit", "incline", "flagship"];
+pub const CASES: [&str; 6] = ["hertz", "cattaneo_mindlin", "interference_fit", "incline", "pin_lug", "flagship"];
 
 /// Runs one case by name; `root` is the repository root (where `scenes/` and `meshes/` are).
 ///
@@ -159,6 +160,7 @@ pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, Ver
         "cattaneo_mindlin" => cattaneo_mindlin::run(root, level),
         "interference_fit" => interference_fit::run(root, level),
         "incline" => incline::run(root, level),
+        "pin_lug" => pin_lug::run(root, level),
         "flagship" => flagship::run(root, level),
         other => Err(VerifyError::Missing {
             case: other.to_string(),
@@ -174,7 +176,7 @@ pub struct VerifyArgs {
     #[arg(long, default_value = "fast", value_parser = ["fast", "full"])]
     pub level: String,
     /// Cases to run, comma separated (default: all of hertz, cattaneo_mindlin,
-    /// interference_fit, incline, flagship).
+    /// interference_fit, incline, pin_lug, flagship).
     #[arg(long, value_delimiter = ',')]
     pub cases: Vec<String>,
     /// The repository root (where `scenes/` and `meshes/` are).
