@@ -1,6 +1,7 @@
 //! The meshes and scene files compiled into the module (the page has no file system): the
 //! flagship's teaching meshes (N = 16 and 32 elements along the half hole edge, one per bundled
-//! clearance ε), the NAFEMS Hertz meshes L1 and L2, and the bundled scene files that set up the
+//! clearance ε), the coarsest NAFEMS Hertz mesh L1 (L2 takes over a second per
+//! solve in the browser, too slow to follow a slider), and the bundled scene files that set up the
 //! published cases and the Hertz benchmark.
 
 use crate::WebError;
@@ -12,7 +13,7 @@ pub const FLAGSHIP_EPS: [f64; 5] = [0.0, 1e-6, 0.001, 0.05, 0.2];
 pub const FLAGSHIP_REFINEMENTS: [u32; 2] = [16, 32];
 
 /// The refinement levels of the bundled Hertz meshes (`meshes/generic/cylinder_on_block_*.msh`).
-pub const HERTZ_LEVELS: [&str; 2] = ["L1", "L2"];
+pub const HERTZ_LEVELS: [&str; 1] = ["L1"];
 
 /// The Hertz scene file `scenes/generic/cylinder_on_block.toml`.
 pub const HERTZ_SCENE: &str = include_str!("../../../scenes/generic/cylinder_on_block.toml");
@@ -71,10 +72,8 @@ const FLAGSHIP_MESHES: [(f64, u32, &str, &[u8]); 10] = [
 ];
 
 /// (level, file name, bytes) of every bundled Hertz mesh.
-const HERTZ_MESHES: [(&str, &str, &[u8]); 2] = [
-    ("L1", "cylinder_on_block_L1.msh", include_bytes!("../../../meshes/generic/cylinder_on_block_L1.msh")),
-    ("L2", "cylinder_on_block_L2.msh", include_bytes!("../../../meshes/generic/cylinder_on_block_L2.msh")),
-];
+const HERTZ_MESHES: [(&str, &str, &[u8]); 1] =
+    [("L1", "cylinder_on_block_L1.msh", include_bytes!("../../../meshes/generic/cylinder_on_block_L1.msh"))];
 
 /// A bundled mesh file: its name (as in `meshes/`) and its bytes.
 #[derive(Debug, Clone, Copy)]
@@ -97,7 +96,7 @@ pub fn flagship_mesh(eps: f64, n: u32) -> Result<BundledMesh, WebError> {
         .ok_or_else(|| WebError::NoMesh(format!("no bundled flagship mesh with eps = {eps} and N = {n}")))
 }
 
-/// The Hertz mesh of refinement `level` ("L1" or "L2").
+/// The Hertz mesh of refinement `level` ("L1").
 ///
 /// # Errors
 /// [`WebError::NoMesh`] for another level.
@@ -106,7 +105,7 @@ pub fn hertz_mesh(level: &str) -> Result<BundledMesh, WebError> {
         .iter()
         .find(|m| m.0 == level)
         .map(|m| BundledMesh { file: m.1, bytes: m.2 })
-        .ok_or_else(|| WebError::NoMesh(format!("no bundled Hertz mesh at level {level:?} (L1 or L2)")))
+        .ok_or_else(|| WebError::NoMesh(format!("no bundled Hertz mesh at level {level:?} (L1)")))
 }
 
 #[cfg(test)]

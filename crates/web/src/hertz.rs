@@ -39,7 +39,7 @@ const CLOSED_FORM_SAMPLES: usize = 101;
 pub struct HertzParams {
     /// F: force per mm of thickness on the whole roller, N/mm (the scene's is 35 000).
     pub force: f64,
-    /// The mesh: "L1" or "L2".
+    /// The mesh: "L1" (the one bundled).
     pub level: String,
 }
 
