@@ -67,8 +67,18 @@ const FLAGSHIP_MESHES: [(f64, u32, &str, &[u8]); 10] = [
         "plate_insert_eps0.05_N32.msh",
         include_bytes!("../../../meshes/plate_insert/plate_insert_eps0.05_N32.msh"),
     ),
-    (0.2, 16, "plate_insert_eps0.2_N16.msh", include_bytes!("../../../meshes/plate_insert/plate_insert_eps0.2_N16.msh")),
-    (0.2, 32, "plate_insert_eps0.2_N32.msh", include_bytes!("../../../meshes/plate_insert/plate_insert_eps0.2_N32.msh")),
+    (
+        0.2,
+        16,
+        "plate_insert_eps0.2_N16.msh",
+        include_bytes!("../../../meshes/plate_insert/plate_insert_eps0.2_N16.msh"),
+    ),
+    (
+        0.2,
+        32,
+        "plate_insert_eps0.2_N32.msh",
+        include_bytes!("../../../meshes/plate_insert/plate_insert_eps0.2_N32.msh"),
+    ),
 ];
 
 /// (level, file name, bytes) of every bundled Hertz mesh.

@@ -112,7 +112,8 @@ impl FlagshipParams {
             let q = Scene::from_toml_str(text, Path::new("scenes/published.toml"), &[]).ok()?.plate_insert;
             let same = (p.variant, p.stiffness_ratio, p.eps, p.clearance, p.friction, p.load, p.steps)
                 == (q.variant, q.stiffness_ratio, q.eps, q.clearance, q.friction, q.load, q.steps)
-                && (p.gap, p.poissons_ratio, p.rigid_insert, p.pairs) == (q.gap, q.poissons_ratio, q.rigid_insert, q.pairs);
+                && (p.gap, p.poissons_ratio, p.rigid_insert, p.pairs)
+                    == (q.gap, q.poissons_ratio, q.rigid_insert, q.pairs);
             if same { PUBLISHED.iter().find(|c| c.scene == *name) } else { None }
         })
     }
@@ -207,7 +208,11 @@ pub fn flagship_view(params: &FlagshipParams, mesh_file: &str, outcome: &RunOutc
         published: params.published().map(|c| PublishedView {
             scene: c.scene,
             label: c.label,
-            values: c.quantities().into_iter().map(|(k, v)| (if k == "sigma*" { "sigma_star" } else { k }, v)).collect(),
+            values: c
+                .quantities()
+                .into_iter()
+                .map(|(k, v)| (if k == "sigma*" { "sigma_star" } else { k }, v))
+                .collect(),
         }),
         hole: contour(&profiles.hole, 1.0),
         insert: contour(&profiles.insert, 1.0 - last.case.eps),
@@ -249,7 +254,10 @@ mod tests {
     #[test]
     fn bad_parameters_are_errors() {
         assert!(matches!(solve_flagship(&params(-0.1, 0.0)), Err(WebError::Scene(_))));
-        assert!(matches!(solve_flagship(&FlagshipParams { load: f64::NAN, ..params(0.0, 0.0) }), Err(WebError::Scene(_))));
+        assert!(matches!(
+            solve_flagship(&FlagshipParams { load: f64::NAN, ..params(0.0, 0.0) }),
+            Err(WebError::Scene(_))
+        ));
         assert!(matches!(solve_flagship(&params(0.0, 0.3)), Err(WebError::NoMesh(_))));
     }
 

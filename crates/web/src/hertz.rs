@@ -57,8 +57,7 @@ impl HertzParams {
                 reason: format!("F = {} must be finite and > 0", self.force),
             }));
         }
-        let overrides =
-            [format!("mesh={mesh:?}"), format!("load.cylinder_top.force=[0.0, {:?}]", -0.5 * self.force)];
+        let overrides = [format!("mesh={mesh:?}"), format!("load.cylinder_top.force=[0.0, {:?}]", -0.5 * self.force)];
         Ok(GenericScene::from_toml_str(HERTZ_SCENE, scene_file, &overrides)?)
     }
 }
