@@ -45,6 +45,7 @@ const reference = JSON.parse(readFileSync(referencePath, "utf8"));
 const failures = [];
 let compared = 0;
 let worst = { rel: 0, path: "" };
+const worstByScene = {};
 
 function isTime(key) {
   return key === "time_s" || key === "solve_time_s" || key === "times";
@@ -56,6 +57,8 @@ function compareNumber(path, a, b, scale) {
   const ref = Math.max(scale, Math.abs(a), Math.abs(b));
   const rel = ref === 0 ? 0 : diff / ref;
   if (rel > worst.rel) worst = { rel, path };
+  const scene = path.slice(0, path.indexOf("{"));
+  worstByScene[scene] = Math.max(worstByScene[scene] || 0, rel);
   if (!(rel <= RELATIVE)) failures.push(`${path}: native ${a}, wasm ${b} (relative ${rel.toExponential(2)})`);
 }
 
@@ -117,6 +120,7 @@ for (const [scene, cases] of Object.entries(reference)) {
 }
 
 console.log(`${compared} values compared; largest relative difference ${worst.rel.toExponential(2)} at ${worst.path}`);
+for (const [scene, rel] of Object.entries(worstByScene)) console.log(`  ${scene}: largest relative difference ${rel.toExponential(2)}`);
 if (failures.length > 0) {
   console.error(`${failures.length} values differ:\n` + failures.slice(0, 30).join("\n"));
   process.exit(1);
