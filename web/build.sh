@@ -24,7 +24,9 @@ if ! command -v wasm-bindgen >/dev/null || [ "$(wasm-bindgen --version | awk '{p
 fi
 
 echo "== cargo build -p contact2d-web --target wasm32-unknown-unknown"
-cargo build --release --lib -p contact2d-web --target wasm32-unknown-unknown ${JOBS:+-j "$JOBS"}
+# No debug info: wasm-bindgen drops it anyway, and leaving it out shortens the build.
+CARGO_PROFILE_RELEASE_DEBUG=false \
+    cargo build --release --lib -p contact2d-web --target wasm32-unknown-unknown ${JOBS:+-j "$JOBS"}
 
 echo "== wasm-bindgen --target web -> web/pkg"
 wasm-bindgen --target web --no-typescript --out-dir web/pkg \
