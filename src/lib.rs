@@ -12,6 +12,7 @@ pub use contact2d_element as element;
 pub use contact2d_fem as fem;
 pub use contact2d_mesh as mesh;
 
+#[cfg(feature = "native")]
 pub mod bench;
 pub mod doc_sections;
 pub mod generic;
@@ -21,7 +22,9 @@ pub mod output;
 pub mod plate_insert;
 pub mod run;
 pub mod scene;
+#[cfg(feature = "native")]
 pub mod stress;
+#[cfg(feature = "native")]
 pub mod sweep;
 pub mod verify;
 

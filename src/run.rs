@@ -2,7 +2,7 @@
 //! report the paper's quantities.
 
 use std::sync::Arc;
-use std::time::Instant;
+use web_time::Instant;
 
 use serde::Serialize;
 
@@ -196,6 +196,31 @@ impl Progress for Silent {
 /// # Errors
 /// Problem set-up failures.
 pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<RunOutcome, ContactError> {
+    solve_scene_from(scene, None, progress)
+}
+
+/// [`solve_scene_with`] on a mesh already read instead of the scene's mesh file (which is
+/// neither checked nor read): for callers without files, such as the WebAssembly build of the
+/// teaching page, which parses bundled meshes with [`contact2d_mesh::parse_msh`]. Same numbers
+/// as [`solve_scene`] on the file the mesh came from.
+///
+/// # Errors
+/// Problem set-up failures, and the Boussinesq algorithm with placed zone ends (its search
+/// re-reads the mesh file).
+pub fn solve_scene_on_mesh(
+    scene: &Scene,
+    mesh: contact2d_mesh::Mesh,
+    progress: &mut dyn Progress,
+) -> Result<RunOutcome, ContactError> {
+    solve_scene_from(scene, Some(mesh), progress)
+}
+
+/// The run of [`solve_scene_with`] on the scene's mesh file (`mesh` = `None`) or on `mesh`.
+fn solve_scene_from(
+    scene: &Scene,
+    mesh: Option<contact2d_mesh::Mesh>,
+    progress: &mut dyn Progress,
+) -> Result<RunOutcome, ContactError> {
     let start = Instant::now();
     let p = &scene.plate_insert;
     if !p.load.is_finite() || p.load < 0.0 {
@@ -207,8 +232,16 @@ pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<Ru
     if p.steps == 0 {
         return Err(ContactError::InvalidInput("steps must be at least 1".into()));
     }
-    scene.check_mesh_file().map_err(|e| ContactError::InvalidInput(e.to_string()))?;
-    check_history_memory(scene)?;
+    let placed = scene.solver.algorithm == ContactAlgorithm::Boussinesq && scene.solver.place_zone_ends;
+    if mesh.is_none() {
+        scene.check_mesh_file().map_err(|e| ContactError::InvalidInput(e.to_string()))?;
+        check_history_memory(scene)?;
+    } else if placed {
+        return Err(ContactError::InvalidInput(
+            "the boussinesq algorithm with placed zone ends reads the mesh file; set solver.place_zone_ends = false"
+                .into(),
+        ));
+    }
     // Without clearance every gap is zero (both gap models scale with c), so the solution is
     // linear in w (spec §5.2): solved once at w = 1 and scaled.
     let scaled = p.clearance == 0.0 && p.l_steps.is_empty();
@@ -219,7 +252,7 @@ pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<Ru
         done += 1;
         progress.step_done(done, total, if scaled { w * p.load } else { w });
     };
-    if scene.solver.algorithm == ContactAlgorithm::Boussinesq && scene.solver.place_zone_ends {
+    if placed {
         let loadings: Vec<PlacedLoading> = if p.l_steps.is_empty() {
             loads.iter().map(|w| PlacedLoading::Load(*w)).collect()
         } else {
@@ -244,7 +277,10 @@ pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<Ru
         report.notes.extend(notes);
         return Ok(RunOutcome { report, steps });
     }
-    let case = Arc::new(scene.plate_insert().build()?);
+    let case = Arc::new(match mesh {
+        Some(mesh) => scene.plate_insert().build_on(mesh)?,
+        None => scene.plate_insert().build()?,
+    });
     let problem = &case.problem;
     let interface = Interface::new(problem);
     let max_iterations = scene.solver.max_iterations;

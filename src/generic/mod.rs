@@ -6,14 +6,16 @@
 //!   → solve(&problem, &settings, &schedule) → History → GenericReport (JSON) → outputs
 //! ```
 
+#[cfg(feature = "native")]
 pub mod outputs;
 pub mod results;
 pub mod scene;
+#[cfg(feature = "native")]
 pub mod sweep;
 
 use std::collections::BTreeMap;
 use std::path::Path;
-use std::time::Instant;
+use web_time::Instant;
 
 use serde::Serialize;
 
@@ -26,7 +28,7 @@ pub use results::{ContactResult, Kkt, Profile, StepResult};
 pub use scene::GenericScene;
 
 use crate::input_file::{InputFileError, MAX_MESH_BYTES, check_input_file};
-use crate::output::mesh_plot::bounding_box;
+use crate::output::step_view::bounding_box;
 use crate::scene::SceneError;
 
 /// Errors of a generic run.
@@ -177,8 +179,6 @@ pub fn solve_generic(
 ) -> Result<GenericOutcome, GenericError> {
     let clock = Instant::now();
     let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
-    let contact_error =
-        |source| GenericError::Contact { scene: scene_name.clone(), mesh: mesh_name.clone(), source: Box::new(source) };
     // A FIFO or an endless device is refused before reading; the reader reports the rest.
     if let Err(e) = check_input_file(&scene.mesh_path(), MAX_MESH_BYTES)
         && !matches!(e, InputFileError::Io { .. })
@@ -191,6 +191,33 @@ pub fn solve_generic(
         mesh: mesh_name.clone(),
         source,
     })?;
+    solve_generic_from(scene, mesh, clock, on_step)
+}
+
+/// [`solve_generic`] on a mesh already read instead of the scene's mesh file (which is neither
+/// checked nor read): for callers without files, such as the WebAssembly build of the teaching
+/// page. Same numbers as [`solve_generic`] on the file the mesh came from.
+///
+/// # Errors
+/// [`GenericError`] naming the scene and mesh.
+pub fn solve_generic_on_mesh(
+    scene: &GenericScene,
+    mesh: contact2d_mesh::Mesh,
+    on_step: &mut dyn FnMut(usize, usize),
+) -> Result<GenericOutcome, GenericError> {
+    solve_generic_from(scene, mesh, Instant::now(), on_step)
+}
+
+/// The solve of [`solve_generic`] once the mesh is read (`clock` started before reading).
+fn solve_generic_from(
+    scene: &GenericScene,
+    mesh: contact2d_mesh::Mesh,
+    clock: Instant,
+    on_step: &mut dyn FnMut(usize, usize),
+) -> Result<GenericOutcome, GenericError> {
+    let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
+    let contact_error =
+        |source| GenericError::Contact { scene: scene_name.clone(), mesh: mesh_name.clone(), source: Box::new(source) };
     let read = clock.elapsed().as_secs_f64();
     let groups = group_reports(scene, &mesh).map_err(contact_error)?;
     let built = scene.description(mesh).build().map_err(contact_error)?;

@@ -87,12 +87,7 @@ pub(crate) fn equal_aspect_ranges(bounds: [[f64; 2]; 2], pixels: (f64, f64)) -> 
     ((cx - 0.5 * w, cx + 0.5 * w), (cy - 0.5 * h, cy + 0.5 * h))
 }
 
-/// The bounding box of points.
-pub(crate) fn bounding_box<'a>(points: impl Iterator<Item = &'a [f64; 2]>) -> [[f64; 2]; 2] {
-    points.fold([[f64::INFINITY; 2], [f64::NEG_INFINITY; 2]], |[lo, hi], p| {
-        [[lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])]]
-    })
-}
+pub(crate) use super::step_view::bounding_box;
 
 /// The exaggeration β of spec §7: the largest displacement component maps to 1 (0 if nothing
 /// moves, or if the displacements are too small for 1 / max to be finite, or not finite).

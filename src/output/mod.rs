@@ -17,23 +17,31 @@
 //! [`chart`] is the shared line-chart API every figure of the project draws with.
 
 pub mod atomic;
+#[cfg(feature = "native")]
 pub mod chart;
 pub mod csv;
 mod error;
+#[cfg(feature = "native")]
 pub mod field_plot;
+#[cfg(feature = "native")]
 pub mod figures;
+#[cfg(feature = "native")]
 pub mod mesh_plot;
 pub mod profiles;
 pub mod readme;
 pub mod step_view;
+#[cfg(feature = "native")]
 pub mod vtu;
 
+#[cfg(feature = "native")]
 use std::path::{Path, PathBuf};
 
 pub use atomic::OutputDir;
 pub use error::OutputError;
 
+#[cfg(feature = "native")]
 use crate::run::RunOutcome;
+#[cfg(feature = "native")]
 use crate::scene::Scene;
 
 /// The figure formats written for every figure.
@@ -42,6 +50,7 @@ pub const FIGURE_EXTENSIONS: [&str; 2] = ["png", "svg"];
 /// The manifest of a run folder: the summary, written last, listing the run's files.
 pub const SUMMARY_FILE: &str = "summary.json";
 
+#[cfg(feature = "native")]
 /// Writes every output of a solved scene into `dir` (see [`write_outputs_into`]); the folder is
 /// prepared (created, checked, locked) here. Prefer [`atomic::OutputDir::prepare`] before
 /// solving and [`write_outputs_into`] after, so that a bad folder fails before the work.
@@ -65,6 +74,7 @@ pub fn is_run_output(name: &str) -> bool {
         || ["hole_edge.csv", "insert_edge.csv", "steps.csv", "steps.pvd", "README.txt", SUMMARY_FILE].contains(&name)
 }
 
+#[cfg(feature = "native")]
 /// Writes every output of a solved scene into the prepared folder `out` and returns the paths
 /// written, the summary last: each file atomically, stale files of an earlier run removed, the
 /// summary (with `"files"`, the manifest) last. A figure that cannot be drawn (non-finite or
@@ -158,6 +168,7 @@ pub fn write_outputs_into(
     })
 }
 
+#[cfg(feature = "native")]
 /// Draws one figure through `out`; a figure that cannot be drawn is noted in `skipped` instead.
 pub(crate) fn figure(
     out: &mut OutputDir,

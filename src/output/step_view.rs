@@ -52,3 +52,10 @@ pub fn state_label(state: PairState, friction: f64) -> &'static str {
         PairState::SlipNegative => "slip-",
     }
 }
+
+/// The bounding box of points.
+pub(crate) fn bounding_box<'a>(points: impl Iterator<Item = &'a [f64; 2]>) -> [[f64; 2]; 2] {
+    points.fold([[f64::INFINITY; 2], [f64::NEG_INFINITY; 2]], |[lo, hi], p| {
+        [[lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])]]
+    })
+}

@@ -36,7 +36,7 @@ pub(super) fn on_generated_mesh(
     history: &ContourHistory,
     failure: String,
     evaluations: usize,
-    clock: std::time::Instant,
+    clock: web_time::Instant,
 ) -> Result<PlacedStep, ContactError> {
     let interface = Interface::new(&base.problem);
     let start = history.start_for(&base);

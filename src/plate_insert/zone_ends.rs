@@ -185,7 +185,7 @@ pub fn place_zone_ends(
     history: &ContourHistory,
     search: ZoneEndSearch,
 ) -> Result<PlacedStep, ContactError> {
-    let clock = std::time::Instant::now();
+    let clock = web_time::Instant::now();
     let template = PlateInsert { placed_nodes: vec![], ..template.clone() };
     let base = template.build_on(mesh.clone())?;
     match search_placed(&template, mesh, &base, loading, history, search, clock) {
@@ -202,7 +202,7 @@ fn search_placed(
     loading: PlacedLoading,
     history: &ContourHistory,
     search: ZoneEndSearch,
-    clock: std::time::Instant,
+    clock: web_time::Instant,
 ) -> Result<PlacedStep, (ContactError, usize)> {
     let mut l_estimate = match loading {
         PlacedLoading::ContactEnd(l) => l,

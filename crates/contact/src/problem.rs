@@ -128,7 +128,7 @@ impl ContactProblem {
     }
 
     fn build(model: Model, pairs: Vec<ContactPair>, slave: Vec<SlaveKind>) -> Result<ContactProblem, ContactError> {
-        let clock = std::time::Instant::now();
+        let clock = web_time::Instant::now();
         let system = assemble(&model)?;
         let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, &slave)?;
         let assembled = clock.elapsed();

@@ -185,7 +185,7 @@ pub fn solve_with(
         None => factors.clone(),
     };
     loaded.apply_load(&targets[0], None)?;
-    let clock = std::time::Instant::now();
+    let clock = web_time::Instant::now();
     let mut interface = Interface::new(&loaded);
     let condense_time = clock.elapsed();
     let order = boussinesq_order(problem);
@@ -307,7 +307,7 @@ fn solve_floating_step(
     let mut residuals: Vec<f64> = vec![];
     // The step's time is every proximal iteration's (load update and contact solve), its
     // iterations the algorithm's summed over them.
-    let clock = std::time::Instant::now();
+    let clock = web_time::Instant::now();
     let mut inner_iterations = 0;
     for iteration in 1..=settings.max_floating_iterations {
         let mut extra = vec![0.0; previous_free.len()];
@@ -403,7 +403,7 @@ fn solve_step(
 ) -> ContactSolution {
     if problem.num_pairs() == 0 {
         // No contact pair: the bodies' linear problem, one solve with the factorisation.
-        let clock = std::time::Instant::now();
+        let clock = web_time::Instant::now();
         let u_free = interface.free_displacement(1.0, &[], &[]);
         let raw = RawSolution {
             load_factor: 1.0,

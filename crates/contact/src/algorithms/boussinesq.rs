@@ -25,7 +25,7 @@
 //! V. N. Solodovnikov (1998), Solution of a contact problem for a plate with a deformable insert,
 //! section 6 (problems A, A1, A2 and the Boussinesq principle).
 
-use std::time::Instant;
+use web_time::Instant;
 
 use crate::algorithms::state_equations::{combine, state_system};
 use crate::error::ContactError;

@@ -11,7 +11,7 @@
 //! prescribed value (`u = s x`, the objective divided by `s²`, so `λ = s z`): the interior-point
 //! method's tolerances (1e-12, printing off) then act on O(1) numbers.
 
-use std::time::Instant;
+use web_time::Instant;
 
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus};

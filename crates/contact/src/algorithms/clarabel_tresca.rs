@@ -19,7 +19,7 @@
 //! asked of the check. The fixed point need not converge for large μ: the limit is then
 //! reported as [`ContactStatus::MaxIterations`].
 
-use std::time::Instant;
+use web_time::Instant;
 
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT};

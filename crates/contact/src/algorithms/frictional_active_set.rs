@@ -21,7 +21,7 @@
 //! Hüeber, Stadler & Wohlmuth (2008), SIAM J. Sci. Comput. 30(2): a primal-dual active set
 //! algorithm for three-dimensional contact problems with Coulomb friction.
 
-use std::time::Instant;
+use web_time::Instant;
 
 use nalgebra::{DMatrix, DVector};
 

@@ -12,7 +12,7 @@
 //! Hintermüller, Ito & Kunisch (2002), SIAM J. Optim. 13(3): the primal-dual active set strategy
 //! as a semi-smooth Newton method.
 
-use std::time::Instant;
+use web_time::Instant;
 
 use nalgebra::{DMatrix, DVector};
 

@@ -1,0 +1,74 @@
+//! Writes the native numbers the teaching page's tests compare the WebAssembly module with:
+//! each bundled case solved natively from the mesh *files* (`contact2d run`'s path:
+//! [`contact2d::run::solve_scene`], [`contact2d::generic::solve_generic`]), as JSON on stdout:
+//!
+//! ```text
+//! {"flagship": [{"params": {...}, "view": FlagshipView}, ...],
+//!  "hertz":    [{"params": {...}, "view": HertzView}, ...]}
+//! ```
+//! `web/tests/wasm_matches_native.mjs` solves the same params in the module (meshes compiled
+//! in, parsed from bytes) and requires every number to agree to 1e-12 relative.
+//!
+//! Usage: `cargo run --release -p contact2d-web --bin web_reference > web/out/reference.json`
+
+use std::path::{Path, PathBuf};
+
+use anyhow::Context as _;
+use serde_json::{Value, json};
+
+use contact2d::generic::solve_generic;
+use contact2d::run::solve_scene;
+use contact2d_web::bundled::{flagship_mesh, hertz_mesh};
+use contact2d_web::flagship::{FlagshipParams, flagship_view};
+use contact2d_web::hertz::{HertzParams, hertz_view};
+
+/// The flagship cases: the page's default with μ = 0 and μ = 0.3 (the browser test's), the
+/// published Table 2 set-ups (clearance, 3 steps, both variants), a stiff insert, N = 32, and
+/// one step of a loading history.
+fn flagship_cases() -> Vec<Value> {
+    let case = |friction: f64, stiffness_ratio: f64, eps: f64, refinement: u32, load: f64, variant: &str| {
+        json!({"friction": friction, "stiffness_ratio": stiffness_ratio, "eps": eps,
+               "refinement": refinement, "load": load, "variant": variant})
+    };
+    let mut history = case(0.3, 1.0, 0.05, 16, 0.3838 * 0.4, "hole_master");
+    history["steps"] = json!(4);
+    vec![
+        case(0.0, 1.0, 0.0, 16, 1.0, "hole_master"),
+        case(0.3, 1.0, 0.0, 16, 1.0, "hole_master"),
+        case(0.3, 1.0, 0.05, 16, 0.3838, "hole_master"),
+        case(0.3, 1.0, 0.05, 16, 0.3838, "insert_master"),
+        case(0.0, 1.0, 0.05, 16, 0.3838, "insert_master"),
+        case(0.3, 4.0, 0.0, 16, 1.0, "insert_master"),
+        case(0.3, 1.0, 0.001, 32, 0.3838, "hole_master"),
+        case(0.3, 1.0, 0.0, 32, 1.0, "hole_master"),
+        history,
+    ]
+}
+
+/// The Hertz cases: the benchmark's force and about a third of it.
+fn hertz_cases() -> Vec<Value> {
+    vec![json!({"force": 35000.0, "level": "L1"}), json!({"force": 12000.0, "level": "L1"})]
+}
+
+fn main() -> anyhow::Result<()> {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let mut flagship = vec![];
+    for value in flagship_cases() {
+        let params: FlagshipParams = serde_json::from_value(value.clone())?;
+        let file = flagship_mesh(params.eps, params.refinement)?.file;
+        let scene = params.scene(&format!("../meshes/plate_insert/{file}"), &root.join("scenes/teaching.toml"))?;
+        let outcome = solve_scene(&scene).with_context(|| format!("{value}"))?;
+        flagship.push(json!({"params": value, "view": flagship_view(&params, file, &outcome)?}));
+    }
+    let mut hertz = vec![];
+    for value in hertz_cases() {
+        let params: HertzParams = serde_json::from_value(value.clone())?;
+        let file = hertz_mesh(&params.level)?.file;
+        let scene_file = root.join("scenes/generic/cylinder_on_block.toml");
+        let scene = params.scene(&format!("../../meshes/generic/{file}"), Path::new(&scene_file))?;
+        let outcome = solve_generic(&scene, &mut |_, _| {}).with_context(|| format!("{value}"))?;
+        hertz.push(json!({"params": value, "view": hertz_view(&params, file, &outcome)}));
+    }
+    println!("{}", json!({"flagship": flagship, "hertz": hertz}));
+    Ok(())
+}

@@ -1,0 +1,112 @@
+//! contact2d in the browser: the teaching page's WebAssembly module (`web/`, built by
+//! `web/build.sh`).
+//!
+//! The page sets parameters with sliders and calls one function per scene; each returns the
+//! whole solved state as one JSON text (numbers in shortest round-trip form, so the page and
+//! the tests read exactly the computed values):
+//!
+//! ```text
+//! solve_flagship({"friction": 0.3, "stiffness_ratio": 1, "eps": 0, "refinement": 16,
+//!                 "load": 1, "variant": "hole_master"})
+//!   → {summary (l, b, P, Φ, σ*, K, status, steps), published, hole {eta, s, hoop, p, q, state},
+//!      insert {...}, pairs {master, state, normal_force}, mesh {points, edges, displacement}}
+//! solve_hertz({"force": 35000, "level": "L1"})
+//!   → {summary (generic report with the interface profile), closed_form {a, p0, x, pressure},
+//!      pairs, mesh}
+//! ```
+//! The scenes are the facade's own ([`contact2d::run::solve_scene_on_mesh`],
+//! [`contact2d::generic::solve_generic_on_mesh`]) on meshes compiled into the module
+//! ([`bundled`]): the numbers are those of `contact2d run` on the same files. A new scene (e.g.
+//! Cattaneo–Mindlin) is one module with its parameters, its solve and its view, plus one
+//! exported function here.
+//!
+//! The module builds natively too (the tests, and the `web_reference` binary that writes the
+//! native numbers the page's tests compare with).
+
+use wasm_bindgen::prelude::*;
+
+pub mod bundled;
+pub mod flagship;
+pub mod hertz;
+pub mod view;
+
+pub use flagship::{FlagshipParams, FlagshipView, solve_flagship};
+pub use hertz::{HertzParams, HertzView, solve_hertz};
+
+/// Errors of the page's module.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum WebError {
+    /// The parameters are not valid JSON of the scene's parameter object.
+    #[error("parameters: {0}")]
+    Params(#[from] serde_json::Error),
+    /// No bundled mesh matches the parameters.
+    #[error("{0}")]
+    NoMesh(String),
+    /// A parameter out of range (the scene file's checks).
+    #[error(transparent)]
+    Scene(#[from] contact2d::scene::SceneError),
+    /// A bundled mesh does not parse.
+    #[error(transparent)]
+    Mesh(#[from] contact2d_mesh::MeshError),
+    /// The problem could not be set up or solved.
+    #[error(transparent)]
+    Contact(#[from] contact2d_contact::ContactError),
+    /// A generic scene could not be set up or solved.
+    #[error(transparent)]
+    Generic(#[from] contact2d::generic::GenericError),
+    /// The solution could not be post-processed.
+    #[error("post-processing: {0}")]
+    Solve(String),
+}
+
+/// Solves the flagship for the JSON [`FlagshipParams`] and returns the JSON [`FlagshipView`].
+///
+/// # Errors
+/// [`WebError`] (as a JavaScript `Error`) for bad parameters or a failed solve.
+pub fn flagship_json(params: &str) -> Result<String, WebError> {
+    let params: FlagshipParams = serde_json::from_str(params)?;
+    Ok(serde_json::to_string(&solve_flagship(&params)?)?)
+}
+
+/// Solves the Hertz scene for the JSON [`HertzParams`] and returns the JSON [`HertzView`].
+///
+/// # Errors
+/// [`WebError`] for bad parameters or a failed solve.
+pub fn hertz_json(params: &str) -> Result<String, WebError> {
+    let params: HertzParams = serde_json::from_str(params)?;
+    Ok(serde_json::to_string(&solve_hertz(&params)?)?)
+}
+
+/// The page's entry point for the flagship: [`flagship_json`] with the error as a JavaScript
+/// `Error`.
+///
+/// # Errors
+/// The [`WebError`]'s message.
+#[wasm_bindgen]
+pub fn solve_flagship_json(params: &str) -> Result<String, JsError> {
+    flagship_json(params).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The page's entry point for the Hertz scene: [`hertz_json`] with the error as a JavaScript
+/// `Error`.
+///
+/// # Errors
+/// The [`WebError`]'s message.
+#[wasm_bindgen]
+pub fn solve_hertz_json(params: &str) -> Result<String, JsError> {
+    hertz_json(params).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The bundled meshes and the page's fixed choices, as JSON: `{"flagship_eps": [...],
+/// "flagship_refinements": [...], "hertz_levels": [...], "clearance_per_eps": ω}`.
+#[wasm_bindgen]
+pub fn bundled_json() -> String {
+    serde_json::json!({
+        "flagship_eps": bundled::FLAGSHIP_EPS,
+        "flagship_refinements": bundled::FLAGSHIP_REFINEMENTS,
+        "hertz_levels": bundled::HERTZ_LEVELS,
+        "clearance_per_eps": flagship::CLEARANCE_PER_EPS,
+    })
+    .to_string()
+}

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The teaching page's tests (after web/build.sh): the native reference numbers, the node test
+# (the WebAssembly module returns them to 1e-12) and the headless-browser test (Chromium +
+# puppeteer-core; screenshots in web/out/). Installs Debian's chromium (as root) and the npm
+# package when missing. Every step is wrapped in `timeout`.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+mkdir -p web/out
+if [ ! -f web/pkg/contact2d_web_bg.wasm ]; then
+    echo "test.sh: web/pkg is missing: run web/build.sh first" >&2
+    exit 1
+fi
+
+echo "== native reference numbers -> web/out/reference.json"
+timeout 1200 cargo run --quiet --release -p contact2d-web --bin web_reference > web/out/reference.json
+
+echo "== node: the WebAssembly module returns the native numbers"
+timeout 600 node web/tests/wasm_matches_native.mjs web/out/reference.json
+
+if ! command -v chromium >/dev/null; then
+    echo "== apt-get install chromium"
+    timeout 600 apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive timeout 600 apt-get install -y -qq --no-install-recommends chromium >/dev/null
+fi
+if [ ! -d web/node_modules/puppeteer-core ]; then
+    echo "== npm install (puppeteer-core, no browser download)"
+    (cd web && timeout 300 npm install --no-audit --no-fund --loglevel=error)
+fi
+
+echo "== headless Chromium: the page"
+timeout 600 node web/tests/browser.mjs web/out/reference.json
