@@ -26,6 +26,7 @@ pub mod scene;
 pub mod stress;
 #[cfg(feature = "native")]
 pub mod sweep;
+#[cfg(feature = "native")]
 pub mod verify;
 
 // The README's library example is compiled and run as a doctest.
