@@ -104,6 +104,7 @@ pub fn pair_segments(
                 let xi = mid + half * g;
                 let (x, _, ds) = master.edge_frame(edge, xi);
                 let n_master = edge_shape(edge.quadratic, xi);
+                let phi = multiplier_shape(edge.quadratic, xi);
                 let (e, eta) = closest_point_unsnapped(slave, points, x);
                 let slave_edge = &slave.edges[e];
                 let (y, t, _) = slave.edge_frame(slave_edge, eta);
@@ -117,7 +118,7 @@ pub fn pair_segments(
                 let n_slave = edge_shape(slave_edge.quadratic, eta);
                 let slave_count = if slave_edge.quadratic { 3 } else { 2 };
                 for a in 0..count {
-                    let f = wg * half * ds * n_master[a];
+                    let f = wg * half * ds * phi[a];
                     let s = &mut sums[local[a]];
                     s.weight += f;
                     s.gap += f * g0;
@@ -157,6 +158,12 @@ pub fn pair_segments(
         });
     }
     Ok(pairs)
+}
+
+const HATS: bool = true;
+
+fn multiplier_shape(quadratic: bool, xi: f64) -> [f64; 3] {
+    if quadratic && HATS { [(-xi).max(0.0), xi.max(0.0), 1.0 - xi.abs()] } else { edge_shape(quadratic, xi) }
 }
 
 /// Indices into `contour.nodes` of the edge's start, end and mid node (the order of
@@ -200,7 +207,7 @@ fn add_weight(list: &mut Vec<(NodeId, f64)>, node: NodeId, f: f64) {
 fn breakpoints(master: &Contour, edge: &ContourEdge, slave: &Contour, reach: f64) -> Vec<f64> {
     let (c0, c1, c2) = edge_polynomial(master, edge);
     let master_length = master.edge_length(edge, 1.0);
-    let mut cuts = vec![-1.0, 1.0];
+    let mut cuts = if edge.quadratic && HATS { vec![-1.0, 0.0, 1.0] } else { vec![-1.0, 1.0] };
     for slave_edge in &slave.edges {
         let slave_length = slave.edge_length(slave_edge, 1.0);
         let limit = 2.0 * (master_length + slave_length) + reach;
