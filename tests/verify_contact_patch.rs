@@ -1,5 +1,6 @@
-//! The contact patch test (Taylor & Papadopoulos 1991, IJNME 31, "On a patch test for contact
-//! problems in two dimensions"; Crisfield 2000, "Re-visiting the contact patch test", IJNME 48):
+//! The contact patch test (Taylor & Papadopoulos 1991, "On a patch test for contact problems in
+//! two dimensions", in Wriggers & Wagner (eds.), Computational Methods in Nonlinear Mechanics,
+//! Springer, 690–702; Crisfield 2000, "Re-visiting the contact patch test", IJNME 48, 435–449):
 //! a contact discretisation passes when two bodies in a uniform stress state carry a uniform
 //! pressure through their interface exactly, on matching and on non-matching meshes.
 //!

@@ -131,6 +131,15 @@ fn nafems_hertz_half_width_and_peak_pressure() {
     // The block size effect, with the scene's default (automatic: segment-to-segment here).
     let m2 = measure("cylinder_on_block_L2.msh", PairingKey::Automatic);
     let big = measure("cylinder_on_block_big_L2.msh", PairingKey::Automatic);
+    println!(
+        "block size (L2, automatic pairing): a {:.4} → {:.4} ({:+.2} %), p(0) {:.1} → {:.1} ({:+.2} %)",
+        m2.a,
+        big.a,
+        100.0 * (big.a / m2.a - 1.0),
+        m2.p0,
+        big.p0,
+        100.0 * (big.p0 / m2.p0 - 1.0)
+    );
     assert!(
         (big.a / m2.a - 1.0).abs() < 0.01 && (big.p0 / m2.p0 - 1.0).abs() < 0.01,
         "block size: a {} → {}, p0 {} → {}",

@@ -157,14 +157,16 @@ pub(crate) fn closest_point_unsnapped(slave: &Contour, points: &[[f64; 2]], x: [
 }
 
 /// Whether the nodes of the curves `a` and `b` face each other one to one: the closest point of
-/// every node of each curve on the other is a node (to round-off, as node-to-segment snaps it),
-/// so the meshes match along the interface (nodes beyond the other curve's end project onto its
-/// end node). Node-to-segment pairs are then node-to-node.
+/// every node of each curve on the other is a node, to `|Δξ| ≤ 1e-6` of the edge's reference
+/// coordinate (mesh generators write the two copies of a shared arc with differences far above
+/// round-off), so the meshes match along the interface (nodes beyond the other curve's end
+/// project onto its end node). Node-to-segment pairs are then node-to-node.
 pub fn nodes_face_each_other(points: &[[f64; 2]], a: &Contour, b: &Contour) -> bool {
+    const TOLERANCE: f64 = 1e-6;
     let onto = |from: &Contour, to: &Contour| {
         from.nodes.iter().all(|n| {
-            let (e, xi) = closest_point(to, points, points[n.0]);
-            xi == -1.0 || xi == 1.0 || (xi == 0.0 && to.edges[e].quadratic)
+            let (e, xi) = closest_point_unsnapped(to, points, points[n.0]);
+            (xi.abs() - 1.0).abs() <= TOLERANCE || (xi.abs() <= TOLERANCE && to.edges[e].quadratic)
         })
     };
     onto(a, b) && onto(b, a)

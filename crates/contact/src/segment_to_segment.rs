@@ -43,8 +43,8 @@
 //! # References
 //! Puso & Laursen (2004), CMAME 193, "A mortar segment-to-segment contact method for large
 //! deformation solid mechanics"; Popp, Gee & Wall (2009), IJNME 79 (the weighted gap);
-//! Wohlmuth (2000), SINUM 38 (the mortar method); Taylor & Papadopoulos (1991), IJNME 31 (the
-//! contact patch test).
+//! Wohlmuth (2000), SINUM 38 (the mortar method); Taylor & Papadopoulos (1991), in Wriggers &
+//! Wagner (eds.), Computational Methods in Nonlinear Mechanics (the contact patch test).
 
 use contact2d_element::gauss_legendre;
 use contact2d_fem::Model;
