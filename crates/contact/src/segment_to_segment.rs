@@ -134,19 +134,19 @@ pub fn pair_segments(
                     s.weight += f;
                     s.gap += f * g0;
                     s.normal = [s.normal[0] + f * normal[0], s.normal[1] + f * normal[1]];
-                    for b in 0..count {
-                        add(&mut s.rows.master, edge.nodes[b], f * n_master[b], normal, tangent);
+                    for (node, shape) in edge.nodes.iter().zip(n_master).take(count) {
+                        add(&mut s.rows.master, *node, f * shape, normal, tangent);
                     }
-                    for b in 0..slave_count {
-                        add(&mut s.rows.slave, slave_edge.nodes[b], -f * n_slave[b], normal, tangent);
-                        add_weight(&mut s.slave_weights, slave_edge.nodes[b], f * n_slave[b]);
+                    for (node, shape) in slave_edge.nodes.iter().zip(n_slave).take(slave_count) {
+                        add(&mut s.rows.slave, *node, -f * shape, normal, tangent);
+                        add_weight(&mut s.slave_weights, *node, f * shape);
                     }
                 }
             }
         }
     }
     for (k, (pair, s)) in pairs.iter_mut().zip(sums).enumerate() {
-        if !(s.weight > 0.0) {
+        if s.weight.is_nan() || s.weight <= 0.0 {
             return Err(err(format!("master node {k} has tributary length {} (not positive)", s.weight)));
         }
         let w = s.weight;
