@@ -204,3 +204,38 @@ fn non_matching_meshes_pass_with_segment_to_segment() {
         }
     }
 }
+
+#[test]
+fn a_block_on_a_rigid_obstacle_passes_with_segment_to_segment() {
+    // The lower block as a fixed rigid obstacle (a meshed region that is no body): the upper
+    // block alone is in uniform stress, p = E'_b δ / H_b; non-matching 7 against 5 Q9 cells. Same
+    // tolerance as above (one factorisation, exact quadrature).
+    for (na, nb) in [(7, 5), (5, 7)] {
+        let description = ProblemDescription {
+            mesh: blocks(CellKind::Quad9, na, nb),
+            bodies: vec![body("b_domain", E_B, NU_B)],
+            fixes: vec![fix("b_left", Component::X, 0.0), fix("b_top", Component::Y, -DELTA)],
+            loads: vec![],
+            contacts: vec![ContactDescription {
+                name: "joint".into(),
+                master: "b_bottom".into(),
+                slave: "a_top".into(),
+                rigid_slave: true,
+                pairing: Pairing::Automatic,
+                gap: GapDescription::Geometric,
+                friction: 0.0,
+            }],
+        };
+        let built = description.build().unwrap();
+        assert!(built.problem.pairs.iter().all(|p| p.integrated.is_some()));
+        let schedule = LoadSchedule::ramp(vec!["main".into()], 1).unwrap();
+        let history = solve(&built.problem, &SolverSettings::new(ContactAlgorithm::ActiveSet), &schedule).unwrap();
+        let solution = &history.steps[0].solution;
+        assert_eq!(solution.status, ContactStatus::Converged);
+        let p = E_B / (1.0 - NU_B * NU_B) * DELTA;
+        for (pair, lambda) in built.problem.pairs.iter().zip(&solution.normal_force) {
+            let p_k = lambda / pair.weight;
+            assert!((p_k / p - 1.0).abs() < 1e-10, "{na}/{nb}: pressure {p_k} against {p}");
+        }
+    }
+}
