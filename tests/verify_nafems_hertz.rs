@@ -13,13 +13,19 @@
 //! a = √(4FR/(πE*)) = 6.21 mm, p0 = 2F/(πa) = 3585 MPa, p(x) = p0 √(1 − x²/a²).
 //!
 //! Tolerances (the issue's targets at the finest bundled mesh, L3): a within 1 %, p0 (the
-//! pressure at the centre x = 0) within 1.5 % (Code_Aster's published model is 1.2 % low). The block is finite, so the half-space
-//! closed form holds only to the block's size effect: the block twice as large (L2 mesh of the
-//! same contact refinement) must change a and p0 by less than 1 %. The pressure profile of the
-//! node-to-segment pairing on quadratic edges oscillates between corner and mid nodes (with the
-//! roller as master the largest nodal pressure on L3 is 24 % above p0); the profile's L2 error
-//! and the largest nodal pressure are measured and printed here, not asserted (issue 11 item 4
-//! brings the pairing whose profile converges).
+//! pressure at the centre x = 0) within 1.5 % (Code_Aster's published model is 1.2 % low), for
+//! both pairings; the profile's L2 error ≤ 2 % of p0 for the segment-to-segment pairing. The
+//! block is finite, so the half-space closed form holds only to the block's size effect: the
+//! block twice as large (L2 mesh of the same contact refinement) must change a and p0 by less
+//! than 1 %. The profile error is the L2 norm over the whole master curve of p_h − p, p_h the
+//! piecewise-linear interpolant of the nodal pressures (the segment-to-segment pressure field on
+//! Line3 edges), relative to p0 √a. The node-to-segment pressure on quadratic edges oscillates
+//! between corner and mid nodes (with the roller as master the largest nodal pressure on L3 is
+//! 24 % above p0, the profile error 9 %): measured and printed, not asserted. The rates between
+//! levels are printed, not asserted: the segment-to-segment error is that of the cell holding
+//! the contact edge, where p ~ √(a − x), O(h/a) in L2 with a constant that depends on where a
+//! falls between nodes, and in the interior the block's size effect (0.09 %) dominates
+//! (docs/verification.md).
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use std::path::Path;
