@@ -150,6 +150,11 @@ pub enum PairingKey {
     NodeToSegment,
     /// Node to node after sliding the slave nodes onto the paired points.
     NodeToNode,
+    /// Segment to segment (mortar-type: gap and traction integrated over the master segments).
+    SegmentToSegment,
+    /// Node to segment where the curves' nodes face each other one to one, else segment to
+    /// segment (the default).
+    Automatic,
 }
 
 /// A gap: `"geometric"` or a number.
@@ -175,8 +180,8 @@ pub struct ContactEntry {
     /// The slave is a fixed rigid obstacle (its region is no body).
     #[serde(default)]
     pub rigid: bool,
-    /// Pairing (default `node_to_segment`).
-    #[serde(default = "node_to_segment")]
+    /// Pairing (default `automatic`: node to segment on matching meshes, else segment to segment).
+    #[serde(default = "automatic")]
     pub pairing: PairingKey,
     /// Initial gap (default `"geometric"`).
     #[serde(default = "geometric")]
@@ -232,8 +237,8 @@ fn one() -> f64 {
 fn main() -> String {
     DEFAULT_PATTERN.to_string()
 }
-fn node_to_segment() -> PairingKey {
-    PairingKey::NodeToSegment
+fn automatic() -> PairingKey {
+    PairingKey::Automatic
 }
 fn geometric() -> GapKey {
     GapKey::Named("geometric".into())
@@ -520,6 +525,8 @@ impl GenericScene {
                 pairing: match c.pairing {
                     PairingKey::NodeToSegment => Pairing::NodeToSegment,
                     PairingKey::NodeToNode => Pairing::NodeToNode,
+                    PairingKey::SegmentToSegment => Pairing::SegmentToSegment,
+                    PairingKey::Automatic => Pairing::Automatic,
                 },
                 gap: match c.gap {
                     GapKey::Given(g) => GapDescription::Given(g),

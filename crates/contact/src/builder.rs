@@ -5,7 +5,8 @@
 //! ```text
 //! ProblemDescription { mesh, bodies, fixes, loads, contacts }
 //!   → Model (bodies, every fix; floating bodies allowed)
-//!   → pairs per interface (node-to-segment, or node-to-node after sliding the slave nodes)
+//!   → pairs per interface (node-to-segment, segment-to-segment (mortar), or node-to-node after
+//!     sliding the slave nodes; automatic: node-to-segment on matching meshes, else mortar)
 //!   → ContactProblem (friction and gaps per interface, set before anything is condensed)
 //!   → load patterns:  r_p = f_p − K_fc u_c,p
 //! force F on a group of length L:  traction t = F / L (uniform; per unit thickness)
@@ -22,8 +23,9 @@ use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, Mesh, line_cell_length};
 
 use crate::error::ContactError;
-use crate::pairing::{ContactPair, node_to_node_targets, pair_contours};
+use crate::pairing::{ContactPair, node_to_node_targets, nodes_face_each_other, pair_contours};
 use crate::problem::{ContactProblem, LoadPattern};
+use crate::segment_to_segment::pair_segments;
 
 /// The pattern of values and loads that name none.
 pub const DEFAULT_PATTERN: &str = "main";
@@ -95,6 +97,14 @@ pub enum Pairing {
     /// topology unchanged), so that every pair is node-to-node; needs as many slave nodes as
     /// master nodes facing each other.
     NodeToNode,
+    /// Gap and traction integrated over the master segments (mortar-type,
+    /// [`crate::segment_to_segment`]): one weighted gap per master node; passes the patch test
+    /// on non-matching meshes.
+    SegmentToSegment,
+    /// [`Pairing::NodeToSegment`] where the two curves' nodes face each other one to one (every
+    /// node of each curve projects onto a node of the other: matching meshes), else
+    /// [`Pairing::SegmentToSegment`] ([`nodes_face_each_other`]).
+    Automatic,
 }
 
 /// The initial gap of an interface's pairs.
@@ -324,7 +334,16 @@ impl ProblemDescription {
                 c.name
             )));
         }
-        let pairs = pair_contours(model, &master, &slave, &region)?;
+        let segments = match c.pairing {
+            Pairing::NodeToSegment | Pairing::NodeToNode => false,
+            Pairing::SegmentToSegment => true,
+            Pairing::Automatic => !nodes_face_each_other(&model.mesh.points, &master, &slave),
+        };
+        let pairs = if segments {
+            pair_segments(model, &master, &slave, &region)?
+        } else {
+            pair_contours(model, &master, &slave, &region)?
+        };
         Ok((pairs, slave, region))
     }
 

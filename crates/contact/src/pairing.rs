@@ -22,6 +22,7 @@ use contact2d_fem::Model;
 use contact2d_mesh::{Contour, NodeId};
 
 use crate::error::ContactError;
+use crate::segment_to_segment::IntegratedRows;
 
 /// One contact pair: a master node and its closest point on the slave curve.
 #[derive(Debug, Clone, PartialEq)]
@@ -46,6 +47,10 @@ pub struct ContactPair {
     pub master_arc_length: f64,
     /// Arc length of the paired point along the slave contour.
     pub slave_arc_length: f64,
+    /// The rows integrated over the master segments (segment-to-segment pairing,
+    /// [`crate::segment_to_segment`]); `None` for node-to-segment, whose rows are
+    /// `n · (u_master − Σ_j N_j u_slave_j)`.
+    pub integrated: Option<IntegratedRows>,
 }
 
 /// Builds the pairs of every node of `master` with the closest point of `slave`.
@@ -92,13 +97,14 @@ pub fn pair_contours(
             gamma: 1.0,
             master_arc_length: master.arc_length[k],
             slave_arc_length: slave.arc_length[edge.first] + slave.edge_length(edge, xi),
+            integrated: None,
         });
     }
     set_gamma(&mut pairs);
     Ok(pairs)
 }
 
-fn edge_shape(quadratic: bool, xi: f64) -> [f64; 3] {
+pub(crate) fn edge_shape(quadratic: bool, xi: f64) -> [f64; 3] {
     if quadratic {
         [0.5 * xi * (xi - 1.0), 0.5 * xi * (xi + 1.0), 1.0 - xi * xi]
     } else {
@@ -106,8 +112,15 @@ fn edge_shape(quadratic: bool, xi: f64) -> [f64; 3] {
     }
 }
 
-/// The edge of `slave` and the reference coordinate of the point closest to `x`.
+/// The edge of `slave` and the reference coordinate of the point closest to `x`, rounded to a
+/// node where it is there to round-off.
 fn closest_point(slave: &Contour, points: &[[f64; 2]], x: [f64; 2]) -> (usize, f64) {
+    let (edge, xi) = closest_point_unsnapped(slave, points, x);
+    (edge, snap(xi))
+}
+
+/// The edge of `slave` and the reference coordinate of the point closest to `x`.
+pub(crate) fn closest_point_unsnapped(slave: &Contour, points: &[[f64; 2]], x: [f64; 2]) -> (usize, f64) {
     let mut best = (0, 0.0, f64::INFINITY);
     for (i, edge) in slave.edges.iter().enumerate() {
         // x''(ξ) is constant: Σ N''_a y_a with N'' = (1, 1, -2) for Line3, zero for Line2.
@@ -140,7 +153,23 @@ fn closest_point(slave: &Contour, points: &[[f64; 2]], x: [f64; 2]) -> (usize, f
             }
         }
     }
-    (best.0, snap(best.1))
+    (best.0, best.1)
+}
+
+/// Whether the nodes of the curves `a` and `b` face each other one to one: the closest point of
+/// every node of each curve on the other is a node, to `|Δξ| ≤ 1e-6` of the edge's reference
+/// coordinate (mesh generators write the two copies of a shared arc with differences far above
+/// round-off), so the meshes match along the interface (nodes beyond the other curve's end
+/// project onto its end node). Node-to-segment pairs are then node-to-node.
+pub fn nodes_face_each_other(points: &[[f64; 2]], a: &Contour, b: &Contour) -> bool {
+    const TOLERANCE: f64 = 1e-6;
+    let onto = |from: &Contour, to: &Contour| {
+        from.nodes.iter().all(|n| {
+            let (e, xi) = closest_point_unsnapped(to, points, points[n.0]);
+            (xi.abs() - 1.0).abs() <= TOLERANCE || (xi.abs() <= TOLERANCE && to.edges[e].quadratic)
+        })
+    };
+    onto(a, b) && onto(b, a)
 }
 
 /// Rounds ξ to a node where it is there to round-off, so node-to-node pairs are exact.
@@ -153,7 +182,7 @@ fn snap(xi: f64) -> f64 {
     xi
 }
 
-fn slave_edge_centroids(model: &Model, region: &str, slave: &Contour) -> Result<Vec<[f64; 2]>, String> {
+pub(crate) fn slave_edge_centroids(model: &Model, region: &str, slave: &Contour) -> Result<Vec<[f64; 2]>, String> {
     use std::collections::HashMap;
     let blocks = model.mesh.blocks_in_group(region).map_err(|e| e.to_string())?;
     let cells: Vec<&[NodeId]> = blocks.iter().filter(|b| b.kind.dim() == 2).flat_map(|b| b.cells()).collect();

@@ -16,6 +16,7 @@ use contact2d_fem::{
 
 use crate::error::ContactError;
 use crate::pairing::ContactPair;
+use crate::segment_to_segment::{IntegratedRows, RowCoefficient};
 
 /// A sparse row over free DOFs plus its part over constrained DOFs.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -440,8 +441,16 @@ fn pair_rows(
     let mut normal_rows = Vec::with_capacity(pairs.len());
     let mut tangent_rows = Vec::with_capacity(pairs.len());
     for (p, slave) in pairs.iter().zip(slave) {
-        normal_rows.push(pair_row(system, p, p.normal, *slave)?);
-        tangent_rows.push(pair_row(system, p, p.tangent, *slave)?);
+        match &p.integrated {
+            None => {
+                normal_rows.push(pair_row(system, p, p.normal, *slave)?);
+                tangent_rows.push(pair_row(system, p, p.tangent, *slave)?);
+            }
+            Some(rows) => {
+                normal_rows.push(integrated_row(system, rows, |c| c.normal, *slave)?);
+                tangent_rows.push(integrated_row(system, rows, |c| c.tangent, *slave)?);
+            }
+        }
     }
     Ok((normal_rows, tangent_rows))
 }
@@ -507,6 +516,47 @@ fn pair_row(
                     "rigid slave contour: node index {} belongs to a body",
                     n.0
                 )));
+            }
+        }
+    }
+    Ok(row)
+}
+
+/// The row `Σ_a c_a · u_a` of a segment-to-segment pair ([`crate::segment_to_segment`]): every
+/// node's coefficient vector `c_a` picked by `part` (normal or tangential); a rigid slave's nodes
+/// (no DOFs) drop out.
+fn integrated_row(
+    system: &LinearSystem,
+    rows: &IntegratedRows,
+    part: impl Fn(&RowCoefficient) -> [f64; 2],
+    slave: SlaveKind,
+) -> Result<PairRow, ContactError> {
+    let mut row = PairRow::default();
+    let sides = rows.master.iter().map(|c| (c, true)).chain(rows.slave.iter().map(|c| (c, false)));
+    for (c, on_master) in sides {
+        let n = c.node.0;
+        let active = !matches!(system.dofs.kind(Dof::of(n, Component::X)), DofKind::Inactive);
+        match (on_master, slave, active) {
+            (false, SlaveKind::Rigid, false) => continue,
+            (false, SlaveKind::Rigid, true) => {
+                return Err(ContactError::InvalidInput(format!(
+                    "rigid slave contour: node index {n} belongs to a body"
+                )));
+            }
+            _ => {}
+        }
+        let v = part(c);
+        for comp in [Component::X, Component::Y] {
+            let value = v[comp.index()];
+            if value == 0.0 {
+                continue;
+            }
+            match system.dofs.kind(Dof::of(n, comp)) {
+                DofKind::Free(i) => row.free.push((i, value)),
+                DofKind::Constrained(j) => row.constrained.push((j, value)),
+                DofKind::Inactive => {
+                    return Err(ContactError::InvalidInput(format!("contact node index {n} belongs to no body")));
+                }
             }
         }
     }
