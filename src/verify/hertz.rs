@@ -7,11 +7,13 @@
 //! p(x) = p0 √(1 − x²/a²)
 //! ```
 //!
-//! Checks at the finest mesh run (the issue's targets): a within 1 %, the centre pressure within
-//! 1.5 % (Code_Aster's published model is 1.2 % low); the block twice as large (same contact
+//! Checks at the finest mesh run with the segment-to-segment pairing (the default for these
+//! non-matching arcs; the issue's targets): a within 1 %, the centre pressure within 1.5 %
+//! (Code_Aster's published model is 1.2 % low), the profile's L2 error within 2 % of p0 (over
+//! [0, a], trapezoid rule on the pairs' nodal pressures); the block twice as large (same contact
 //! refinement, L2) changes a and p0 by less than 1 % (the closed form is for half-spaces); the
 //! paper's paired-node Boussinesq algorithm (its zone grows from the axis) meets the same targets.
-//! The pressure profile's L2 error relative to p0 is reported per level.
+//! Node-to-segment is reported beside it on every level (its profile oscillates on L3).
 
 use std::f64::consts::PI;
 use std::path::Path;
@@ -42,6 +44,11 @@ pub struct HertzRun {
     pub profile_error: f64,
     /// The profile (x, p).
     pub profile: Vec<(f64, f64)>,
+}
+
+/// The override that sets the interface's pairing.
+fn pairing_override(pairing: &str) -> String {
+    format!("contact.hertz.pairing=\"{pairing}\"")
 }
 
 /// Solves the scene on a bundled mesh with extra overrides (e.g. a pairing).
@@ -87,36 +94,43 @@ pub fn run(root: &Path, level: Level) -> Result<CaseReport, VerifyError> {
     };
     let mut series = vec![];
     for (i, l) in levels.iter().enumerate() {
-        let run = measure(root, &format!("cylinder_on_block_{l}.msh"), &[])?;
-        let mesh = format!("{l}, node-to-segment");
-        if i + 1 == levels.len() {
-            let check = |q: &str, m: f64, r: f64, t: f64| Check {
-                quantity: q.into(),
-                mesh: mesh.clone(),
-                measured: m,
-                reference: r,
-                tolerance: Tolerance::Relative(t),
-            };
-            report.checks.push(check("a (mm)", run.a, a, 0.01));
-            report.checks.push(check("p(0) (MPa)", run.p_centre, p0, 0.015));
-        } else {
-            report.measurements.push(Measurement { quantity: "a (mm)".into(), mesh: mesh.clone(), value: run.a });
-            report.measurements.push(Measurement {
-                quantity: "p(0) (MPa)".into(),
-                mesh: mesh.clone(),
-                value: run.p_centre,
-            });
+        for (pairing, name) in [("segment_to_segment", "segment-to-segment"), ("node_to_segment", "node-to-segment")] {
+            let run = measure(root, &format!("cylinder_on_block_{l}.msh"), &[pairing_override(pairing)])?;
+            let mesh = format!("{l}, {name}");
+            // The targets are the issue's, at the finest level, for the default pairing of a
+            // non-matching interface (segment-to-segment); node-to-segment is reported beside it.
+            if i + 1 == levels.len() && pairing == "segment_to_segment" {
+                let check = |q: &str, m: f64, r: f64, t: Tolerance| Check {
+                    quantity: q.into(),
+                    mesh: mesh.clone(),
+                    measured: m,
+                    reference: r,
+                    tolerance: t,
+                };
+                report.checks.push(check("a (mm)", run.a, a, Tolerance::Relative(0.01)));
+                report.checks.push(check("p(0) (MPa)", run.p_centre, p0, Tolerance::Relative(0.015)));
+                report.checks.push(check("pressure L2 error / p0", run.profile_error, 0.0, Tolerance::Absolute(0.02)));
+            } else {
+                report.measurements.push(Measurement { quantity: "a (mm)".into(), mesh: mesh.clone(), value: run.a });
+                report.measurements.push(Measurement {
+                    quantity: "p(0) (MPa)".into(),
+                    mesh: mesh.clone(),
+                    value: run.p_centre,
+                });
+                report.measurements.push(Measurement {
+                    quantity: "pressure L2 error / p0".into(),
+                    mesh: mesh.clone(),
+                    value: run.profile_error,
+                });
+            }
+            if i + 1 == levels.len() {
+                series.push(Series {
+                    label: mesh,
+                    points: run.profile.iter().filter(|(x, _)| *x <= 1.5 * a).map(|(x, p)| (x / a, p / p0)).collect(),
+                    markers: true,
+                });
+            }
         }
-        report.measurements.push(Measurement {
-            quantity: "pressure L2 error / p0".into(),
-            mesh: mesh.clone(),
-            value: run.profile_error,
-        });
-        series.push(Series {
-            label: mesh,
-            points: run.profile.iter().filter(|(x, _)| *x <= 1.5 * a).map(|(x, p)| (x / a, p / p0)).collect(),
-            markers: true,
-        });
     }
     // The paper's algorithm beyond the paper: the half model's zone grows from the axis, one
     // zone from a known point, the structure the paired-node Boussinesq algorithm assumes.
@@ -126,7 +140,7 @@ pub fn run(root: &Path, level: Level) -> Result<CaseReport, VerifyError> {
     for (q, m, r, t) in [("a (mm)", boussinesq.a, a, 0.01), ("p(0) (MPa)", boussinesq.p_centre, p0, 0.015)] {
         report.checks.push(Check {
             quantity: q.into(),
-            mesh: format!("{finest}, Boussinesq"),
+            mesh: format!("{finest}, segment-to-segment, Boussinesq"),
             measured: m,
             reference: r,
             tolerance: Tolerance::Relative(t),

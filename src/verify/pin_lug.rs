@@ -15,8 +15,8 @@
 //! θ_c and σ* against the load for the four variants, and their mesh convergence over the
 //! levels (arcs of 20, 40, 80 elements over 120°), with the observed order and a Richardson
 //! estimate where the three levels are monotone. Measured (docs/verification.md): the rigid pin
-//! bears on a shorter arc (42.8° against 45.6° at L3) with nearly the same σ* (the peak is at
-//! the net section, set by the bearing load more than by the pressure's shape).
+//! bears on a shorter arc (42.8° against 45.0–45.5° at L3) with nearly the same σ* (the peak is
+//! at the net section, set by the bearing load more than by the pressure's shape).
 
 use std::path::Path;
 
