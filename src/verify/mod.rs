@@ -14,6 +14,7 @@
 //! is.
 
 pub mod cattaneo_mindlin;
+pub mod contact_patch;
 pub mod flagship;
 pub mod hertz;
 pub mod incline;
@@ -148,7 +149,8 @@ pub enum VerifyError {
 }
 
 /// The names of the gallery's cases, in the order they run.
-pub const CASES: [&str; 6] = ["hertz", "cattaneo_mindlin", "interference_fit", "incline", "pin_lug", "flagship"];
+pub const CASES: [&str; 7] =
+    ["contact_patch", "hertz", "cattaneo_mindlin", "interference_fit", "incline", "pin_lug", "flagship"];
 
 /// Runs one case by name; `root` is the repository root (where `scenes/` and `meshes/` are).
 ///
@@ -156,6 +158,7 @@ pub const CASES: [&str; 6] = ["hertz", "cattaneo_mindlin", "interference_fit", "
 /// [`VerifyError::Missing`] for an unknown name; what the case's solve returns otherwise.
 pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, VerifyError> {
     match name {
+        "contact_patch" => contact_patch::run(root, level),
         "hertz" => hertz::run(root, level),
         "cattaneo_mindlin" => cattaneo_mindlin::run(root, level),
         "interference_fit" => interference_fit::run(root, level),
@@ -175,7 +178,7 @@ pub struct VerifyArgs {
     /// `fast` (coarse and middle meshes, what CI runs) or `full` (every bundled level).
     #[arg(long, default_value = "fast", value_parser = ["fast", "full"])]
     pub level: String,
-    /// Cases to run, comma separated (default: all of hertz, cattaneo_mindlin,
+    /// Cases to run, comma separated (default: all of contact_patch, hertz, cattaneo_mindlin,
     /// interference_fit, incline, pin_lug, flagship).
     #[arg(long, value_delimiter = ',')]
     pub cases: Vec<String>,
