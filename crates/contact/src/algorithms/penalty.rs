@@ -15,6 +15,9 @@
 //!
 //! The states are iterated to a fixed point: solve the equations of the current state, take the
 //! state the answer implies, until it repeats (Newton's method on the piecewise-linear system).
+//! The step is safeguarded like the augmented Lagrangian's: backtracking on `½‖R(u)‖²`,
+//! `R(u) = K u − w r − B_Nᵀλ(u) − B_Tᵀτ(u)`, the full step when no damped one decreases it (stick
+//! and slip states otherwise cycle on a sliding step).
 //! The answer then satisfies the penalised law exactly; the method's own residual, the
 //! equilibrium `‖K u − w r − B_Nᵀλ − B_Tᵀτ‖∞ / F` (F: the largest load or contact force), is
 //! checked at the certificate's 1e-4 ([`crate::certify::RESIDUAL_TOLERANCE`]). It is round-off
@@ -92,6 +95,7 @@ pub fn solve_penalty(
     let mut status = ContactStatus::MaxIterations;
     let mut iterations = 0;
     let mut trace = Vec::new();
+    let mut merit = law.merit(&u);
     match FixedPatternLu::new(n, &law.pattern) {
         None => status = ContactStatus::Numerical,
         Some(mut lu) => {
@@ -102,8 +106,32 @@ pub fn solve_penalty(
                     status = ContactStatus::Numerical;
                     break;
                 };
-                u = next_u;
-                let next = law.state_of(&u);
+                // Safeguard (as the augmented Lagrangian's): backtrack on Φ(u) = ½‖R(u)‖² from
+                // the full step u → û, α = 1, ½, …, 1/16; the full step when none decreases Φ.
+                let full = law.merit(&next_u);
+                let armijo = |alpha: f64, value: f64| value <= (1.0 - 1e-4 * alpha) * merit;
+                let (mut alpha, mut accepted) = (1.0, armijo(1.0, full));
+                let (mut next, mut next_merit) = (next_u.clone(), full);
+                while !accepted && alpha > 1.0 / 16.0 {
+                    alpha *= 0.5;
+                    let trial: Vec<f64> = u.iter().zip(&next_u).map(|(a, b)| a + alpha * (b - a)).collect();
+                    let value = law.merit(&trial);
+                    if armijo(alpha, value) {
+                        (next, next_merit, accepted) = (trial, value, true);
+                    }
+                }
+                if !accepted {
+                    (alpha, next, next_merit) = (1.0, next_u, full);
+                }
+                (u, merit) = (next, next_merit);
+                // A slip whose direction reverses crosses the stick cone on the way: try stick
+                // (without this, a pair with a tiny λ flips slip+ ↔ slip− forever).
+                let next: Vec<PairState> = law
+                    .state_of(&u)
+                    .into_iter()
+                    .zip(&state)
+                    .map(|(n, s)| if slip_sign(n) * slip_sign(*s) < 0.0 { PairState::Stick } else { n })
+                    .collect();
                 trace.push(IterationRecord {
                     iteration: it,
                     changed: next.iter().zip(&state).filter(|(a, b)| a != b).count(),
@@ -114,7 +142,7 @@ pub fn solve_penalty(
                         .count(),
                     residual: 0.0,
                 });
-                if next == state {
+                if alpha == 1.0 && next == state {
                     status = ContactStatus::Converged;
                     break;
                 }
@@ -280,8 +308,8 @@ impl<'a> PenaltyLaw<'a> {
         (lambda, tau)
     }
 
-    /// `‖K u − w r − B_Nᵀλ − B_Tᵀτ‖∞ / F`, with `F` the largest load or contact force.
-    fn equilibrium_residual(&self, u: &[f64], lambda: &[f64], tau: &[f64]) -> f64 {
+    /// `R(u) = K u − w r − B_Nᵀλ(u) − B_Tᵀτ(u)` with the forces of the law's state at `u`.
+    fn residual(&self, u: &[f64], lambda: &[f64], tau: &[f64]) -> Vec<f64> {
         let p = self.problem;
         let mut f = stiffness_times(p, u);
         f.iter_mut().zip(&p.pattern_rhs).for_each(|(v, r)| *v -= self.w * r);
@@ -289,6 +317,19 @@ impl<'a> PenaltyLaw<'a> {
             p.normal_rows[k].free.iter().for_each(|&(i, v)| f[i] -= v * lambda[k]);
             p.tangent_rows[k].free.iter().for_each(|&(i, v)| f[i] -= v * tau[k]);
         }
+        f
+    }
+
+    /// `Φ(u) = ½ ‖R(u)‖²` (the merit of the line search).
+    fn merit(&self, u: &[f64]) -> f64 {
+        let (lambda, tau) = self.forces(u, &self.state_of(u));
+        0.5 * self.residual(u, &lambda, &tau).iter().map(|v| v * v).sum::<f64>()
+    }
+
+    /// `‖K u − w r − B_Nᵀλ − B_Tᵀτ‖∞ / F`, with `F` the largest load or contact force.
+    fn equilibrium_residual(&self, u: &[f64], lambda: &[f64], tau: &[f64]) -> f64 {
+        let p = self.problem;
+        let f = self.residual(u, lambda, tau);
         let scale = p
             .pattern_rhs
             .iter()
