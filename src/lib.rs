@@ -13,6 +13,7 @@ pub use contact2d_fem as fem;
 pub use contact2d_mesh as mesh;
 
 pub mod bench;
+pub mod compare;
 pub mod doc_sections;
 pub mod generic;
 pub mod input_file;

@@ -93,6 +93,20 @@ pub enum Pairing {
     NodeToNode,
 }
 
+impl Pairing {
+    /// Every pairing, in declaration order (for comparisons that run them all). A new variant
+    /// must be added here: [`Pairing::key`]'s exhaustive match reminds whoever adds one.
+    pub const ALL: &'static [Pairing] = &[Pairing::NodeToSegment, Pairing::NodeToNode];
+
+    /// The name scene files use (`contact.pairing`).
+    pub fn key(self) -> &'static str {
+        match self {
+            Pairing::NodeToSegment => "node_to_segment",
+            Pairing::NodeToNode => "node_to_node",
+        }
+    }
+}
+
 /// The initial gap of an interface's pairs.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum GapDescription {

@@ -7,31 +7,16 @@
 //! Clarabel form:  A x + s = b, s ∈ R₊ᵐ  with  A = −B_N,f,  b = g0 + w B_N,c u_c;  λ = z (dual)
 //! ```
 //!
-//! The QP is solved non-dimensional and diagonally equilibrated, so that the interior-point
-//! method's tolerances (1e-12, printing off) act on O(1) numbers at any stiffness contrast:
-//!
-//! ```text
-//! s   = the largest gap or prescribed value (length scale),  k_c = the contact stiffness scale
-//!       (crate::algorithms::full_system::contact_stiffness)
-//! u_i = s d_i y_i,   d_i = √(k_c / K_ii)                (Jacobi: P = D K D / k_c has unit diagonal)
-//! objective / (k_c s²):   ½ yᵀ P y − (w D r / (k_c s))ᵀ y
-//! row k / (s ‖(B_N D)_k‖):   −ρ_k (B_N D)_k y ≤ ρ_k b_k / s,   ρ_k = 1 / ‖(B_N D)_k‖
-//! forces:  λ_k = k_c s ρ_k z_k                           (from K u = w r + B_Nᵀ λ)
-//! ```
-//!
-//! Without the equilibration (`u = s x`, the objective over `s²`, as before issue 12) the
-//! diagonal of `P` spans the stiffness contrast (1e6 between the bodies at E2/E1 = 1e6, beyond
-//! Clarabel's own Ruiz equilibration, whose factors are bounded to [1e-4, 1e4]), and the duals
-//! `z = λ / s` carry the force unit: its absolute tolerances then lost the contact forces of the
-//! soft body (docs/stability.md, "Clarabel as a verifier").
+//! `P` is the upper triangle of `K_ff`. The displacements are scaled by `s` = the largest gap or
+//! prescribed value (`u = s x`, the objective divided by `s²`, so `λ = s z`): the interior-point
+//! method's tolerances (1e-12, printing off) then act on O(1) numbers.
 
 use std::time::Instant;
 
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus};
 
-use crate::algorithms::full_system::contact_stiffness;
-use crate::problem::{ContactProblem, PairRow};
+use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_displacement};
 use crate::solution::{ContactSolution, ContactStatus, StepStart};
 
@@ -46,72 +31,22 @@ pub(crate) fn map_status(status: SolverStatus) -> ContactStatus {
     }
 }
 
-/// The equilibration of the module docs: `u_i = s d_i y_i`, the objective over `k_c s²`.
-pub(crate) struct QpScaling {
-    /// Length scale `s`.
-    pub length: f64,
-    /// Contact stiffness scale `k_c`.
-    pub stiffness: f64,
-    /// `d_i = √(k_c / K_ii)` per free DOF.
-    pub d: Vec<f64>,
-}
-
-impl QpScaling {
-    pub(crate) fn new(problem: &ContactProblem, length: f64) -> QpScaling {
-        let stiffness = contact_stiffness(problem);
-        let k = problem.system.stiffness.as_ref();
-        let d = (0..k.ncols())
-            .map(|j| {
-                let kjj = k.row_idx_of_col(j).zip(k.val_of_col(j)).find(|(i, _)| *i == j).map_or(0.0, |(_, v)| *v);
-                if kjj > 0.0 { (stiffness / kjj).sqrt() } else { 1.0 }
-            })
-            .collect();
-        QpScaling { length, stiffness, d }
-    }
-
-    /// The upper triangle of `D K D / k_c` (from the stored lower triangle of `K`: entry
-    /// `(i, j)`, `i ≥ j`, becomes `(j, i)`) as triplets, sized `dim × dim`.
-    pub(crate) fn hessian(&self, problem: &ContactProblem, dim: usize) -> CscMatrix<f64> {
-        let k = problem.system.stiffness.as_ref();
-        let (mut rows, mut cols, mut vals) = (vec![], vec![], vec![]);
-        for j in 0..k.ncols() {
-            for (i, v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
-                rows.push(j);
-                cols.push(i);
-                vals.push(v * self.d[i] * self.d[j] / self.stiffness);
-            }
-        }
-        CscMatrix::new_from_triplets(dim, dim, rows, cols, vals)
-    }
-
-    /// `q = −w D r / (k_c s)`.
-    pub(crate) fn linear_term(&self, problem: &ContactProblem, w: f64) -> Vec<f64> {
-        let scale = self.stiffness * self.length;
-        problem.pattern_rhs.iter().zip(&self.d).map(|(r, d)| -w * r * d / scale).collect()
-    }
-
-    /// `‖(B D)_k‖` of a row's free part (1 when it has none).
-    pub(crate) fn row_norm(&self, row: &PairRow) -> f64 {
-        let norm = row.free.iter().map(|(i, v)| (v * self.d[*i]).powi(2)).sum::<f64>().sqrt();
-        if norm > 0.0 { norm } else { 1.0 }
-    }
-
-    /// `u = s D y`.
-    pub(crate) fn displacement(&self, y: &[f64]) -> Vec<f64> {
-        y.iter().zip(&self.d).map(|(y, d)| self.length * d * y).collect()
-    }
-
-    /// The force of a dual `z` of a row scaled by `1/(s ‖(B D)_k‖)`: `k_c s z / ‖(B D)_k‖`.
-    pub(crate) fn force(&self, z: f64, row_norm: f64) -> f64 {
-        self.stiffness * self.length * z / row_norm
-    }
-}
-
 /// Solves the frictionless problem at load factor `w` with Clarabel.
 pub fn solve_frictionless_qp(problem: &ContactProblem, w: f64) -> ContactSolution {
     let start = Instant::now();
     let n = problem.system.dofs.num_free();
     let m = problem.num_pairs();
+    // Upper triangle of K_ff from its stored lower triangle: entry (i, j), i ≥ j, becomes (j, i).
+    let k = problem.system.stiffness.as_ref();
+    let (mut rows, mut cols, mut vals) = (vec![], vec![], vec![]);
+    for j in 0..k.ncols() {
+        for (i, v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
+            rows.push(j);
+            cols.push(i);
+            vals.push(*v);
+        }
+    }
+    let p = CscMatrix::new_from_triplets(n, n, rows, cols, vals);
     let prescribed: Vec<f64> = problem.pattern_prescribed.iter().map(|v| w * v).collect();
     let b: Vec<f64> = problem
         .normal_rows
@@ -121,17 +56,14 @@ pub fn solve_frictionless_qp(problem: &ContactProblem, w: f64) -> ContactSolutio
         .collect();
     let s = b.iter().chain(&prescribed).fold(0.0f64, |a, v| a.max(v.abs()));
     let s = if s > 0.0 { s } else { 1.0 };
-    let scaling = QpScaling::new(problem, s);
-    let p = scaling.hessian(problem, n);
-    let norms: Vec<f64> = problem.normal_rows.iter().map(|r| scaling.row_norm(r)).collect();
-    let b: Vec<f64> = b.iter().zip(&norms).map(|(v, rho)| v / (s * rho)).collect();
-    let q = scaling.linear_term(problem, w);
+    let b: Vec<f64> = b.iter().map(|v| v / s).collect();
+    let q: Vec<f64> = problem.pattern_rhs.iter().map(|r| -w * r / s).collect();
     let (mut ar, mut ac, mut av) = (vec![], vec![], vec![]);
     for (kk, row) in problem.normal_rows.iter().enumerate() {
         for (i, v) in &row.free {
             ar.push(kk);
             ac.push(*i);
-            av.push(-v * scaling.d[*i] / norms[kk]);
+            av.push(-v);
         }
     }
     let a = CscMatrix::new_from_triplets(m, n, ar, ac, av);
@@ -148,8 +80,8 @@ pub fn solve_frictionless_qp(problem: &ContactProblem, w: f64) -> ContactSolutio
             Ok(mut solver) => {
                 solver.solve();
                 let sol = &solver.solution;
-                let x = scaling.displacement(&sol.x);
-                let z: Vec<f64> = sol.z.iter().zip(&norms).map(|(z, rho)| scaling.force(*z, *rho)).collect();
+                let x: Vec<f64> = sol.x.iter().map(|v| v * s).collect();
+                let z: Vec<f64> = sol.z.iter().map(|v| v * s).collect();
                 (map_status(sol.status), x, z, sol.iterations as usize)
             }
             Err(_) => (ContactStatus::Numerical, vec![0.0; n], vec![0.0; m], 0),

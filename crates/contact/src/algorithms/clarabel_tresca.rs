@@ -13,9 +13,7 @@
 //!             pair is degenerate — λ = gap = 0 —, so a tighter test would measure their noise)
 //! ```
 //!
-//! Variables are scaled like the frictionless QP (`u = s D y`, the objective over `k_c s²`,
-//! crate::algorithms::clarabel_qp), and `t_k = s c_k y_k` with `c_k = ‖(B_T D)_k‖`, each slip row
-//! divided by `s c_k`: `τ_k = k_c s (z₋ − z₊) / c_k`. Each Tresca QP is solved
+//! Variables are scaled like the frictionless QP (`u = s x`, `t = s y`). Each Tresca QP is solved
 //! to 1e-10 (tighter tolerances stall on the slip rows, whose optimal face is degenerate where
 //! t = |Δs| = 0); that is ample for a fixed point tested at 1e-7 and for the 1e-6 agreement
 //! asked of the check. The fixed point need not converge for large μ: the limit is then
@@ -26,7 +24,7 @@ use std::time::Instant;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT};
 
-use crate::algorithms::clarabel_qp::{QpScaling, map_status, solve_frictionless_qp};
+use crate::algorithms::clarabel_qp::{map_status, solve_frictionless_qp};
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_displacement, force_scale};
 use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
@@ -143,37 +141,41 @@ fn solve_tresca(problem: &ContactProblem, w: f64, start: &StepStart, bound: &[f6
     let s = b_normal.iter().chain(&prescribed).chain(&c_t).fold(0.0f64, |a, v| a.max(v.abs()));
     let s = if s > 0.0 { s } else { 1.0 };
 
-    // P = [D K D / k_c 0; 0 0] (crate::algorithms::clarabel_qp::QpScaling); t_k = s c_k y_k with
-    // c_k = ‖(B_T D)_k‖, so each slip row, divided by s c_k, has O(1) entries.
-    let scaling = QpScaling::new(problem, s);
-    let p = scaling.hessian(problem, n + nt);
-    let mut q = scaling.linear_term(problem, w);
-    let tangent_norms: Vec<f64> = friction_pairs.iter().map(|&k| scaling.row_norm(&problem.tangent_rows[k])).collect();
-    q.extend(friction_pairs.iter().zip(&tangent_norms).map(|(&k, c)| bound[k] * c / (scaling.stiffness * s)));
-    let normal_norms: Vec<f64> = problem.normal_rows.iter().map(|r| scaling.row_norm(r)).collect();
+    // P = [K 0; 0 0] (upper triangle of K from its stored lower triangle).
+    let k = problem.system.stiffness.as_ref();
+    let (mut pr, mut pc, mut pv) = (vec![], vec![], vec![]);
+    for j in 0..k.ncols() {
+        for (i, v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
+            pr.push(j);
+            pc.push(i);
+            pv.push(*v);
+        }
+    }
+    let p = CscMatrix::new_from_triplets(n + nt, n + nt, pr, pc, pv);
+    let mut q: Vec<f64> = problem.pattern_rhs.iter().map(|r| -w * r / s).collect();
+    q.extend(friction_pairs.iter().map(|&k| bound[k] / s));
 
     let (mut ar, mut ac, mut av, mut b) = (vec![], vec![], vec![], vec![]);
     for (row, r) in problem.normal_rows.iter().enumerate() {
         for (i, v) in &r.free {
             ar.push(row);
             ac.push(*i);
-            av.push(-v * scaling.d[*i] / normal_norms[row]);
+            av.push(-v);
         }
-        b.push(b_normal[row] / (s * normal_norms[row]));
+        b.push(b_normal[row] / s);
     }
     for (j, &kk) in friction_pairs.iter().enumerate() {
-        let c = tangent_norms[j];
         for (sign, offset) in [(1.0, m + 2 * j), (-1.0, m + 2 * j + 1)] {
-            // sign +1: t − Δs ≥ 0 ;  sign −1: t + Δs ≥ 0   (each divided by s c_k)
+            // sign +1: t − Δs ≥ 0 ;  sign −1: t + Δs ≥ 0
             for (i, v) in &problem.tangent_rows[kk].free {
                 ar.push(offset);
                 ac.push(*i);
-                av.push(sign * v * scaling.d[*i] / c);
+                av.push(sign * v);
             }
             ar.push(offset);
             ac.push(n + j);
             av.push(-1.0);
-            b.push(-sign * c_t[j] / (s * c));
+            b.push(-sign * c_t[j] / s);
         }
     }
     let a = CscMatrix::new_from_triplets(m + 2 * nt, n + nt, ar, ac, av);
@@ -191,11 +193,11 @@ fn solve_tresca(problem: &ContactProblem, w: f64, start: &StepStart, bound: &[f6
     };
     solver.solve();
     let sol = &solver.solution;
-    let u = scaling.displacement(&sol.x[..n]);
-    let lambda: Vec<f64> = sol.z[..m].iter().zip(&normal_norms).map(|(z, rho)| scaling.force(*z, *rho)).collect();
+    let u: Vec<f64> = sol.x[..n].iter().map(|v| v * s).collect();
+    let lambda: Vec<f64> = sol.z[..m].iter().map(|v| v * s).collect();
     let mut tau = vec![0.0; m];
     for (j, &kk) in friction_pairs.iter().enumerate() {
-        tau[kk] = scaling.force(sol.z[m + 2 * j + 1] - sol.z[m + 2 * j], tangent_norms[j]);
+        tau[kk] = s * (sol.z[m + 2 * j + 1] - sol.z[m + 2 * j]);
     }
     (map_status(sol.status), u, lambda, tau, sol.iterations as usize)
 }
