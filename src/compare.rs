@@ -435,3 +435,55 @@ fn draw(path: &Path, quantity: &str, rows: &[CompareRow]) -> Result<(), OutputEr
     };
     line_chart(path, &axes, &series)
 }
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+
+    fn row(algorithm: &'static str, level: usize, value: Option<f64>) -> CompareRow {
+        CompareRow {
+            algorithm,
+            pairing: "node_to_segment",
+            level,
+            mesh: format!("L{level}"),
+            status: if value.is_some() { "converged".into() } else { "skipped".into() },
+            reason: None,
+            time: 1.0,
+            solve_time: 1.0,
+            iterations: 1,
+            pairs: 1,
+            kkt: [0.0; 3],
+            values: value.map(|v| BTreeMap::from([("q".to_string(), v)])).unwrap_or_default(),
+            errors: BTreeMap::new(),
+        }
+    }
+
+    #[test]
+    fn aitken_extrapolation_is_exact_for_geometric_convergence() {
+        // q_n = 2 + 3 · 4^(−n): Aitken's Δ² recovers the limit 2 exactly (to round-off); the
+        // first combination is skipped, so the baseline is the second.
+        let q = |n: i32| 2.0 + 3.0 * 4f64.powi(-n);
+        let mut rows: Vec<CompareRow> = (0..3).map(|l| row("skipped_one", l, None)).collect();
+        rows.extend((0..3).map(|l| row("second", l, Some(q(l as i32 + 1)))));
+        let r = references(&["q".to_string()], &[], &rows, 3);
+        assert!((r["q"].values[0] - 2.0).abs() < 1e-13, "{:?}", r["q"]);
+        assert!(r["q"].kind.starts_with("Richardson") && r["q"].kind.contains("second"));
+        // A closed form takes precedence; differences that do not shrink are not extrapolated.
+        let r = references(&["q".to_string()], &[("q".to_string(), 2.5)], &rows, 3);
+        assert_eq!((r["q"].values[0], r["q"].kind.as_str()), (2.5, "closed form"));
+        let rows: Vec<CompareRow> = [1.0, 2.0, 4.0].iter().enumerate().map(|(l, v)| row("a", l, Some(*v))).collect();
+        let r = references(&["q".to_string()], &[], &rows, 3);
+        assert_eq!(r["q"].values[0], 4.0);
+        assert!(r["q"].kind.contains("not monotone"));
+    }
+
+    #[test]
+    fn quantities_are_dotted_paths_and_energy_is_the_sum() {
+        let json: Value =
+            serde_json::json!({"contacts": {"c": {"max_pressure": 3.0}}, "energies": {"a": 1.0, "b": 2.5}});
+        assert_eq!(quantity(&json, "contacts.c.max_pressure"), Some(3.0));
+        assert_eq!(quantity(&json, "energy"), Some(3.5));
+        assert_eq!(quantity(&json, "contacts.nope"), None);
+    }
+}
