@@ -188,13 +188,13 @@ impl<'a> Equations<'a> {
         let frictional: Vec<bool> = (0..m).map(|k| problem.tangential[k] && problem.friction[k] > 0.0).collect();
         let entries = stiffness_entries(problem);
         let mut pattern: Vec<(usize, usize)> = entries.iter().map(|&(i, j, _)| (i, j)).collect();
-        for k in 0..m {
+        for (k, &with_friction) in frictional.iter().enumerate() {
             let (normal, tangent) = (&problem.normal_rows[k], &problem.tangent_rows[k]);
             let (rn, rt) = (n + k, n + m + k);
             pattern.extend(normal.free.iter().map(|&(i, _)| (i, rn)));
             pattern.extend(normal.free.iter().map(|&(i, _)| (rn, i)));
             pattern.push((rn, rn));
-            if frictional[k] {
+            if with_friction {
                 pattern.extend(tangent.free.iter().map(|&(i, _)| (i, rt)));
                 pattern.extend(tangent.free.iter().map(|&(i, _)| (rt, i)));
                 pattern.extend(normal.free.iter().map(|&(i, _)| (rt, i)));

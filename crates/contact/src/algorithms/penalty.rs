@@ -199,10 +199,10 @@ impl<'a> PenaltyLaw<'a> {
                 pattern.extend(b.iter().map(|&(j, _)| (i, j)));
             }
         };
-        for k in 0..m {
+        for (k, &with_friction) in frictional.iter().enumerate() {
             let (normal, tangent) = (&problem.normal_rows[k].free, &problem.tangent_rows[k].free);
             outer(&mut pattern, normal, normal);
-            if frictional[k] {
+            if with_friction {
                 outer(&mut pattern, tangent, tangent);
                 outer(&mut pattern, tangent, normal);
             }
