@@ -545,7 +545,7 @@ impl GenericScene {
 }
 
 #[cfg(test)]
-#[allow(clippy::unwrap_used, clippy::panic)]
+#[allow(clippy::unwrap_used)]
 mod tests {
     use super::*;
 
@@ -594,31 +594,6 @@ schedule = [{ press = 1.0 }, { press = 1.0, slide = 1.0 }]
         let schedule = s.schedule().unwrap();
         assert_eq!(schedule.steps(), &[vec![0.0, 1.0], vec![1.0, 1.0]]);
         assert!(is_generic(SCENE));
-    }
-
-    #[test]
-    fn penalties_are_read_for_the_penalty_method_only() {
-        let path = Path::new("scenes/t.toml");
-        let scene = |sets: &[&str]| {
-            let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
-            GenericScene::from_toml_str(SCENE, path, &sets)
-        };
-        let s = scene(&["solver.algorithm=penalty", "solver.penalty=1e5"]).unwrap();
-        let p = s.settings().unwrap().penalty();
-        // The tangential penalty defaults to the normal one.
-        assert_eq!((p.normal, p.tangential), (1e5, 1e5));
-        let s = scene(&["solver.algorithm=penalty", "solver.tangential_penalty=10"]).unwrap();
-        assert_eq!(s.settings().unwrap().penalty(), PenaltyParameters { normal: 1e3, tangential: 10.0 });
-        let key = |r: Result<GenericScene, SceneError>| match r {
-            Err(SceneError::Value { key, .. }) => key,
-            other => panic!("expected a value error, got {other:?}"),
-        };
-        assert_eq!(key(scene(&["solver.penalty=1e3"])), "solver.penalty");
-        assert_eq!(key(scene(&["solver.algorithm=penalty", "solver.penalty=0"])), "solver.penalty");
-        assert_eq!(
-            key(scene(&["solver.algorithm=penalty", "solver.tangential_penalty=1e20"])),
-            "solver.tangential_penalty"
-        );
     }
 
     #[test]
