@@ -14,6 +14,7 @@ pub use contact2d_mesh as mesh;
 
 #[cfg(feature = "native")]
 pub mod bench;
+pub mod compare;
 pub mod doc_sections;
 pub mod generic;
 pub mod input_file;

@@ -126,6 +126,15 @@ enum Command {
     ///   contact2d stress --ratios 1e-4,1e6 --frictions 0,1.5 --eps 0 --no-extra
     #[command(verbatim_doc_comment)]
     Stress(contact2d::stress::StressArgs),
+    /// Every algorithm × pairing on one generic scene over mesh levels: time, iterations, KKT
+    /// residuals and the error of the key outputs; writes compare.csv, compare.md and
+    /// work-precision figures.
+    ///
+    /// Examples:
+    ///   contact2d compare scenes/generic/cylinder_on_block.toml --mesh meshes/generic/cylinder_on_block_L1.msh --mesh meshes/generic/cylinder_on_block_L2.msh --reference contacts.hertz.max_pressure=3585 --reference contacts.hertz.contact_length=6.21
+    ///   contact2d compare scenes/generic/two_blocks_press_slide.toml --repeat 1 --out compare-out
+    #[command(verbatim_doc_comment)]
+    Compare(contact2d::compare::CompareArgs),
     /// The verification gallery: closed-form and published cases, measured against their
     /// references, PASS/FAIL per quantity (exit status 3 when a check fails).
     ///
@@ -215,6 +224,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             }
         }
         Command::Stress(args) => writeln!(std::io::stdout().lock(), "{}", contact2d::stress::run_command(&args)?)?,
+        Command::Compare(args) => writeln!(std::io::stdout().lock(), "{}", contact2d::compare::run_command(&args)?)?,
     }
     Ok(())
 }

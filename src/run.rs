@@ -538,6 +538,7 @@ fn status_name(status: ContactStatus) -> &'static str {
         ContactStatus::Infeasible => "infeasible",
         ContactStatus::Numerical => "numerical",
         ContactStatus::Inadmissible => "inadmissible",
+        ContactStatus::Penalised => "penalised",
     }
 }
 

@@ -134,6 +134,27 @@ fn a_closed_stdout_ends_quietly_without_a_panic() {
     assert!(out.status.success() && !stderr.contains("panicked"), "{:?} {stderr}", out.status);
 }
 
+#[test]
+fn compare_runs_every_algorithm_and_pairing_and_says_why_it_skips() {
+    let out = std::env::temp_dir().join(format!("contact2d-compare-{}", std::process::id()));
+    let out_s = out.to_string_lossy().into_owned();
+    let (ok, stdout, stderr) =
+        contact2d(&["compare", "scenes/generic/two_blocks_press_slide.toml", "--repeat", "1", "--out", &out_s]);
+    assert!(ok, "{stderr}");
+    // 5 algorithms × 3 pairings × 1 mesh; the press-then-slide schedule is not proportional and the
+    // blocks' node counts differ, so Boussinesq and node-to-node are skipped with the reason.
+    let rows: Vec<&str> =
+        stdout.lines().filter(|l| l.contains("| node_to_") || l.contains("| segment_to_segment |")).collect();
+    assert_eq!(rows.len(), 15, "{stdout}");
+    assert!(rows.iter().any(|r| r.starts_with("| boussinesq | node_to_segment") && r.contains("proportional")));
+    assert!(rows.iter().filter(|r| r.contains("| node_to_node |")).all(|r| r.contains("skipped")));
+    assert!(rows.iter().any(|r| r.starts_with("| augmented_lagrangian | node_to_segment") && r.contains("converged")));
+    for file in ["compare.csv", "compare.md", "compare_energy.png"] {
+        assert!(out.join(file).is_file(), "{file} missing");
+    }
+    std::fs::remove_dir_all(&out).ok();
+}
+
 /// `contact2d verify` prints one PASS/FAIL line per check and a count, and exits 0 when every
 /// check passes; an unknown case is an error (exit 1).
 #[test]

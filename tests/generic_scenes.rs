@@ -156,3 +156,24 @@ fn a_scene_without_contact_is_plain_elasticity_and_optional_sections_take_overri
         assert!(r[0].abs() < 1e-12 && (r[1] - 4.0).abs() < 1e-12, "{r:?}");
     }
 }
+
+#[test]
+fn penalties_are_read_for_the_penalty_method_only() {
+    use contact2d::scene::SceneError;
+    let scene = |sets: &[&str]| {
+        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+        load_scene(Path::new("scenes/generic/two_blocks_press_slide.toml"), &sets)
+    };
+    let p = scene(&["solver.algorithm=penalty", "solver.penalty=1e5"]).unwrap().settings().unwrap().penalty();
+    // The tangential penalty defaults to the normal one.
+    assert_eq!((p.normal, p.tangential), (1e5, 1e5));
+    let p = scene(&["solver.algorithm=penalty", "solver.tangential_penalty=10"]).unwrap().settings().unwrap().penalty();
+    assert_eq!((p.normal, p.tangential), (1e3, 10.0));
+    let key = |sets: &[&str]| match scene(sets) {
+        Err(SceneError::Value { key, .. }) => key,
+        other => panic!("expected a value error, got {other:?}"),
+    };
+    assert_eq!(key(&["solver.penalty=1e3"]), "solver.penalty");
+    assert_eq!(key(&["solver.algorithm=penalty", "solver.penalty=0"]), "solver.penalty");
+    assert_eq!(key(&["solver.algorithm=penalty", "solver.tangential_penalty=1e20"]), "solver.tangential_penalty");
+}

@@ -117,6 +117,7 @@ pub fn status_name(status: contact2d_contact::ContactStatus) -> &'static str {
         S::Infeasible => "infeasible",
         S::Numerical => "numerical",
         S::Inadmissible => "inadmissible",
+        S::Penalised => "penalised",
     }
 }
 

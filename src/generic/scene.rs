@@ -38,7 +38,7 @@ use serde::Deserialize;
 
 use contact2d_contact::{
     BodyDescription, ContactAlgorithm, ContactDescription, EdgeLoadKind, FixDescription, GapDescription,
-    LoadDescription, LoadSchedule, Pairing, ProblemDescription, SolverSettings,
+    LoadDescription, LoadSchedule, Pairing, PenaltyParameters, ProblemDescription, SolverSettings,
     builder::{DEFAULT_PATTERN, pattern_order},
 };
 use contact2d_element::{Formulation, PlaneCondition, locking_warning};
@@ -211,6 +211,10 @@ pub enum AlgorithmKey {
     Clarabel,
     /// The paper's Boussinesq algorithm.
     Boussinesq,
+    /// The penalty method (regularised Coulomb law).
+    Penalty,
+    /// The augmented Lagrangian (Alart–Curnier, semi-smooth Newton on the full system).
+    AugmentedLagrangian,
 }
 
 /// The `[solver]` section.
@@ -223,11 +227,18 @@ pub struct SolverEntry {
     /// Iteration limit per step (default 100).
     #[serde(default = "hundred")]
     pub max_iterations: usize,
+    /// The penalty method's normal penalty relative to the contact stiffness scale `k_c`
+    /// (default 1e3; `penalty` only).
+    #[serde(default)]
+    pub penalty: Option<f64>,
+    /// Its tangential (stick) penalty relative to `k_c` (default: `penalty`).
+    #[serde(default)]
+    pub tangential_penalty: Option<f64>,
 }
 
 impl Default for SolverEntry {
     fn default() -> Self {
-        SolverEntry { algorithm: AlgorithmKey::ActiveSet, max_iterations: 100 }
+        SolverEntry { algorithm: AlgorithmKey::ActiveSet, max_iterations: 100, penalty: None, tangential_penalty: None }
     }
 }
 
@@ -406,9 +417,7 @@ impl GenericScene {
                 format!("boussinesq solves exactly one contact interface; the scene has {}", self.contact.len()),
             ));
         }
-        SolverSettings::new(ContactAlgorithm::ActiveSet)
-            .with_max_iterations(self.solver.max_iterations)
-            .map_err(|e| self.fail("solver.max_iterations", e.to_string()))?;
+        self.settings()?;
         self.schedule().map(|_| ())
     }
 
@@ -459,10 +468,29 @@ impl GenericScene {
             AlgorithmKey::ActiveSet => ContactAlgorithm::ActiveSet,
             AlgorithmKey::Clarabel => ContactAlgorithm::Clarabel,
             AlgorithmKey::Boussinesq => ContactAlgorithm::Boussinesq,
+            AlgorithmKey::Penalty => ContactAlgorithm::Penalty,
+            AlgorithmKey::AugmentedLagrangian => ContactAlgorithm::AugmentedLagrangian,
         };
-        SolverSettings::new(algorithm)
+        let settings = SolverSettings::new(algorithm)
             .with_max_iterations(self.solver.max_iterations)
-            .map_err(|e| self.fail("solver.max_iterations", e.to_string()))
+            .map_err(|e| self.fail("solver.max_iterations", e.to_string()))?;
+        let given =
+            [("solver.penalty", self.solver.penalty), ("solver.tangential_penalty", self.solver.tangential_penalty)];
+        if algorithm != ContactAlgorithm::Penalty {
+            if let Some((key, _)) = given.iter().find(|(_, v)| v.is_some()) {
+                return Err(self.fail(key, "a penalty applies to solver.algorithm = \"penalty\" only".into()));
+            }
+            return Ok(settings);
+        }
+        let defaults = PenaltyParameters::default();
+        let normal = self.solver.penalty.unwrap_or(defaults.normal);
+        let tangential = self.solver.tangential_penalty.unwrap_or(normal);
+        let key = if self.solver.penalty.is_some_and(|v| !(1e-3..=1e15).contains(&v)) {
+            "solver.penalty"
+        } else {
+            "solver.tangential_penalty"
+        };
+        settings.with_penalty(normal, tangential).map_err(|e| self.fail(key, e.to_string()))
     }
 
     /// Warnings about the elements: standard elements of a nearly incompressible body in plane

@@ -107,6 +107,23 @@ pub enum Pairing {
     Automatic,
 }
 
+impl Pairing {
+    /// Every concrete pairing (for comparisons that run them all; [`Pairing::Automatic`] only
+    /// chooses between two of them). A new variant must be added here: [`Pairing::key`]'s
+    /// exhaustive match reminds whoever adds one.
+    pub const ALL: &'static [Pairing] = &[Pairing::NodeToSegment, Pairing::NodeToNode, Pairing::SegmentToSegment];
+
+    /// The name scene files use (`contact.pairing`).
+    pub fn key(self) -> &'static str {
+        match self {
+            Pairing::NodeToSegment => "node_to_segment",
+            Pairing::NodeToNode => "node_to_node",
+            Pairing::SegmentToSegment => "segment_to_segment",
+            Pairing::Automatic => "automatic",
+        }
+    }
+}
+
 /// The initial gap of an interface's pairs.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum GapDescription {

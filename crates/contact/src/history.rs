@@ -12,7 +12,7 @@ use crate::algorithms::clarabel_tresca::solve_frictional_qp;
 use crate::algorithms::frictional_active_set::solve_frictional_active_set;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
-use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
+use crate::solution::{ContactSolution, PairState, StepStart};
 
 /// An algorithm that solves one step of a history.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -95,7 +95,7 @@ pub fn march<L, E>(
         dissipated += solution.dissipation;
         start = StepStart::after(&solution);
         guess = Some(solution.state.clone());
-        let converged = solution.status == ContactStatus::Converged;
+        let converged = solution.status.is_solved();
         let step = HistoryStep { solution, dissipated };
         on_step(&step);
         steps.push(step);

@@ -24,6 +24,9 @@ pub mod segment_to_segment;
 pub mod solution;
 pub mod solve;
 
+pub use algorithms::augmented_lagrangian::solve_augmented_lagrangian;
+pub use algorithms::full_system::contact_stiffness;
+pub use algorithms::penalty::{PenaltyParameters, solve_penalty};
 pub use algorithms::{boussinesq, clarabel_qp, clarabel_tresca, frictional_active_set, frictionless_active_set};
 pub use boussinesq::{
     BoussinesqLoading, BoussinesqStep, ZoneForces, Zones, finish_zones, solve_boussinesq_history,

@@ -31,6 +31,20 @@ pub enum ContactStatus {
     /// The algorithm's assumed structure gave a solution that violates an inequality of the
     /// contact conditions (the offending pairs are reported by the algorithm).
     Inadmissible,
+    /// A regularised method (the penalty method) reached the fixed point of its own law, whose
+    /// residuals hold to round-off, but the exact contact conditions fail
+    /// [`crate::certify::certify`]: the penetration it allows (`kkt.max_penetration`) is part of
+    /// the method. Never reported for an answer that passes the certificate.
+    Penalised,
+}
+
+impl ContactStatus {
+    /// Whether the algorithm solved its equations: [`ContactStatus::Converged`], or
+    /// [`ContactStatus::Penalised`] (solved the regularised law). A history goes on after such a
+    /// step.
+    pub fn is_solved(self) -> bool {
+        matches!(self, ContactStatus::Converged | ContactStatus::Penalised)
+    }
 }
 
 /// Residuals of the discrete KKT conditions, in force and length units of the problem.

@@ -27,9 +27,11 @@
 //! the residual does not fall, and the step fails with [`ContactError::BodyNotHeld`] naming the
 //! body and its free rigid motions.
 
+use crate::algorithms::augmented_lagrangian::solve_augmented_lagrangian;
 use crate::algorithms::boussinesq::{BoussinesqLoading, solve_boussinesq_step};
 use crate::algorithms::clarabel_tresca::solve_frictional_qp;
 use crate::algorithms::frictional_active_set::solve_frictional_active_set;
+use crate::algorithms::penalty::{PenaltyParameters, solve_penalty};
 use crate::error::ContactError;
 use crate::history::{HistoryStep, march};
 use crate::interface::Interface;
@@ -50,6 +52,35 @@ pub enum ContactAlgorithm {
     /// The paper's paired-node Boussinesq algorithm: one contact zone growing from the end of
     /// the master curve where the initial gap is smallest, stick inside slip. Loads must grow.
     Boussinesq,
+    /// The penalty method with a regularised Coulomb law on the full system (penalties from
+    /// [`SolverSettings::penalty`]); status [`ContactStatus::Penalised`] where its penetration
+    /// fails the exact certificate.
+    Penalty,
+    /// The augmented Lagrangian of Alart and Curnier by a semi-smooth Newton method on the full
+    /// (not condensed) system: one sparse LU per iteration.
+    AugmentedLagrangian,
+}
+
+impl ContactAlgorithm {
+    /// Every algorithm, in declaration order (for comparisons that run them all).
+    pub const ALL: [ContactAlgorithm; 5] = [
+        ContactAlgorithm::ActiveSet,
+        ContactAlgorithm::Clarabel,
+        ContactAlgorithm::Boussinesq,
+        ContactAlgorithm::Penalty,
+        ContactAlgorithm::AugmentedLagrangian,
+    ];
+
+    /// The name scene files use (`solver.algorithm`).
+    pub fn key(self) -> &'static str {
+        match self {
+            ContactAlgorithm::ActiveSet => "active_set",
+            ContactAlgorithm::Clarabel => "clarabel",
+            ContactAlgorithm::Boussinesq => "boussinesq",
+            ContactAlgorithm::Penalty => "penalty",
+            ContactAlgorithm::AugmentedLagrangian => "augmented_lagrangian",
+        }
+    }
 }
 
 /// The largest iteration limit per step: every iteration of the condensed algorithms factors a
@@ -63,13 +94,20 @@ pub struct SolverSettings {
     max_iterations: usize,
     floating_tolerance: f64,
     max_floating_iterations: usize,
+    penalty: PenaltyParameters,
 }
 
 impl SolverSettings {
     /// The defaults for `algorithm`: 100 iterations, floating tolerance 1e-10, 60 proximal
     /// iterations.
     pub fn new(algorithm: ContactAlgorithm) -> SolverSettings {
-        SolverSettings { algorithm, max_iterations: 100, floating_tolerance: 1e-10, max_floating_iterations: 60 }
+        SolverSettings {
+            algorithm,
+            max_iterations: 100,
+            floating_tolerance: 1e-10,
+            max_floating_iterations: 60,
+            penalty: PenaltyParameters::default(),
+        }
     }
 
     /// Sets the iteration limit of the algorithm per step.
@@ -98,6 +136,28 @@ impl SolverSettings {
         }
         self.floating_tolerance = tolerance;
         Ok(self)
+    }
+
+    /// Sets the relative penalties `κ_N`, `κ_T` of [`ContactAlgorithm::Penalty`] (the penalties
+    /// are `κ k_c`, [`crate::algorithms::full_system::contact_stiffness`]).
+    ///
+    /// # Errors
+    /// A relative penalty outside `[1e-3, 1e15]` (or not finite).
+    pub fn with_penalty(mut self, normal: f64, tangential: f64) -> Result<SolverSettings, ContactError> {
+        for (name, value) in [("normal", normal), ("tangential", tangential)] {
+            if !(1e-3..=1e15).contains(&value) {
+                return Err(ContactError::InvalidInput(format!(
+                    "{name} relative penalty {value} must lie in [1e-3, 1e15]"
+                )));
+            }
+        }
+        self.penalty = PenaltyParameters { normal, tangential };
+        Ok(self)
+    }
+
+    /// The relative penalties of [`ContactAlgorithm::Penalty`].
+    pub fn penalty(&self) -> PenaltyParameters {
+        self.penalty
     }
 
     /// The algorithm.
@@ -326,7 +386,7 @@ fn solve_floating_step(
         let scale = force_scale(loaded, &solution);
         let moved: Vec<f64> = free.iter().zip(previous_free.iter()).map(|(a, b)| a - b).collect();
         *previous_free = free;
-        if !residual.is_finite() || solution.status != ContactStatus::Converged {
+        if !residual.is_finite() || !solution.status.is_solved() {
             return Ok((solution, iteration, residual));
         }
         if residual <= settings.floating_tolerance * scale {
@@ -426,6 +486,10 @@ fn solve_step(
             let max = max.max(2 * context.order.len());
             solve_boussinesq_step(problem, interface, context.order, BoussinesqLoading::Load(1.0), context.start, max)
                 .solution
+        }
+        ContactAlgorithm::Penalty => solve_penalty(problem, 1.0, context.start, context.guess, settings.penalty, max),
+        ContactAlgorithm::AugmentedLagrangian => {
+            solve_augmented_lagrangian(problem, 1.0, context.start, context.guess, max)
         }
     }
 }

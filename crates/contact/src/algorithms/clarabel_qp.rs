@@ -7,6 +7,11 @@
 //! Clarabel form:  A x + s = b, s ∈ R₊ᵐ  with  A = −B_N,f,  b = g0 + w B_N,c u_c;  λ = z (dual)
 //! ```
 //!
+//! The interior point's answer is then polished: the exact solution of its own contact set (one
+//! sparse LU of the full system, crate::algorithms::augmented_lagrangian) replaces it when that
+//! passes the certificate (crate::certify::certify); the contact set is Clarabel's, so the check
+//! stays independent of the active set.
+//!
 //! `P` is the upper triangle of `K_ff`. The displacements are scaled by `s` = the largest gap or
 //! prescribed value (`u = s x`, the objective divided by `s²`, so `λ = s z`): the interior-point
 //! method's tolerances (1e-12, printing off) then act on O(1) numbers.
@@ -16,6 +21,7 @@ use web_time::Instant;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT, SolverStatus};
 
+use crate::algorithms::augmented_lagrangian::polish_state;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_displacement};
 use crate::solution::{ContactSolution, ContactStatus, StepStart};
@@ -96,5 +102,16 @@ pub fn solve_frictionless_qp(problem: &ContactProblem, w: f64) -> ContactSolutio
         iterations,
         time: start.elapsed(),
     };
-    finish_from_displacement(problem, &x, raw, &StepStart::initial(m))
+    let start = StepStart::initial(m);
+    let solution = finish_from_displacement(problem, &x, raw, &start);
+    // Polishing, as for the Tresca QPs (crate::algorithms::clarabel_tresca): the exact answer of
+    // the interior point's own contact set, kept only if it passes the certificate.
+    if matches!(solution.status, ContactStatus::Converged | ContactStatus::Numerical)
+        && let Some(mut polished) = polish_state(problem, w, &start, &solution.state, solution.iterations + 1)
+        && polished.status == ContactStatus::Converged
+    {
+        polished.time += solution.time;
+        return polished;
+    }
+    solution
 }

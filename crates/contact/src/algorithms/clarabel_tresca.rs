@@ -24,6 +24,7 @@ use web_time::Instant;
 use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT};
 
+use crate::algorithms::augmented_lagrangian::polish_state;
 use crate::algorithms::clarabel_qp::{map_status, solve_frictionless_qp};
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_displacement, force_scale};
@@ -49,6 +50,7 @@ pub fn solve_frictional_qp(
     let mut iterations = 0;
     let mut trace = Vec::new();
     let (mut best_change, mut stalled) = (f64::INFINITY, 0);
+    let mut settled = false;
     for it in 1..=max_fixed_point {
         iterations = it;
         let bound: Vec<f64> =
@@ -81,6 +83,7 @@ pub fn solve_frictional_qp(
         }
         if change <= 1e-7 * scale || (best_change <= 1e-5 * scale && stalled >= 5) {
             status = ContactStatus::Converged;
+            settled = true;
             break;
         }
     }
@@ -97,6 +100,21 @@ pub fn solve_frictional_qp(
         && (solution.kkt.max_slip_inside_cone > COULOMB_TOLERANCE || cone > COULOMB_TOLERANCE)
     {
         solution.status = ContactStatus::Numerical;
+    }
+    // Polishing (issue 12): the interior point resolves the pair states, but the forces only to
+    // its tolerance (a degenerate pair — stuck on the cone, λ = gap = 0 — to about its square
+    // root). The linear equations of its own states, solved exactly once (the full system,
+    // crate::algorithms::augmented_lagrangian), give the answer those states imply; it replaces
+    // the interior point's only if it passes every check of crate::certify::certify.
+    if settled || status == ContactStatus::MaxIterations {
+        let time = solution.time;
+        if let Some(mut polished) = polish_state(problem, w, start, &solution.state, solution.iterations + 1)
+            && polished.status == ContactStatus::Converged
+        {
+            polished.trace = std::mem::take(&mut solution.trace);
+            polished.time += time;
+            return polished;
+        }
     }
     solution
 }

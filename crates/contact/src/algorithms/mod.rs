@@ -8,12 +8,18 @@
 //! boussinesq                the paper's paired-node algorithm: zones assumed, (5.1) checked
 //! clarabel_qp               the frictionless QP in the full displacement space (Clarabel)
 //! clarabel_tresca           Tresca QPs to the Coulomb fixed point (Clarabel)
+//! penalty                   normal penalty and regularised Coulomb law on the full system
+//! augmented_lagrangian      Alart–Curnier semi-smooth Newton on the full system (sparse LU)
+//! full_system               contact stiffness scale and fixed-pattern sparse LU (shared)
 //! state_equations           the linear system of a given zone configuration (shared)
 //! ```
 
+pub mod augmented_lagrangian;
 pub mod boussinesq;
 pub mod clarabel_qp;
 pub mod clarabel_tresca;
 pub mod frictional_active_set;
 pub mod frictionless_active_set;
+pub mod full_system;
+pub mod penalty;
 pub(crate) mod state_equations;
