@@ -55,6 +55,10 @@ pub struct Interface {
     /// `K⁻¹ r_p` per load pattern of the problem, solved when a step first needs it
     /// ([`Interface::update_load_factors`]).
     pattern_u0: Vec<Option<Vec<f64>>>,
+    /// The factored equations of the last contact state solved on this interface, reused when
+    /// the next solve has the same state (a load step starting from the previous step's
+    /// states).
+    pub(crate) last_state: crate::algorithms::state_equations::StateFactorCache,
 }
 
 /// `Bᵀ` restricted to free DOFs, as dense columns of length `n`.
@@ -145,6 +149,7 @@ impl Interface {
             normal_rows: normal.to_vec(),
             tangent_rows: tangent.to_vec(),
             pattern_u0: vec![None; problem.patterns().len()],
+            last_state: Default::default(),
         }
     }
 

@@ -21,7 +21,9 @@
 //! [ C_TN[S,A] + C_TT[S,A] D   C_TT[S,S] ] [τ_S] = [ −w h_T[S] + s_start[S] ],   D = diag(σ μ)
 //! ```
 //!
-//! of size `|A| + |S|` instead of `2 × pairs`, factored by faer's blocked partial-pivoting LU
+//! of size `|A| + |S|` instead of `2 × pairs`; its factorisation is kept on the interface and
+//! reused while the state (and μ) stay the same (each load step starts from the previous one's
+//! states, so its first iteration repeats the previous step's last matrix), factored by faer's blocked partial-pivoting LU
 //! with the fixed [`contact2d_fem::parallelism`]: the same solution up to round-off, at the
 //! cost of the contact zone only (a long interface with a short contact zone pays for its zone).
 
@@ -110,6 +112,26 @@ impl StateSystem {
     }
 }
 
+/// The last factored reduced system of an interface, keyed by what its matrix depends on
+/// besides the compliances: the states, the friction coefficients and the tangential flags.
+#[derive(Debug, Default)]
+pub(crate) struct StateFactorCache(std::sync::Mutex<Option<StateFactor>>);
+
+impl Clone for StateFactorCache {
+    /// A clone starts empty (the factor is a cache, not part of the value).
+    fn clone(&self) -> StateFactorCache {
+        StateFactorCache::default()
+    }
+}
+
+#[derive(Debug)]
+struct StateFactor {
+    key: (Vec<PairState>, Vec<f64>, Vec<bool>, bool),
+    lu: Mat<f64>,
+    forward: Vec<usize>,
+    inverse: Vec<usize>,
+}
+
 /// How pair `k`'s tangential force follows from its state.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Tangential {
@@ -155,7 +177,10 @@ pub(crate) fn solve_state_equations(
     if r == 0 {
         return Some(x);
     }
-    let mut a = Mat::<f64>::zeros(r, r);
+    let key = (state.to_vec(), problem.friction.clone(), problem.tangential.clone(), frictional);
+    let mut cache = interface.last_state.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    let hit = cache.as_ref().is_some_and(|c| c.key == key && c.lu.nrows() == r);
+    let mut a = if hit { Mat::<f64>::zeros(0, 0) } else { Mat::<f64>::zeros(r, r) };
     let mut b = Mat::<f64>::zeros(r, 2);
     // Row i of the reduced system: the gap row of contact[i] (i < na) or the slip row of
     // stick[i − na]; (c_n·, c_t·) are that row's compliances against λ and τ.
@@ -171,6 +196,9 @@ pub(crate) fn solve_state_equations(
             b[(i, 1)] = start.slip[k];
             (k, &interface.c_tn, &interface.c_tt)
         };
+        if hit {
+            continue;
+        }
         for (jc, &j) in contact.iter().enumerate() {
             let mut v = c_n[(row, j)];
             match tangential[j] {
@@ -182,17 +210,24 @@ pub(crate) fn solve_state_equations(
         }
     }
     let par = parallelism();
-    let (mut forward, mut inverse) = (vec![0usize; r], vec![0usize; r]);
     let mut memory = MemBuffer::new(
         factor::lu_in_place_scratch::<usize, f64>(r, r, par, Default::default())
             .or(solve::solve_in_place_scratch::<usize, f64>(r, 2, par)),
     );
     let stack = MemStack::new(&mut memory);
-    let (_, perm) = factor::lu_in_place(a.as_mut(), &mut forward, &mut inverse, par, stack, Default::default());
-    if (0..r).any(|i| a[(i, i)] == 0.0) {
+    if !hit {
+        let (mut forward, mut inverse) = (vec![0usize; r], vec![0usize; r]);
+        factor::lu_in_place(a.as_mut(), &mut forward, &mut inverse, par, stack, Default::default());
+        *cache = Some(StateFactor { key, lu: a, forward, inverse });
+    }
+    let factored = cache.as_ref()?;
+    if (0..r).any(|i| factored.lu[(i, i)] == 0.0) {
         return None;
     }
-    solve::solve_in_place(a.as_ref(), a.as_ref(), perm, b.as_mut(), par, stack);
+    // The arrays are the permutation and its inverse written by `lu_in_place`.
+    let perm = faer::perm::PermRef::new_checked(&factored.forward, &factored.inverse, r);
+    solve::solve_in_place(factored.lu.as_ref(), factored.lu.as_ref(), perm, b.as_mut(), par, stack);
+    drop(cache);
     for (jc, &j) in contact.iter().enumerate() {
         for c in 0..2 {
             let l = b[(jc, c)];
