@@ -28,8 +28,8 @@
 //! cost of the contact zone only (a long interface with a short contact zone pays for its zone).
 
 use contact2d_fem::parallelism;
-use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::Mat;
+use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::lu::partial_pivoting::{factor, solve};
 use nalgebra::DMatrix;
 
@@ -250,6 +250,7 @@ pub(crate) fn combine(x: &DMatrix<f64>, w: f64) -> (Vec<f64>, Vec<f64>) {
 }
 
 #[cfg(test)]
+#[allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 #[path = "../../tests/fixtures/two_blocks.rs"]
 mod two_blocks_fixture;
 
@@ -262,7 +263,8 @@ mod tests {
     use super::*;
     use crate::interface::Interface;
 
-    const STATES: [PairState; 4] = [PairState::Free, PairState::Stick, PairState::SlipPositive, PairState::SlipNegative];
+    const STATES: [PairState; 4] =
+        [PairState::Free, PairState::Stick, PairState::SlipPositive, PairState::SlipNegative];
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(32))]
