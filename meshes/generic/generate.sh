@@ -5,7 +5,8 @@
 #   meshes/generic/generate.sh       # writes two_blocks.msh, cylinder_on_block_L{1,2,3}.msh,
 #                                    # cylinder_on_block_big_L2.msh, pin_lug.msh,
 #                                    # interference_fit.msh, cattaneo_mindlin_L{1,2,3}.msh,
-#                                    # incline.msh, pin_lug_L1.msh, pin_lug_L3.msh
+#                                    # incline.msh, pin_lug_L1.msh, pin_lug_L3.msh,
+#                                    # long_interface_{96,190,380}.msh
 #   meshes/generic/generate.sh --no-check
 #
 # Environment: GMSH (default: gmsh), PYTHON (default: python3, must import gmsh for the check).
@@ -54,4 +55,8 @@ for level in 1 2 3; do
     cylinder_arc,cylinder_top,block_top,block_bottom,block_side -- -setnumber level "$level"
 done
 mesh incline.geo incline.msh block,ground block_bottom,block_left,block_right,block_top,ground_top
+for n in 96 190 380; do
+  mesh long_interface.geo "long_interface_$n.msh" lower,upper lower_bottom,lower_top,upper_bottom,upper_top \
+    -- -setnumber n_upper "$n"
+done
 exit $status

@@ -52,6 +52,13 @@ pub struct Interface {
     /// `B_N` and, with friction, `B_T` (free parts), for the final recovery.
     normal_rows: Vec<PairRow>,
     tangent_rows: Vec<PairRow>,
+    /// `K⁻¹ r_p` per load pattern of the problem, solved when a step first needs it
+    /// ([`Interface::update_load_factors`]).
+    pattern_u0: Vec<Option<Vec<f64>>>,
+    /// The factored equations of the last contact state solved on this interface, reused when
+    /// the next solve has the same state (a load step starting from the previous step's
+    /// states).
+    pub(crate) last_state: crate::algorithms::state_equations::StateFactorCache,
 }
 
 /// `Bᵀ` restricted to free DOFs, as dense columns of length `n`.
@@ -141,6 +148,8 @@ impl Interface {
             solver: problem.solver.clone(),
             normal_rows: normal.to_vec(),
             tangent_rows: tangent.to_vec(),
+            pattern_u0: vec![None; problem.patterns().len()],
+            last_state: Default::default(),
         }
     }
 
@@ -148,6 +157,36 @@ impl Interface {
     /// ([`ContactProblem::apply_load`]): one solve; the compliances are kept.
     pub fn update_load(&mut self, problem: &ContactProblem) {
         self.u0 = problem.solver.solve(&problem.pattern_rhs);
+        let h =
+            |rows: &[PairRow]| rows.iter().map(|r| r.dot(&self.u0, &problem.pattern_prescribed)).collect::<Vec<_>>();
+        self.h_normal = h(&problem.normal_rows);
+        self.h_tangent = h(&problem.tangent_rows);
+    }
+
+    /// Like [`Interface::update_load`] after [`ContactProblem::apply_load`] with `factors` and no
+    /// extra right-hand side, by superposition instead of a solve per step:
+    ///
+    /// ```text
+    /// u0 = K⁻¹ Σ_p f_p r_p = Σ_p f_p (K⁻¹ r_p)     (one solve per pattern, the first time it is used)
+    /// ```
+    ///
+    /// The same `u0` up to round-off; a history of many steps over few patterns pays a few
+    /// solves instead of one per step.
+    pub fn update_load_factors(&mut self, problem: &ContactProblem, factors: &[f64]) {
+        let patterns = problem.patterns();
+        if factors.len() != patterns.len() || self.pattern_u0.len() != patterns.len() {
+            self.update_load(problem);
+            return;
+        }
+        let mut u0 = vec![0.0; self.u0.len()];
+        for ((pattern, f), cached) in patterns.iter().zip(factors).zip(&mut self.pattern_u0) {
+            if *f == 0.0 {
+                continue;
+            }
+            let up = cached.get_or_insert_with(|| problem.solver.solve(&pattern.rhs));
+            u0.iter_mut().zip(up.iter()).for_each(|(u, v)| *u += f * v);
+        }
+        self.u0 = u0;
         let h =
             |rows: &[PairRow]| rows.iter().map(|r| r.dot(&self.u0, &problem.pattern_prescribed)).collect::<Vec<_>>();
         self.h_normal = h(&problem.normal_rows);

@@ -9,6 +9,10 @@
 //! compressive normal force on the master node; the paper's pressure is `p = −λ / w` with `w` the
 //! master node's tributary length, so `p < 0` in contact.
 
+// The shared test fixtures name the crate by its external name.
+#[cfg(test)]
+extern crate self as contact2d_contact;
+
 pub mod algorithms;
 pub mod builder;
 pub mod certify;

@@ -361,7 +361,7 @@ fn solve_floating_step(
     let springs = loaded.system.stabilisation.clone();
     if springs.is_empty() {
         loaded.apply_load(factors, None)?;
-        interface.update_load(loaded);
+        interface.update_load_factors(loaded, factors);
         return Ok((solve_step(loaded, interface, settings, context), 0, 0.0));
     }
     let mut residuals: Vec<f64> = vec![];

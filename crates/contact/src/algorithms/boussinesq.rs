@@ -27,7 +27,7 @@
 
 use web_time::Instant;
 
-use crate::algorithms::state_equations::{combine, state_system};
+use crate::algorithms::state_equations::{combine, solve_state_equations};
 use crate::error::ContactError;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
@@ -250,7 +250,7 @@ fn solve_zones(
     for (pos, &k) in order.iter().enumerate().take(zones.contact_end + 1) {
         role[k] = if pos < zones.stick { PairState::Stick } else { zones.slip.unwrap_or(PairState::Stick) };
     }
-    let x = state_system(problem, interface, start, &role, frictional).solve()?;
+    let x = solve_state_equations(problem, interface, start, &role, frictional)?;
     let w = match loading {
         BoussinesqLoading::Load(w) | BoussinesqLoading::Fixed { load: w, .. } => w,
         BoussinesqLoading::ContactEnd(_) => {

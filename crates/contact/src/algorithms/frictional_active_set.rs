@@ -25,7 +25,7 @@ use web_time::Instant;
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::algorithms::state_equations::{combine, state_system};
+use crate::algorithms::state_equations::{combine, solve_state_equations};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
@@ -124,7 +124,7 @@ fn solve_state(
     state: &[PairState],
     frictional: bool,
 ) -> Option<(Vec<f64>, Vec<f64>)> {
-    let x = state_system(problem, interface, start, state, frictional).solve()?;
+    let x = solve_state_equations(problem, interface, start, state, frictional)?;
     Some(combine(&x, w))
 }
 
