@@ -34,29 +34,13 @@
 //! node-to-segment (Taylor & Papadopoulos 1991), tens of per cent on quadratic edges.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use contact2d::verify::contact_patch::{DELTA, E_B, KINDS, NU_B, blocks, measure};
+use contact2d::verify::contact_patch::{DELTA, E_B, KINDS, NU_B, blocks, body, fix, measure};
 use contact2d_contact::{
-    BodyDescription, ContactAlgorithm, ContactDescription, ContactStatus, FixDescription, GapDescription, LoadSchedule,
-    Pairing, ProblemDescription, SolverSettings, solve,
+    ContactAlgorithm, ContactDescription, ContactStatus, GapDescription, LoadSchedule, Pairing, ProblemDescription,
+    SolverSettings, solve,
 };
-use contact2d_element::{Formulation, PlaneCondition};
 use contact2d_fem::Component;
 use contact2d_mesh::CellKind;
-
-fn body(region: &str, e: f64, nu: f64) -> BodyDescription {
-    BodyDescription {
-        region: region.into(),
-        youngs_modulus: e,
-        poissons_ratio: nu,
-        plane: PlaneCondition::Strain,
-        thickness: 1.0,
-        formulation: Formulation::Standard,
-    }
-}
-
-fn fix(group: &str, component: Component, value: f64) -> FixDescription {
-    FixDescription { group: group.into(), component, value, pattern: "main".into() }
-}
 
 #[test]
 fn matching_meshes_pass_with_both_pairings() {

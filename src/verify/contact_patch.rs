@@ -68,7 +68,8 @@ pub fn blocks(kind: CellKind, na: usize, nb: usize) -> Mesh {
     mesh
 }
 
-fn body(region: &str, e: f64, nu: f64) -> BodyDescription {
+/// A plane-strain body of unit thickness.
+pub fn body(region: &str, e: f64, nu: f64) -> BodyDescription {
     BodyDescription {
         region: region.into(),
         youngs_modulus: e,
@@ -79,7 +80,8 @@ fn body(region: &str, e: f64, nu: f64) -> BodyDescription {
     }
 }
 
-fn fix(group: &str, component: Component, value: f64) -> FixDescription {
+/// A fixed displacement component in the `main` pattern.
+pub fn fix(group: &str, component: Component, value: f64) -> FixDescription {
     FixDescription { group: group.into(), component, value, pattern: "main".into() }
 }
 

@@ -37,7 +37,7 @@
 use std::time::Instant;
 
 use crate::algorithms::full_system::{
-    FixedPatternLu, contact_stiffness, dot_free, row_offsets, stiffness_entries, stiffness_times,
+    FixedPatternLu, backtrack, contact_stiffness, dot_free, row_offsets, stiffness_entries, stiffness_times,
 };
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_displacement};
@@ -89,21 +89,7 @@ pub fn solve_augmented_lagrangian(
             break;
         };
         let full_merit = equations.merit(&target);
-        let armijo = |alpha: f64, value: f64| value <= (1.0 - 1e-4 * alpha) * merit;
-        let (mut alpha, mut accepted) = (1.0, armijo(1.0, full_merit));
-        let (mut next_x, mut next_merit) = (target.clone(), full_merit);
-        while !accepted && alpha > 1.0 / 16.0 {
-            alpha *= 0.5;
-            let trial: Vec<f64> = x.iter().zip(&target).map(|(a, b)| a + alpha * (b - a)).collect();
-            let trial_merit = equations.merit(&trial);
-            if armijo(alpha, trial_merit) {
-                (next_x, next_merit, accepted) = (trial, trial_merit, true);
-            }
-        }
-        if !accepted {
-            // No damped step decreases Φ: take the full step (non-monotone).
-            (alpha, next_x, next_merit) = (1.0, target, full_merit);
-        }
+        let (alpha, next_x, next_merit) = backtrack(&x, target, merit, full_merit, |t| equations.merit(t));
         (x, merit) = (next_x, next_merit);
         let next = equations.state_of(&x);
         trace.push(IterationRecord {

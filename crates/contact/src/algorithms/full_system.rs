@@ -90,6 +90,33 @@ pub(crate) fn stiffness_times(problem: &ContactProblem, u: &[f64]) -> Vec<f64> {
 
 /// A square sparse matrix of fixed pattern (entries listed once, duplicates summed) and its LU
 /// factorisation with partial pivoting: symbolic once, numeric per [`FixedPatternLu::factor`].
+/// The safeguard of the semi-smooth Newton methods: from `x` towards the Newton target `x̂`
+/// (merit `Φ(x̂)` = `target_merit`), the first step `α = 1, ½, …, 1/16` with the Armijo decrease
+/// `Φ(x + α (x̂ − x)) ≤ (1 − 1e-4 α) Φ(x)`, or the full step when none decreases Φ (non-monotone).
+/// Returns `(α, x_next, Φ(x_next))`.
+pub(crate) fn backtrack(
+    x: &[f64],
+    target: Vec<f64>,
+    merit: f64,
+    target_merit: f64,
+    merit_of: impl Fn(&[f64]) -> f64,
+) -> (f64, Vec<f64>, f64) {
+    let armijo = |alpha: f64, value: f64| value <= (1.0 - 1e-4 * alpha) * merit;
+    if armijo(1.0, target_merit) {
+        return (1.0, target, target_merit);
+    }
+    let mut alpha = 1.0;
+    while alpha > 1.0 / 16.0 {
+        alpha *= 0.5;
+        let trial: Vec<f64> = x.iter().zip(&target).map(|(a, b)| a + alpha * (b - a)).collect();
+        let value = merit_of(&trial);
+        if armijo(alpha, value) {
+            return (alpha, trial, value);
+        }
+    }
+    (1.0, target, target_merit)
+}
+
 pub(crate) struct FixedPatternLu {
     dim: usize,
     symbolic: SymbolicSparseColMat<usize>,

@@ -43,7 +43,7 @@
 use std::time::Instant;
 
 use crate::algorithms::full_system::{
-    FixedPatternLu, contact_stiffness, dot_free, row_offsets, stiffness_entries, stiffness_times,
+    FixedPatternLu, backtrack, contact_stiffness, dot_free, row_offsets, stiffness_entries, stiffness_times,
 };
 use crate::certify::{RESIDUAL_TOLERANCE, certify};
 use crate::problem::ContactProblem;
@@ -109,20 +109,7 @@ pub fn solve_penalty(
                 // Safeguard (as the augmented Lagrangian's): backtrack on Φ(u) = ½‖R(u)‖² from
                 // the full step u → û, α = 1, ½, …, 1/16; the full step when none decreases Φ.
                 let full = law.merit(&next_u);
-                let armijo = |alpha: f64, value: f64| value <= (1.0 - 1e-4 * alpha) * merit;
-                let (mut alpha, mut accepted) = (1.0, armijo(1.0, full));
-                let (mut next, mut next_merit) = (next_u.clone(), full);
-                while !accepted && alpha > 1.0 / 16.0 {
-                    alpha *= 0.5;
-                    let trial: Vec<f64> = u.iter().zip(&next_u).map(|(a, b)| a + alpha * (b - a)).collect();
-                    let value = law.merit(&trial);
-                    if armijo(alpha, value) {
-                        (next, next_merit, accepted) = (trial, value, true);
-                    }
-                }
-                if !accepted {
-                    (alpha, next, next_merit) = (1.0, next_u, full);
-                }
+                let (alpha, next, next_merit) = backtrack(&u, next_u, merit, full, |t| law.merit(t));
                 (u, merit) = (next, next_merit);
                 // A slip whose direction reverses crosses the stick cone on the way: try stick
                 // (without this, a pair with a tiny λ flips slip+ ↔ slip− forever).
