@@ -35,7 +35,7 @@ import { dirname, join } from "node:path";
 
 const here = dirname(fileURLToPath(import.meta.url));
 const web = join(here, "..");
-const { initSync, solve_flagship_json, solve_hertz_json } = await import(join(web, "pkg/contact2d_web.js"));
+const { initSync, solve_flagship_json, solve_hertz_json, solve_cattaneo_mindlin_json } = await import(join(web, "pkg/contact2d_web.js"));
 initSync({ module: readFileSync(join(web, "pkg/contact2d_web_bg.wasm")) });
 
 const RELATIVE = 1e-12;
@@ -108,7 +108,7 @@ function compare(path, a, b, scale = 0) {
   if (a !== b) failures.push(`${path}: native ${JSON.stringify(a)}, wasm ${JSON.stringify(b)}`);
 }
 
-const solvers = { flagship: solve_flagship_json, hertz: solve_hertz_json };
+const solvers = { flagship: solve_flagship_json, hertz: solve_hertz_json, cattaneo_mindlin: solve_cattaneo_mindlin_json };
 for (const [scene, cases] of Object.entries(reference)) {
   for (const { params, view } of cases) {
     const t0 = performance.now();
