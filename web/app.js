@@ -370,7 +370,7 @@ function drawCattaneoMindlin(view) {
     xlabel: "x / a (a: closed form at the measured P)", ylabel: "traction / (p0 or μp0)", xrange: [-1.5, 1.5],
   });
   $("profile-caption").textContent = "Along the contact: shear q/(μp0) and pressure p/p0 at the roller's " +
-    "nodes beside q(x) = μp0[√(1 − x²/a²) − (c/a)√(1 − x²/c²)] and Hertz's p, evaluated at the measured P and Q.";
+    "nodes beside q(x) = μp0[√(1 − x²/a²) − (c/a)√(1 − x²/c²)] and Hertz's p, evaluated at the measured P and Q. In the slip zones q = μp, so q/(μp0) lies on p/p0.";
   $("cm-ratio-out").textContent = m.ratio.toFixed(3);
   $("cm-ratio-out").dataset.value = String(m.ratio);
   table([
