@@ -14,6 +14,7 @@ pub use contact2d_mesh as mesh;
 
 #[cfg(feature = "native")]
 pub mod bench;
+#[cfg(feature = "native")]
 pub mod compare;
 pub mod doc_sections;
 pub mod generic;

@@ -1,8 +1,8 @@
 // The teaching page: sliders -> one call into the WebAssembly solver -> drawings and tables.
-// Each scene is one entry of SCENES (params from the controls, solve, draw); a new scene (e.g.
-// Cattaneo–Mindlin) is one more entry, one more exported solve function in crates/web, and one
+// Each scene is one entry of SCENES (params from the controls, solve, draw); a new scene is one
+// more entry, one more exported solve function in crates/web, and one
 // more nav button and control block in index.html.
-import init, { solve_flagship_json, solve_hertz_json, bundled_json } from "./pkg/contact2d_web.js";
+import init, { solve_flagship_json, solve_hertz_json, solve_cattaneo_mindlin_json, bundled_json } from "./pkg/contact2d_web.js";
 
 const $ = (id) => document.getElementById(id);
 const COLOURS = { stick: "#1f77b4", "slip+": "#d62728", "slip-": "#d62728", contact: "#2ca02c", free: "#969696" };
@@ -27,6 +27,8 @@ function applyUrl() {
   if (q.has("force")) $("force").value = q.get("force");
   if (q.has("level")) $("level").value = q.get("level");
   if (q.has("mag")) $("mag").value = q.get("mag");
+  if (q.has("press")) $("cm-press").value = q.get("press");
+  if (q.has("shear")) $("cm-shear").value = q.get("shear");
 }
 
 const round4 = (v) => Number(Number(v).toFixed(4));
@@ -72,7 +74,15 @@ const SCENES = {
     params: () => ({ force: Number($("force").value), level: $("level").value }),
     draw: drawHertz,
   },
+  cattaneo_mindlin: {
+    solve: (params) => JSON.parse(solve_cattaneo_mindlin_json(JSON.stringify(params))),
+    params: () => ({ press: round4($("cm-press").value), shear: round4($("cm-shear").value), level: $("cm-level").value }),
+    draw: drawCattaneoMindlin,
+  },
 };
+
+// The scene's press and shear displacements of the roller's top at factor 1, mm.
+const CM_PRESS_MM = 0.0142, CM_SHEAR_MM = 0.01;
 
 function showLabels() {
   $("mu-out").textContent = round4($("mu").value).toFixed(2);
@@ -82,6 +92,9 @@ function showLabels() {
   $("load-out").textContent = round4($("load").value).toFixed(4);
   $("force-out").textContent = Number($("force").value).toLocaleString("en");
   $("mag-out").textContent = Number($("mag").value).toFixed(1);
+  const press = round4($("cm-press").value), shear = round4($("cm-shear").value);
+  $("cm-press-out").textContent = `${+(press * CM_PRESS_MM).toPrecision(4)} mm (${press.toFixed(2)} × the scene's)`;
+  $("cm-shear-out").textContent = `${+(shear * CM_SHEAR_MM).toPrecision(4)} mm (factor ${shear.toFixed(3)})`;
 }
 
 // Solves the current scene and draws it; slider moves during a solve are coalesced.
@@ -333,6 +346,42 @@ function drawHertz(view) {
   ], null);
 }
 
+// Cattaneo–Mindlin: the contact zone of the deformed mesh, q/(μp0) and p/p0 along x/a beside the
+// closed form at the measured P and Q, the stick half-width c/a computed and closed-form.
+function drawCattaneoMindlin(view) {
+  const s = view.summary, c = s.contacts.roller, cf = view.closed_form, m = view.measured;
+  const z = 6 * cf.a;
+  drawMesh(view, [-z, -0.45 * z, z, 0.45 * z]);
+  const p = c.profile;
+  const keep = p.x.map((x) => Math.abs(x) <= 1.5 * cf.a);
+  const xs = p.x.filter((_, i) => keep[i]).map((x) => x / cf.a);
+  const mp0 = cf.friction * cf.p0;
+  chart($("profile"), {
+    series: [
+      { x: xs, y: p.shear.filter((_, i) => keep[i]).map((q) => (m.shear_sign * q) / mp0), colour: "#1f77b4",
+        label: "computed q/(μp0)", points: true },
+      { x: cf.x.map((x) => x / cf.a), y: cf.shear.map((q) => q / mp0), colour: "#000", label: "Cattaneo–Mindlin" },
+      { x: xs, y: p.pressure.filter((_, i) => keep[i]).map((v) => v / cf.p0), colour: "#d62728",
+        label: "computed p/p0", points: true },
+      { x: cf.x.map((x) => x / cf.a), y: cf.pressure.map((v) => v / cf.p0), colour: "#888", label: "Hertz p/p0" },
+    ],
+    markers: [{ x: -m.c / cf.a, label: "−c (FE)" }, { x: m.c / cf.a, label: "c (FE)" },
+      { x: cf.c / cf.a, label: "c (closed form)" }],
+    xlabel: "x / a (a: closed form at the measured P)", ylabel: "traction / (p0 or μp0)", xrange: [-1.5, 1.5],
+  });
+  $("profile-caption").textContent = "Along the contact: shear q/(μp0) and pressure p/p0 at the roller's " +
+    "nodes beside q(x) = μp0[√(1 − x²/a²) − (c/a)√(1 − x²/c²)] and Hertz's p, evaluated at the measured P and Q. In the slip zones q = μp, so q/(μp0) lies on p/p0.";
+  $("cm-ratio-out").textContent = m.ratio.toFixed(3);
+  $("cm-ratio-out").dataset.value = String(m.ratio);
+  table([
+    ["Q/(μP)", "ratio", m.ratio], ["c/a (FE: half the stick length / a)", "c_over_a", m.c / cf.a],
+    ["c/a (closed form √(1 − Q/μP))", "c_over_a_closed", cf.c / cf.a],
+    ["half-width a (FE), mm", "a", m.a], ["a (Hertz at P), mm", "a_hertz", cf.a],
+    ["P (normal reaction), N/mm", "P", m.p], ["Q (tangential reaction), N/mm", "Q", m.q],
+    ["p0 (Hertz), MPa", "p0", cf.p0], ["status", "status", s.status], ["pairs", "pairs", s.pairs],
+  ], null);
+}
+
 function showScene(name) {
   state.scene = name;
   document.querySelectorAll("#scenes button").forEach((b) => b.classList.toggle("active", b.dataset.scene === name));
@@ -345,7 +394,7 @@ async function main() {
   state.bundled = JSON.parse(bundled_json());
   $("eps").max = state.bundled.flagship_eps.length - 1;
   applyUrl();
-  for (const id of ["mu", "ratio", "eps", "load", "variant", "refinement", "force", "level", "zoom"]) {
+  for (const id of ["mu", "ratio", "eps", "load", "variant", "refinement", "force", "level", "zoom", "cm-press", "cm-shear", "cm-level"]) {
     $(id).addEventListener("input", () => { state.history = []; update(); });
   }
   $("mag").addEventListener("input", () => { showLabels(); if (state.view) SCENES[state.scene].draw(state.view); });

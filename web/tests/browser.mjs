@@ -8,6 +8,9 @@
 //     1e-12 relative (web/out/reference.json, written in the same run by `web_reference`; see
 //     wasm_matches_native.mjs for why 1e-12 and not bit equality);
 //   * the Hertz scene solves and its half-width equals the native one likewise;
+//   * the Cattaneo–Mindlin scene: the shear slider moved from 0 to 0.3 with the keyboard (twenty
+//     steps, each a solve), a slip zone appears at both ends of the contact (pairs drawn as slip
+//     at x < 0 and at x > 0) and c/a on the page equals the native value to 1e-12;
 //   * no console error and no page error.
 // It measures the update times (performance.now() around solve + drawing, as the page shows
 // them) for each scene and mesh, and saves screenshots to web/out/.
@@ -129,6 +132,48 @@ try {
   const forceMoves = [key("#force", "ArrowLeft"), key("#force", "ArrowRight"), key("#force", "ArrowLeft"), key("#force", "ArrowRight"), key("#force", "ArrowLeft")];
   await measure("hertz L1", forceMoves);
 
+  // Cattaneo–Mindlin: shear from 0 to 0.3 (twenty steps of 0.015); slip at both ends; c/a = native.
+  await page.click('[data-scene="cattaneo_mindlin"]');
+  await page.waitForFunction(() => window.contact2dPage.view && window.contact2dPage.view.measured, { timeout: 60000 });
+  await page.focus("#cm-shear");
+  {
+    const before = await updates();
+    await page.keyboard.press("Home");
+    await page.waitForFunction((n) => window.contact2dPage.updates > n, { timeout: 30000 }, before);
+  }
+  const slipEnds = () => page.evaluate(() => {
+    const v = window.contact2dPage.view;
+    const ends = { left: 0, right: 0, stick: 0 };
+    v.pairs.master.forEach((node, k) => {
+      const s = v.pairs.state[k];
+      if (s === "stick") ends.stick += 1;
+      if (s.startsWith("slip")) ends[v.mesh.points[2 * node] < 0 ? "left" : "right"] += 1;
+    });
+    return ends;
+  });
+  const atZero = await slipEnds();
+  check((await page.$eval("#cm-shear", (s) => s.value)) === "0", `shear 0: ${atZero.stick} stick, ` +
+    `${atZero.left} + ${atZero.right} slip pairs (left + right)`);
+  for (let i = 0; i < 20; i++) {
+    const before = await updates();
+    await page.keyboard.press("ArrowRight");
+    await page.waitForFunction((n) => window.contact2dPage.updates > n, { timeout: 30000 }, before);
+  }
+  check((await page.$eval("#cm-shear", (s) => s.value)) === "0.3", "the shear slider reads 0.3");
+  const sheared = await slipEnds();
+  check(sheared.left > 0 && sheared.right > 0 && sheared.stick > 0,
+    `shear 0.3: slip at both ends (${sheared.left} left, ${sheared.right} right) around ${sheared.stick} stick pairs`);
+  const cm = findCase("cattaneo_mindlin", { press: 1, shear: 0.3, level: "L0" });
+  const cNative = cm.measured.c / cm.closed_form.a;
+  const cPage = Number(await cell("c_over_a"));
+  check(close(cPage, cNative), `Cattaneo–Mindlin L0: page c/a = ${cPage} equals native ${cNative} to 1e-12`);
+  const ratio = Number(await page.$eval("#cm-ratio-out", (o) => o.dataset.value));
+  check(close(ratio, cm.measured.ratio), `the page shows Q/(μP) = ${ratio.toFixed(4)} (native ${cm.measured.ratio.toFixed(4)})`);
+  console.log(`  c/a: FE ${cPage.toFixed(4)}, closed form ${Number(await cell("c_over_a_closed")).toFixed(4)}`);
+  await page.screenshot({ path: join(out, "cattaneo_mindlin_L0.png"), fullPage: true });
+  const shearMoves = [key("#cm-shear", "ArrowLeft"), key("#cm-shear", "ArrowRight"), key("#cm-shear", "ArrowLeft"), key("#cm-shear", "ArrowRight"), key("#cm-shear", "ArrowLeft")];
+  await measure("cattaneo_mindlin L0 (press + shear: 2 steps)", shearMoves);
+
   // The loading history mode draws l(w), b(w) over ten steps.
   await page.click('[data-scene="flagship"]');
   await page.select("#refinement", "16");
@@ -142,7 +187,7 @@ try {
   for (const [label, t] of Object.entries(timings)) {
     console.log(`  ${label}: solve ${t.solve_ms.toFixed(1)} ms, total ${t.total_ms.toFixed(1)} ms (${t.n} updates)`);
   }
-  console.log(`screenshots: ${join(out, "flagship_mu03.png")}, hertz_L1.png, history.png`);
+  console.log(`screenshots: ${join(out, "flagship_mu03.png")}, hertz_L1.png, cattaneo_mindlin_L0.png, history.png`);
 } finally {
   await browser.close();
   server.kill();

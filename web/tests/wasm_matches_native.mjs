@@ -13,6 +13,9 @@
 //       field, not to a value that happens to cross zero inside it);
 //     - a contour's tractions p and q relative to the largest of both: they are the two
 //       components of one traction vector (without friction q is round-off of p, ~1e-17);
+//     - an interface's normal_force Σλ and tangential_force Στ relative to the larger of both:
+//       they are the two components of one interface force (pressed without shear, Στ is
+//       round-off of Σλ, ~1e-5 of it on an asymmetric mesh);
 //     - the bodies' strain energies relative to the work W of the same step: the library
 //       certifies energies by the balance W = Σ Φ + Φ_f, relative to W; a floating body's
 //       energy ½ uᵀK u is computed from a displacement dominated by its rigid motion, whose
@@ -35,7 +38,7 @@ import { dirname, join } from "node:path";
 
 const here = dirname(fileURLToPath(import.meta.url));
 const web = join(here, "..");
-const { initSync, solve_flagship_json, solve_hertz_json } = await import(join(web, "pkg/contact2d_web.js"));
+const { initSync, solve_flagship_json, solve_hertz_json, solve_cattaneo_mindlin_json } = await import(join(web, "pkg/contact2d_web.js"));
 initSync({ module: readFileSync(join(web, "pkg/contact2d_web_bg.wasm")) });
 
 const RELATIVE = 1e-12;
@@ -94,6 +97,8 @@ function compare(path, a, b, scale = 0) {
       if (path.endsWith(".kkt") && k !== "floating_iterations") continue;
       let scale = 0;
       if ((k === "p" || k === "q") && Array.isArray(a.p) && Array.isArray(a.q)) scale = magnitude(a.p, a.q);
+      if ((k === "normal_force" || k === "tangential_force") && typeof a.normal_force === "number"
+        && typeof a.tangential_force === "number") scale = magnitude([a.normal_force, a.tangential_force]);
       const work = typeof a.work === "number" ? a.work : Array.isArray(a.steps) ? a.steps.at(-1)?.work : undefined;
       if (k === "energies" && typeof work === "number") scale = Math.abs(work);
       compare(`${path}.${k}`, a[k], b[k], scale);
@@ -108,7 +113,7 @@ function compare(path, a, b, scale = 0) {
   if (a !== b) failures.push(`${path}: native ${JSON.stringify(a)}, wasm ${JSON.stringify(b)}`);
 }
 
-const solvers = { flagship: solve_flagship_json, hertz: solve_hertz_json };
+const solvers = { flagship: solve_flagship_json, hertz: solve_hertz_json, cattaneo_mindlin: solve_cattaneo_mindlin_json };
 for (const [scene, cases] of Object.entries(reference)) {
   for (const { params, view } of cases) {
     const t0 = performance.now();

@@ -1,8 +1,9 @@
 //! The meshes and scene files compiled into the module (the page has no file system): the
 //! flagship's teaching meshes (N = 16 and 32 elements along the half hole edge, one per bundled
 //! clearance ε), the coarsest NAFEMS Hertz mesh L1 (L2 takes over a second per
-//! solve in the browser, too slow to follow a slider), and the bundled scene files that set up the
-//! published cases and the Hertz benchmark.
+//! solve in the browser, too slow to follow a slider), the Cattaneo–Mindlin teaching mesh L0 (4
+//! cells across the contact half-width; the gallery's L1 has 8), and the bundled scene files that
+//! set up the published cases, the Hertz benchmark and Cattaneo–Mindlin.
 
 use crate::WebError;
 
@@ -17,6 +18,12 @@ pub const HERTZ_LEVELS: [&str; 1] = ["L1"];
 
 /// The Hertz scene file `scenes/generic/cylinder_on_block.toml`.
 pub const HERTZ_SCENE: &str = include_str!("../../../scenes/generic/cylinder_on_block.toml");
+
+/// The mesh levels of the bundled Cattaneo–Mindlin meshes (`meshes/generic/cattaneo_mindlin_*.msh`).
+pub const CATTANEO_MINDLIN_LEVELS: [&str; 1] = ["L0"];
+
+/// The Cattaneo–Mindlin scene file `scenes/generic/cattaneo_mindlin.toml`.
+pub const CATTANEO_MINDLIN_SCENE: &str = include_str!("../../../scenes/generic/cattaneo_mindlin.toml");
 
 /// The bundled flagship scene files of the published cases, as (scene name, TOML text).
 pub const PUBLISHED_SCENES: [(&str, &str); 5] = [
@@ -85,6 +92,10 @@ const FLAGSHIP_MESHES: [(f64, u32, &str, &[u8]); 10] = [
 const HERTZ_MESHES: [(&str, &str, &[u8]); 1] =
     [("L1", "cylinder_on_block_L1.msh", include_bytes!("../../../meshes/generic/cylinder_on_block_L1.msh"))];
 
+/// (level, file name, bytes) of every bundled Cattaneo–Mindlin mesh.
+const CATTANEO_MINDLIN_MESHES: [(&str, &str, &[u8]); 1] =
+    [("L0", "cattaneo_mindlin_L0.msh", include_bytes!("../../../meshes/generic/cattaneo_mindlin_L0.msh"))];
+
 /// A bundled mesh file: its name (as in `meshes/`) and its bytes.
 #[derive(Debug, Clone, Copy)]
 pub struct BundledMesh {
@@ -118,6 +129,18 @@ pub fn hertz_mesh(level: &str) -> Result<BundledMesh, WebError> {
         .ok_or_else(|| WebError::NoMesh(format!("no bundled Hertz mesh at level {level:?} (L1)")))
 }
 
+/// The Cattaneo–Mindlin mesh of refinement `level` ("L0").
+///
+/// # Errors
+/// [`WebError::NoMesh`] for another level.
+pub fn cattaneo_mindlin_mesh(level: &str) -> Result<BundledMesh, WebError> {
+    CATTANEO_MINDLIN_MESHES
+        .iter()
+        .find(|m| m.0 == level)
+        .map(|m| BundledMesh { file: m.1, bytes: m.2 })
+        .ok_or_else(|| WebError::NoMesh(format!("no bundled Cattaneo–Mindlin mesh at level {level:?} (L0)")))
+}
+
 #[cfg(test)]
 #[allow(clippy::unwrap_used)]
 mod tests {
@@ -135,5 +158,9 @@ mod tests {
         assert!(matches!(flagship_mesh(0.01, 16), Err(WebError::NoMesh(_))));
         assert!(matches!(flagship_mesh(0.0, 64), Err(WebError::NoMesh(_))));
         assert!(matches!(hertz_mesh("L3"), Err(WebError::NoMesh(_))));
+        for level in CATTANEO_MINDLIN_LEVELS {
+            assert!(cattaneo_mindlin_mesh(level).unwrap().bytes.starts_with(b"$MeshFormat"));
+        }
+        assert!(matches!(cattaneo_mindlin_mesh("L1"), Err(WebError::NoMesh(_))));
     }
 }

@@ -57,7 +57,15 @@ impl HertzParams {
                 reason: format!("F = {} must be finite and > 0", self.force),
             }));
         }
-        let overrides = [format!("mesh={mesh:?}"), format!("load.cylinder_top.force=[0.0, {:?}]", -0.5 * self.force)];
+        // Node-to-segment on the page: with segment-to-segment the roller's proximal iterations
+        // amplify the one-ulp differences of the platforms' `hypot` (wasm's libm against glibc)
+        // to 2.8e-12, past the page's 1e-12 agreement with native; on L1 node-to-segment's
+        // profile is within 1.6 % of p0 (docs/verification.md) and agrees to 5e-13.
+        let overrides = [
+            format!("mesh={mesh:?}"),
+            format!("load.cylinder_top.force=[0.0, {:?}]", -0.5 * self.force),
+            "contact.hertz.pairing=\"node_to_segment\"".to_string(),
+        ];
         Ok(GenericScene::from_toml_str(HERTZ_SCENE, scene_file, &overrides)?)
     }
 }

@@ -13,11 +13,14 @@
 //! solve_hertz({"force": 35000, "level": "L1"})
 //!   → {summary (generic report with the interface profile), closed_form {a, p0, x, pressure},
 //!      pairs, mesh}
+//! solve_cattaneo_mindlin({"press": 1, "shear": 0.293, "level": "L0"})
+//!   → {summary, measured {P, Q, Q/(μP), a, c}, closed_form {a, p0, c, x, pressure, shear},
+//!      pairs, mesh}
 //! ```
 //! The scenes are the facade's own ([`contact2d::run::solve_scene_on_mesh`],
 //! [`contact2d::generic::solve_generic_on_mesh`]) on meshes compiled into the module
-//! ([`bundled`]): the numbers are those of `contact2d run` on the same files. A new scene (e.g.
-//! Cattaneo–Mindlin) is one module with its parameters, its solve and its view, plus one
+//! ([`bundled`]): the numbers are those of `contact2d run` on the same files. A new scene is one
+//! module with its parameters, its solve and its view, plus one
 //! exported function here.
 //!
 //! The module builds natively too (the tests, and the `web_reference` binary that writes the
@@ -26,10 +29,12 @@
 use wasm_bindgen::prelude::*;
 
 pub mod bundled;
+pub mod cattaneo_mindlin;
 pub mod flagship;
 pub mod hertz;
 pub mod view;
 
+pub use cattaneo_mindlin::{CattaneoMindlinParams, CattaneoMindlinView, solve_cattaneo_mindlin};
 pub use flagship::{FlagshipParams, FlagshipView, solve_flagship};
 pub use hertz::{HertzParams, HertzView, solve_hertz};
 
@@ -78,6 +83,16 @@ pub fn hertz_json(params: &str) -> Result<String, WebError> {
     Ok(serde_json::to_string(&solve_hertz(&params)?)?)
 }
 
+/// Solves the Cattaneo–Mindlin scene for the JSON [`CattaneoMindlinParams`] and returns the JSON
+/// [`CattaneoMindlinView`].
+///
+/// # Errors
+/// [`WebError`] for bad parameters or a failed solve.
+pub fn cattaneo_mindlin_json(params: &str) -> Result<String, WebError> {
+    let params: CattaneoMindlinParams = serde_json::from_str(params)?;
+    Ok(serde_json::to_string(&solve_cattaneo_mindlin(&params)?)?)
+}
+
 /// The page's entry point for the flagship: [`flagship_json`] with the error as a JavaScript
 /// `Error`.
 ///
@@ -98,14 +113,26 @@ pub fn solve_hertz_json(params: &str) -> Result<String, JsError> {
     hertz_json(params).map_err(|e| JsError::new(&e.to_string()))
 }
 
+/// The page's entry point for the Cattaneo–Mindlin scene: [`cattaneo_mindlin_json`] with the
+/// error as a JavaScript `Error`.
+///
+/// # Errors
+/// The [`WebError`]'s message.
+#[wasm_bindgen]
+pub fn solve_cattaneo_mindlin_json(params: &str) -> Result<String, JsError> {
+    cattaneo_mindlin_json(params).map_err(|e| JsError::new(&e.to_string()))
+}
+
 /// The bundled meshes and the page's fixed choices, as JSON: `{"flagship_eps": [...],
-/// "flagship_refinements": [...], "hertz_levels": [...], "clearance_per_eps": ω}`.
+/// "flagship_refinements": [...], "hertz_levels": [...], "cattaneo_mindlin_levels": [...],
+/// "clearance_per_eps": ω}`.
 #[wasm_bindgen]
 pub fn bundled_json() -> String {
     serde_json::json!({
         "flagship_eps": bundled::FLAGSHIP_EPS,
         "flagship_refinements": bundled::FLAGSHIP_REFINEMENTS,
         "hertz_levels": bundled::HERTZ_LEVELS,
+        "cattaneo_mindlin_levels": bundled::CATTANEO_MINDLIN_LEVELS,
         "clearance_per_eps": flagship::CLEARANCE_PER_EPS,
     })
     .to_string()

@@ -4,7 +4,8 @@
 //!
 //! ```text
 //! {"flagship": [{"params": {...}, "view": FlagshipView}, ...],
-//!  "hertz":    [{"params": {...}, "view": HertzView}, ...]}
+//!  "hertz":    [{"params": {...}, "view": HertzView}, ...],
+//!  "cattaneo_mindlin": [{"params": {...}, "view": CattaneoMindlinView}, ...]}
 //! ```
 //! `web/tests/wasm_matches_native.mjs` solves the same params in the module (meshes compiled
 //! in, parsed from bytes) and requires every number to agree to 1e-12 relative.
@@ -18,7 +19,8 @@ use serde_json::{Value, json};
 
 use contact2d::generic::solve_generic;
 use contact2d::run::solve_scene;
-use contact2d_web::bundled::{flagship_mesh, hertz_mesh};
+use contact2d_web::bundled::{cattaneo_mindlin_mesh, flagship_mesh, hertz_mesh};
+use contact2d_web::cattaneo_mindlin::{CattaneoMindlinParams, cattaneo_mindlin_view};
 use contact2d_web::flagship::{FlagshipParams, flagship_view};
 use contact2d_web::hertz::{HertzParams, hertz_view};
 
@@ -50,6 +52,12 @@ fn hertz_cases() -> Vec<Value> {
     vec![json!({"force": 35000.0, "level": "L1"}), json!({"force": 12000.0, "level": "L1"})]
 }
 
+/// The Cattaneo–Mindlin cases: the page's default (the scene's press, shear 0.3: Q/(μP) ≈ 0.5,
+/// where the browser test moves the slider to) and a lighter press sheared less.
+fn cattaneo_mindlin_cases() -> Vec<Value> {
+    vec![json!({"press": 1.0, "shear": 0.3, "level": "L0"}), json!({"press": 0.75, "shear": 0.18, "level": "L0"})]
+}
+
 fn main() -> anyhow::Result<()> {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
     let mut flagship = vec![];
@@ -69,6 +77,15 @@ fn main() -> anyhow::Result<()> {
         let outcome = solve_generic(&scene, &mut |_, _| {}).with_context(|| format!("{value}"))?;
         hertz.push(json!({"params": value, "view": hertz_view(&params, file, &outcome)}));
     }
-    println!("{}", json!({"flagship": flagship, "hertz": hertz}));
+    let mut cattaneo_mindlin = vec![];
+    for value in cattaneo_mindlin_cases() {
+        let params: CattaneoMindlinParams = serde_json::from_value(value.clone())?;
+        let file = cattaneo_mindlin_mesh(&params.level)?.file;
+        let scene_file = root.join("scenes/generic/cattaneo_mindlin.toml");
+        let scene = params.scene(&format!("../../meshes/generic/{file}"), Path::new(&scene_file))?;
+        let outcome = solve_generic(&scene, &mut |_, _| {}).with_context(|| format!("{value}"))?;
+        cattaneo_mindlin.push(json!({"params": value, "view": cattaneo_mindlin_view(file, &outcome)?}));
+    }
+    println!("{}", json!({"flagship": flagship, "hertz": hertz, "cattaneo_mindlin": cattaneo_mindlin}));
     Ok(())
 }
