@@ -15,6 +15,23 @@ pub enum PairState {
     SlipNegative,
 }
 
+impl PairState {
+    /// The state a semi-smooth (active-set) update gives a pair from its trial forces: free when
+    /// the trial normal force `σ ≤ 0`; stuck when it has no tangential law (`frictional` false)
+    /// or `|θ| ≤ μ σ`; else slipping against the trial tangential force `θ`.
+    pub fn from_trial(sigma: f64, theta: f64, mu: f64, frictional: bool) -> PairState {
+        if sigma <= 0.0 {
+            PairState::Free
+        } else if !frictional || theta.abs() <= mu * sigma {
+            PairState::Stick
+        } else if theta > 0.0 {
+            PairState::SlipNegative
+        } else {
+            PairState::SlipPositive
+        }
+    }
+}
+
 /// How an algorithm ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum ContactStatus {

@@ -263,16 +263,7 @@ impl<'a> Equations<'a> {
         (0..self.problem.num_pairs())
             .map(|k| {
                 let (sigma, theta) = self.multipliers(x, k);
-                let mu = self.problem.friction[k];
-                if sigma <= 0.0 {
-                    PairState::Free
-                } else if !self.frictional[k] || theta.abs() <= mu * sigma {
-                    PairState::Stick
-                } else if theta > 0.0 {
-                    PairState::SlipNegative
-                } else {
-                    PairState::SlipPositive
-                }
+                PairState::from_trial(sigma, theta, self.problem.friction[k], self.frictional[k])
             })
             .collect()
     }

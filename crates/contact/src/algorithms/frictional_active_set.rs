@@ -152,13 +152,7 @@ fn update_state(
                 return PairState::Stick;
             }
             let theta = tau[k] - c_t * (s[k] - start.slip[k]);
-            if theta.abs() <= mu * normal {
-                PairState::Stick
-            } else if theta > 0.0 {
-                PairState::SlipNegative
-            } else {
-                PairState::SlipPositive
-            }
+            PairState::from_trial(normal, theta, mu, true)
         })
         .collect()
 }

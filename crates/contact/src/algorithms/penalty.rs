@@ -261,15 +261,7 @@ impl<'a> PenaltyLaw<'a> {
         (0..self.problem.num_pairs())
             .map(|k| {
                 let (lambda, theta) = self.trial(u, k);
-                if lambda <= 0.0 {
-                    PairState::Free
-                } else if !self.frictional[k] || theta.abs() <= self.problem.friction[k] * lambda {
-                    PairState::Stick
-                } else if theta > 0.0 {
-                    PairState::SlipNegative
-                } else {
-                    PairState::SlipPositive
-                }
+                PairState::from_trial(lambda, theta, self.problem.friction[k], self.frictional[k])
             })
             .collect()
     }
