@@ -5,30 +5,28 @@
 //! gap = g0 + w h + C_NN λ + C_NT τ,   h = B_N,f u0 + B_N,c u_c,   C = B K⁻¹ Bᵀ
 //! ```
 //!
-//! The contact DOFs are ordered last in the Cholesky factorisation of `K_ff`
-//! ([`crate::ContactProblem`]), so with `P K Pᵀ = L Lᵀ`, `L = [L_aa 0; L_ba L_bb]` and `B`
-//! non-zero only on those DOFs (`B P ᵀ = [0 B_b]`):
+//! `K_ff` is factored bordered by the pair rows ([`crate::ContactProblem`]):
 //!
 //! ```text
-//! L⁻¹ P Bᵀ = [0; Y],   Y = L_bb⁻¹ B_bᵀ   (dense triangular solve of the size of the contact DOFs)
-//! C = B K⁻¹ Bᵀ = Yᵀ Y                    (symmetric by construction)
+//! P [K Bᵀ; B 0] Pᵀ = L D Lᵀ,  the rows last:  L_bb D_b L_bbᵀ = −B K⁻¹ Bᵀ = −C
+//! C = W Wᵀ,  W = L_bb |D_b|^½             (dense, of the size of the rows: 2 per pair)
 //! ```
 //!
-//! The condensation costs the factorisation (done once, in the problem) plus dense work of the
-//! size of the interface; the full displacement field is recovered once at the end by one solve.
-//! Without friction (every μ = 0) the tangential rows play no part: the `C_·T`, `C_T·` blocks
-//! are then empty (0 columns). If a pair touches a DOF outside the trailing block (a problem
-//! rebuilt with different contact nodes), the compliances are computed by multi-RHS solves.
+//! (`contact2d_fem::CholeskySolver::factor_with_constraints`.) The condensation costs the
+//! factorisation (done once, in the problem) plus dense work of the size of the interface; the
+//! full displacement field is recovered once at the end by one solve. Without friction (every
+//! μ = 0) the tangential rows play no part: the `C_·T`, `C_T·` blocks are then empty (0
+//! columns). If the rows were dependent (the factor has none), the compliances are computed by
+//! multi-RHS solves.
 
 use contact2d_fem::parallelism;
 use faer::Mat;
 use faer::linalg::matmul::matmul;
-use faer::linalg::triangular_solve::solve_lower_triangular_in_place;
 use nalgebra::DMatrix;
 
 use contact2d_fem::CholeskySolver;
 
-use crate::problem::{ContactProblem, PairRow};
+use crate::problem::{ContactProblem, PairRow, condensed_rows};
 
 /// Compliances of the contact pairs.
 #[derive(Debug, Clone)]
@@ -76,34 +74,40 @@ fn to_dmatrix(m: &Mat<f64>) -> DMatrix<f64> {
     DMatrix::from_fn(m.nrows(), m.ncols(), |i, j| m[(i, j)])
 }
 
-/// `Y = L_bb⁻¹ B_bᵀ` for the normal and tangential rows, or `None` if some row touches a DOF
-/// outside the trailing block.
-fn trailing_solve(problem: &ContactProblem, normal: &[PairRow], tangent: &[PairRow]) -> Option<(Mat<f64>, Mat<f64>)> {
-    let last = problem.interface_dofs();
-    let t = last.len();
-    let mut position = vec![usize::MAX; problem.system.dofs.num_free()];
-    for (k, &i) in last.iter().enumerate() {
-        position[i] = k;
+/// The blocks `(C_NN, C_NT, C_TN, C_TT)` of `C = B K⁻¹ Bᵀ` from the factor bordered by the
+/// problem's rows, or `None` if the factor has no rows (they were dependent). The rows left out
+/// of the factor (a negligible free part, [`condensed_rows`]) get theirs by one solve each.
+fn condensed_blocks(problem: &ContactProblem, tangent: &[PairRow]) -> Option<[Mat<f64>; 4]> {
+    let (index, rows) = condensed_rows(&problem.normal_rows, &problem.tangent_rows);
+    if problem.solver.constraint_count() != rows.len() {
+        return None;
     }
-    let columns = |rows: &[PairRow]| -> Option<Mat<f64>> {
-        let mut b = Mat::zeros(t, rows.len());
-        for (k, row) in rows.iter().enumerate() {
-            for &(i, v) in &row.free {
-                let p = *position.get(i)?;
-                if p == usize::MAX {
-                    return None;
-                }
-                b[(p, k)] += v;
-            }
+    let factored = problem.solver.condensed()?;
+    let m = problem.normal_rows.len();
+    let all: Vec<&PairRow> = problem.normal_rows.iter().chain(&problem.tangent_rows).collect();
+    let mut c = Mat::zeros(all.len(), all.len());
+    for (p, &i) in index.iter().enumerate() {
+        for (q, &j) in index.iter().enumerate() {
+            c[(i, j)] = factored[(p, q)];
         }
-        Some(b)
+    }
+    let mut in_factor = vec![false; all.len()];
+    index.iter().for_each(|&i| in_factor[i] = true);
+    let n = problem.system.dofs.num_free();
+    for (i, row) in all.iter().enumerate().filter(|(i, r)| !in_factor[*i] && !r.free.is_empty()) {
+        let mut b = vec![0.0; n];
+        row.free.iter().for_each(|&(d, v)| b[d] += v);
+        let z = problem.solver.solve(&b);
+        for (j, other) in all.iter().enumerate() {
+            let v: f64 = other.free.iter().map(|&(d, w)| w * z[d]).sum();
+            (c[(i, j)], c[(j, i)]) = (v, v);
+        }
+    }
+    let t = tangent.len();
+    let block = |r: std::ops::Range<usize>, k: std::ops::Range<usize>| {
+        c.as_ref().submatrix(r.start, k.start, r.len(), k.len()).to_owned()
     };
-    let (mut yn, mut yt) = (columns(normal)?, columns(tangent)?);
-    let l = problem.solver.trailing_block(t)?;
-    let par = parallelism();
-    solve_lower_triangular_in_place(l.as_ref(), yn.as_mut(), par);
-    solve_lower_triangular_in_place(l.as_ref(), yt.as_mut(), par);
-    Some((yn, yt))
+    Some([block(0..m, 0..m), block(0..m, m..m + t), block(m..m + t, 0..m), block(m..m + t, m..m + t)])
 }
 
 /// `A B` with the fixed [`parallelism`] (faer's `*` reads the global setting, which follows the
@@ -116,18 +120,15 @@ fn product(a: faer::MatRef<'_, f64>, b: &Mat<f64>) -> Mat<f64> {
 
 impl Interface {
     /// Condenses `problem` onto its pairs with the existing factorisation: one solve for `u0`
-    /// and a dense triangular solve on the factor's trailing block.
+    /// and `C = W Wᵀ` from the last block of the factor bordered by the rows.
     pub fn new(problem: &ContactProblem) -> Interface {
         let n = problem.system.dofs.num_free();
         let u0 = problem.solver.solve(&problem.pattern_rhs);
         let frictional = problem.is_frictional();
         let normal = &problem.normal_rows[..];
         let tangent: &[PairRow] = if frictional { &problem.tangent_rows } else { &[] };
-        let (c_nn, c_nt, c_tn, c_tt) = match trailing_solve(problem, normal, tangent) {
-            Some((yn, yt)) => {
-                let (ynt, ytt) = (yn.transpose(), yt.transpose());
-                (product(ynt, &yn), product(ynt, &yt), product(ytt, &yn), product(ytt, &yt))
-            }
+        let (c_nn, c_nt, c_tn, c_tt) = match condensed_blocks(problem, tangent) {
+            Some([c_nn, c_nt, c_tn, c_tt]) => (c_nn, c_nt, c_tn, c_tt),
             None => {
                 let b_n = rows_to_columns(n, normal);
                 let b_t = rows_to_columns(n, tangent);

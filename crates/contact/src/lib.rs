@@ -51,7 +51,7 @@ pub use interface::Interface;
 pub use loading::LoadSchedule;
 pub use pairing::{ContactPair, node_to_node_targets, nodes_face_each_other, pair_contours, tributary_weights};
 pub use post::{contact_end, contact_end_from_pressure, pair_tractions, stick_end};
-pub use problem::{BuildTimes, ContactProblem, LoadPattern, PairRow};
+pub use problem::{BuildTimes, ContactProblem, LoadPattern, PairRow, SparseRow, condensed_rows};
 pub use report::{RawSolution, fem_solution, finish_from_displacement, finish_from_forces};
 pub use segment_to_segment::{IntegratedRows, RowCoefficient, pair_segments};
 pub use solution::{ContactSolution, ContactStatus, IterationRecord, KktResiduals, PairState, StepStart, Violation};

@@ -19,7 +19,7 @@
 //! variant 1 and γ2 = 1/γ in variant 2.
 
 use contact2d_fem::Model;
-use contact2d_mesh::{Contour, NodeId};
+use contact2d_mesh::{Contour, ContourEdge, NodeId};
 
 use crate::error::ContactError;
 use crate::segment_to_segment::IntegratedRows;
@@ -122,7 +122,23 @@ fn closest_point(slave: &Contour, points: &[[f64; 2]], x: [f64; 2]) -> (usize, f
 /// The edge of `slave` and the reference coordinate of the point closest to `x`.
 pub(crate) fn closest_point_unsnapped(slave: &Contour, points: &[[f64; 2]], x: [f64; 2]) -> (usize, f64) {
     let mut best = (0, 0.0, f64::INFINITY);
+    // An edge whose bounding box is farther than the nearest edge node (+ a margin far above the
+    // 1e-15 tie tolerance below) can be neither the answer nor change it: skipped unsolved.
+    // (Distances are those of `Contour::edge_point`, on the contour's own points.)
+    let own = slave.points();
+    let boxes: Vec<[f64; 4]> = slave.edges.iter().map(|e| edge_box(e, own)).collect();
+    let nearest_node = slave
+        .edges
+        .iter()
+        .flat_map(|e| e.nodes.iter().take(if e.quadratic { 3 } else { 2 }))
+        .map(|n| (own[n.0][0] - x[0]).hypot(own[n.0][1] - x[1]))
+        .fold(f64::INFINITY, f64::min);
+    let cutoff = nearest_node * (1.0 + 1e-9) + 1e-300;
     for (i, edge) in slave.edges.iter().enumerate() {
+        let [x0, y0, x1, y1] = boxes[i];
+        if (x0 - x[0]).max(x[0] - x1).max(0.0).hypot((y0 - x[1]).max(x[1] - y1).max(0.0)) > cutoff {
+            continue;
+        }
         // x''(ξ) is constant: Σ N''_a y_a with N'' = (1, 1, -2) for Line3, zero for Line2.
         let dd = if edge.quadratic {
             let [a, b, m] = edge.nodes.map(|n| points[n.0]);
@@ -154,6 +170,20 @@ pub(crate) fn closest_point_unsnapped(slave: &Contour, points: &[[f64; 2]], x: [
         }
     }
     (best.0, best.1)
+}
+
+/// A box holding the edge: its end nodes, and for a Line3 the control point `2 m − (a + b)/2`
+/// of its Bézier form (the curve lies in the convex hull of those).
+fn edge_box(edge: &ContourEdge, points: &[[f64; 2]]) -> [f64; 4] {
+    let (a, b) = (points[edge.nodes[0].0], points[edge.nodes[1].0]);
+    let mut pts = vec![a, b];
+    if edge.quadratic {
+        let m = points[edge.nodes[2].0];
+        pts.push([2.0 * m[0] - 0.5 * (a[0] + b[0]), 2.0 * m[1] - 0.5 * (a[1] + b[1])]);
+    }
+    pts.iter().fold([f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY], |[x0, y0, x1, y1], p| {
+        [x0.min(p[0]), y0.min(p[1]), x1.max(p[0]), y1.max(p[1])]
+    })
 }
 
 /// Whether the nodes of the curves `a` and `b` face each other one to one: the closest point of

@@ -10,9 +10,7 @@
 //! slave nodes carry `−N_j λ_k n_k`. Rows are split into their free and constrained parts, so a
 //! prescribed displacement (the pulled edge) enters the gap as `w (B_N,c u_c)`.
 
-use contact2d_fem::{
-    CholeskySolver, Component, Dof, DofKind, LinearSystem, Model, Ordering, assemble, fill_reducing_permutation,
-};
+use contact2d_fem::{CholeskySolver, Component, Dof, DofKind, LinearSystem, Model, assemble};
 
 use crate::error::ContactError;
 use crate::pairing::ContactPair;
@@ -42,7 +40,8 @@ pub struct ContactProblem {
     pub model: Model,
     /// Its assembled system.
     pub system: LinearSystem,
-    /// Cholesky factorisation of `K_ff`, computed once.
+    /// Factorisation of `K_ff` bordered by the pair rows ([`condensed_rows`]), computed once:
+    /// solves with `K_ff` and the compliance `C = B K⁻¹ Bᵀ`.
     pub solver: CholeskySolver,
     /// The pairs.
     pub pairs: Vec<ContactPair>,
@@ -70,8 +69,6 @@ pub struct ContactProblem {
     pub stiffness_scale: f64,
     /// Per pair: whether its slave side deforms or is a rigid obstacle.
     slave: Vec<SlaveKind>,
-    /// Number of free DOFs ordered last in the factorisation (the contact DOFs).
-    interface_dofs: usize,
     /// Wall time of assembly (with pairing rows) and of ordering plus factorisation, when built.
     pub build_times: BuildTimes,
 }
@@ -133,23 +130,13 @@ impl ContactProblem {
         let system = assemble(&model)?;
         let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, &slave)?;
         let assembled = clock.elapsed();
-        // The contact DOFs are ordered last: the trailing block of the factor is then the Schur
-        // complement on them, which condenses the bodies onto the contact (crate::interface).
-        let last = interface_dofs(&system, &normal_rows, &tangent_rows);
-        let forward = fill_reducing_permutation(&model, &system.dofs, &system.stiffness, ORDERING, &last)?;
-        let solver = CholeskySolver::factor_with_permutation(&system.stiffness, &forward)?;
+        // K is factored bordered by the pair rows: the factor's last block is then the
+        // compliance C = B K⁻¹ Bᵀ of the bodies at the pairs (crate::interface).
+        let (_, rows) = condensed_rows(&normal_rows, &tangent_rows);
+        let solver = CholeskySolver::factor_with_constraints(&system.stiffness, &rows)?;
         let friction = vec![0.0; pairs.len()];
-        let mut problem = ContactProblem::assemble_parts(
-            model,
-            system,
-            solver,
-            pairs,
-            normal_rows,
-            tangent_rows,
-            friction,
-            slave,
-            last.len(),
-        );
+        let mut problem =
+            ContactProblem::assemble_parts(model, system, solver, pairs, normal_rows, tangent_rows, friction, slave);
         problem.build_times = BuildTimes { assemble: assembled, factor: clock.elapsed() - assembled };
         Ok(problem)
     }
@@ -159,9 +146,8 @@ impl ContactProblem {
     /// morphing); the symbolic factorisation (ordering, elimination tree, supernodes) is reused
     /// and only the numeric factorisation is redone. Gaps are the new pairs' geometric gaps; the
     /// friction coefficients are kept (when the number of pairs is unchanged; else μ = 0); the
-    /// slave side stays deformable or rigid as in `self`. Pairs that touch DOFs outside the
-    /// original contact DOFs are still solved exactly, but [`crate::Interface::new`] then
-    /// condenses them by multi-RHS solves instead of the trailing block of the factor.
+    /// slave side stays deformable or rigid as in `self`. `K` and the new pair rows are
+    /// refactored together (numerically only, while the bordered sparsity pattern is the same).
     ///
     /// # Errors
     /// From assembly or factorisation; [`ContactError::InvalidInput`] if the DOF numbering or
@@ -171,29 +157,20 @@ impl ContactProblem {
         if system.dofs != self.system.dofs {
             return Err(ContactError::InvalidInput("rebuild_moved: the DOF numbering differs".into()));
         }
-        if !self.solver.same_pattern(&system.stiffness) {
+        let (old, new) = (self.system.stiffness.symbolic(), system.stiffness.symbolic());
+        if old.col_ptr() != new.col_ptr() || old.row_idx() != new.row_idx() {
             return Err(ContactError::InvalidInput("rebuild_moved: the stiffness sparsity pattern differs".into()));
         }
-        let mut solver = self.solver.clone();
-        solver.refactor(&system.stiffness)?;
         let slave = if pairs.len() == self.slave.len() {
             self.slave.clone()
         } else {
             vec![self.slave.first().copied().unwrap_or(SlaveKind::Deformable); pairs.len()]
         };
         let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, &slave)?;
+        let mut solver = self.solver.clone();
+        solver.refactor_with_constraints(&system.stiffness, &condensed_rows(&normal_rows, &tangent_rows).1)?;
         let friction = if pairs.len() == self.friction.len() { self.friction.clone() } else { vec![0.0; pairs.len()] };
-        Ok(ContactProblem::assemble_parts(
-            model,
-            system,
-            solver,
-            pairs,
-            normal_rows,
-            tangent_rows,
-            friction,
-            slave,
-            self.interface_dofs,
-        ))
+        Ok(ContactProblem::assemble_parts(model, system, solver, pairs, normal_rows, tangent_rows, friction, slave))
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -206,7 +183,6 @@ impl ContactProblem {
         tangent_rows: Vec<PairRow>,
         friction: Vec<f64>,
         slave: Vec<SlaveKind>,
-        interface_dofs: usize,
     ) -> ContactProblem {
         let pattern_prescribed = system.dofs.prescribed_values().to_vec();
         let nodal = system.load.clone();
@@ -216,16 +192,9 @@ impl ContactProblem {
             .flat_map(|j| k.row_idx_of_col(j).zip(k.val_of_col(j)).filter(move |(i, _)| *i == j).map(|(_, v)| v.abs()))
             .fold(0.0f64, f64::max);
         let gap = pairs.iter().map(|p| p.gap).collect();
-        // A tangential row whose free part is negligible (< 1e-3 of the whole row: the tangent
-        // lies along constrained directions up to the edge geometry's error) has no unknown.
-        let tangential = tangent_rows
-            .iter()
-            .map(|r: &PairRow| {
-                let norm = |v: &[(usize, f64)]| v.iter().map(|(_, c)| c * c).sum::<f64>();
-                let (free, all) = (norm(&r.free), norm(&r.free) + norm(&r.constrained));
-                free > 1e-6 * all
-            })
-            .collect();
+        // A tangential row whose free part is negligible (the tangent lies along constrained
+        // directions up to the edge geometry's error) has no unknown.
+        let tangential = tangent_rows.iter().map(has_free_part).collect();
         ContactProblem {
             model,
             system,
@@ -246,7 +215,6 @@ impl ContactProblem {
             pattern_prescribed,
             stiffness_scale,
             slave,
-            interface_dofs,
             build_times: BuildTimes::default(),
         }
     }
@@ -399,21 +367,7 @@ impl ContactProblem {
     pub fn is_gapless(&self) -> bool {
         self.gap.iter().all(|g| *g == 0.0)
     }
-
-    /// The free DOFs ordered last in the factorisation, in that order: the contact DOFs, whose
-    /// Schur complement is the factor's trailing block.
-    pub fn interface_dofs(&self) -> &[usize] {
-        match self.solver.permutation() {
-            Some(p) => &p[p.len() - self.interface_dofs.min(p.len())..],
-            None => &[],
-        }
-    }
 }
-
-/// The fill-reducing ordering of contact problems: AMD (with the contact DOFs last) fills 25–32 %
-/// less than the geometric nested dissection on the graded plate-with-insert meshes
-/// (docs/benchmarks.md, "Contact solves").
-const ORDERING: Ordering = Ordering::Amd;
 
 /// One named load pattern: its right-hand side over free DOFs and its prescribed values.
 ///
@@ -455,24 +409,31 @@ fn pair_rows(
     Ok((normal_rows, tangent_rows))
 }
 
-/// Every free DOF of every node that a pair row touches, in order of first appearance.
-fn interface_dofs(system: &LinearSystem, normal: &[PairRow], tangent: &[PairRow]) -> Vec<usize> {
-    let dofs = &system.dofs;
-    let mut seen = vec![false; dofs.num_free()];
-    let mut out = vec![];
-    for row in normal.iter().chain(tangent) {
-        for &(i, _) in &row.free {
-            let node = dofs.free_dofs()[i].node();
-            for c in [Component::X, Component::Y] {
-                if let DofKind::Free(j) = dofs.kind(Dof::of(node, c))
-                    && !std::mem::replace(&mut seen[j], true)
-                {
-                    out.push(j);
-                }
-            }
-        }
-    }
-    out
+/// A row's free part: `(free index, coefficient)`.
+pub type SparseRow<'a> = &'a [(usize, f64)];
+
+/// The rows factored with `K` (their free parts): every normal row, then every tangential row,
+/// except rows whose free part is negligible (see [`has_free_part`]): a row along a Dirichlet
+/// direction up to round-off would make the bordered factor's last block singular
+/// ([`crate::Interface`] solves for those rows instead). Returns their indices in
+/// `normal ++ tangent` and the rows.
+pub fn condensed_rows<'a>(normal: &'a [PairRow], tangent: &'a [PairRow]) -> (Vec<usize>, Vec<SparseRow<'a>>) {
+    normal
+        .iter()
+        .chain(tangent)
+        .enumerate()
+        .filter(|(_, r)| has_free_part(r))
+        .map(|(i, r)| (i, r.free.as_slice()))
+        .unzip()
+}
+
+/// Whether a row's free part is more than round-off: `|free|² > 1e-6 |row|²` (a free part
+/// below 1e-3 of the whole row is the edge geometry's error with the row along constrained
+/// directions).
+pub(crate) fn has_free_part(row: &PairRow) -> bool {
+    let norm = |v: &[(usize, f64)]| v.iter().map(|(_, c)| c * c).sum::<f64>();
+    let free = norm(&row.free);
+    free > 0.0 && free > 1e-6 * (free + norm(&row.constrained))
 }
 
 /// Whether the slave side deforms or is a rigid obstacle.

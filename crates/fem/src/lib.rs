@@ -5,6 +5,7 @@
 //!   → assemble (parallel, Dirichlet eliminated, K_ff lower triangle in faer CSC)
 //!   → fill_reducing_permutation (AMD or nested dissection, chosen DOFs last; optional)
 //!   → CholeskySolver::factor / factor_with_permutation (symbolic analysis kept for refactoring)
+//!     or factor_with_constraints (K bordered by rows B: solves with K and C = B K⁻¹ Bᵀ)
 //!   → Solution (displacements, reactions) → strain_energy, nodal_stresses, stresses_along_curve
 //! ```
 //!
@@ -12,6 +13,7 @@
 //! A unit square of Quad4 pulled by a prescribed displacement: see `tests/` and the README.
 
 pub mod assembly;
+mod constrained;
 pub mod dof;
 pub mod error;
 pub mod model;

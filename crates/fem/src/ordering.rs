@@ -273,6 +273,14 @@ fn minimum_degree(graph: &NodeGraph, nodes: &[usize]) -> Vec<usize> {
     order
 }
 
+/// faer's AMD on the pattern of `k` (`forward[new] = old`).
+///
+/// # Errors
+/// [`FemError::Factorization`] if AMD fails (out of memory).
+pub(crate) fn fill_reducing_permutation_of_pattern(k: &Csc) -> Result<Vec<usize>, FemError> {
+    amd_with_last(k, &[])
+}
+
 /// faer's AMD on the DOF graph of `K_ff` without the DOFs `last`, then `last`.
 fn amd_with_last(stiffness: &Csc, last: &[usize]) -> Result<Vec<usize>, FemError> {
     let n = stiffness.nrows();

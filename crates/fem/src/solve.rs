@@ -29,21 +29,24 @@ use crate::ordering::{Ordering, fill_reducing_permutation, is_permutation};
 /// A Cholesky factorisation of a symmetric positive definite matrix stored as its lower triangle.
 #[derive(Clone)]
 pub struct CholeskySolver {
-    symbolic: Arc<SymbolicCholesky<usize>>,
-    values: Arc<Vec<f64>>,
-    dim: usize,
-    pattern: PatternFingerprint,
+    pub(crate) symbolic: Arc<SymbolicCholesky<usize>>,
+    pub(crate) values: Arc<Vec<f64>>,
+    /// Order of `K` (the factored matrix is `K` bordered by `constraints` rows, if any).
+    pub(crate) dim: usize,
+    /// Number of constraint rows factored with `K` (crate::constrained), 0 for `K` alone.
+    pub(crate) constraints: usize,
+    pub(crate) pattern: PatternFingerprint,
 }
 
 /// The shape, number of entries and a hash of the sparsity pattern a factorisation was made for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-struct PatternFingerprint {
+pub(crate) struct PatternFingerprint {
     nnz: usize,
     hash: u64,
 }
 
 impl PatternFingerprint {
-    fn of(k: &Csc) -> PatternFingerprint {
+    pub(crate) fn of(k: &Csc) -> PatternFingerprint {
         let k = k.as_ref();
         // FNV-1a over the column pointers and row indices.
         let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
@@ -63,6 +66,7 @@ impl fmt::Debug for CholeskySolver {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("CholeskySolver")
             .field("dim", &self.dim)
+            .field("constraints", &self.constraints)
             .field("factor_nnz", &self.factor_nnz())
             .field("supernodal", &matches!(self.symbolic.raw(), SymbolicCholeskyRaw::Supernodal(_)))
             .finish()
@@ -104,7 +108,7 @@ fn numeric(symbolic: &SymbolicCholesky<usize>, k: &Csc) -> Result<Vec<f64>, FemE
     Ok(values)
 }
 
-fn check_square(k: &Csc) -> Result<(), FemError> {
+pub(crate) fn check_square(k: &Csc) -> Result<(), FemError> {
     if k.nrows() != k.ncols() {
         return Err(FemError::Factorization(format!("matrix is {}×{}, not square", k.nrows(), k.ncols())));
     }
@@ -167,12 +171,17 @@ impl CholeskySolver {
 
     fn finish(symbolic: SymbolicCholesky<usize>, k: &Csc) -> Result<CholeskySolver, FemError> {
         let values = numeric(&symbolic, k)?;
-        Ok(CholeskySolver {
-            symbolic: Arc::new(symbolic),
-            values: Arc::new(values),
-            dim: k.nrows(),
-            pattern: PatternFingerprint::of(k),
-        })
+        Ok(CholeskySolver::from_parts(symbolic, values, k.nrows(), 0, PatternFingerprint::of(k)))
+    }
+
+    pub(crate) fn from_parts(
+        symbolic: SymbolicCholesky<usize>,
+        values: Vec<f64>,
+        dim: usize,
+        constraints: usize,
+        pattern: PatternFingerprint,
+    ) -> CholeskySolver {
+        CholeskySolver { symbolic: Arc::new(symbolic), values: Arc::new(values), dim, constraints, pattern }
     }
 
     /// Refactors with new values on the same sparsity pattern, reusing the symbolic analysis.
@@ -181,6 +190,11 @@ impl CholeskySolver {
     /// [`FemError::Factorization`] if the pattern differs from the analysed one or the matrix is
     /// not positive definite.
     pub fn refactor(&mut self, k: &Csc) -> Result<(), FemError> {
+        if self.constraints > 0 {
+            return Err(FemError::Factorization(
+                "refactor: the factor has constraint rows (refactor_with_constraints)".into(),
+            ));
+        }
         if !self.same_pattern(k) {
             return Err(FemError::Factorization("refactor: the sparsity pattern changed".into()));
         }
@@ -190,7 +204,10 @@ impl CholeskySolver {
 
     /// Whether `k` has the sparsity pattern this factorisation was analysed for.
     pub fn same_pattern(&self, k: &Csc) -> bool {
-        k.nrows() == self.dim && k.ncols() == self.dim && PatternFingerprint::of(k) == self.pattern
+        self.constraints == 0
+            && k.nrows() == self.dim
+            && k.ncols() == self.dim
+            && PatternFingerprint::of(k) == self.pattern
     }
 
     /// Dimension of the system.
@@ -198,12 +215,14 @@ impl CholeskySolver {
         self.dim
     }
 
-    /// The fill-reducing permutation (`forward[new] = old`), if any.
+    /// The fill-reducing permutation (`forward[new] = old`), if any; with constraint rows, of
+    /// `K` and the rows (indices `dim()..`) together.
     pub fn permutation(&self) -> Option<&[usize]> {
         self.symbolic.perm().map(|p| p.arrays().0)
     }
 
-    /// Number of entries of `L` (lower triangle, diagonal included).
+    /// Number of entries of `L` (lower triangle, diagonal included; with constraint rows, of
+    /// the whole bordered factor).
     pub fn factor_nnz(&self) -> usize {
         match self.symbolic.raw() {
             SymbolicCholeskyRaw::Simplicial(s) => s.len_val(),
@@ -231,6 +250,9 @@ impl CholeskySolver {
     }
 
     fn solve_in_place(&self, x: &mut Mat<f64>) {
+        if self.constraints > 0 && self.solve_k_block_in_place(x) {
+            return;
+        }
         let par = parallelism();
         let req = self.symbolic.solve_in_place_scratch::<f64>(x.ncols(), par);
         // The workspace is of the size of the right-hand side; failing to allocate it is an
@@ -248,7 +270,7 @@ impl CholeskySolver {
     /// the last `t` DOFs of [`CholeskySolver::permutation`]: `L_bb L_bbᵀ` is the Schur
     /// complement of `K` on those DOFs. `None` if `t` exceeds the dimension.
     pub fn trailing_block(&self, t: usize) -> Option<Mat<f64>> {
-        let n = self.dim;
+        let n = self.dim + self.constraints;
         let first = n.checked_sub(t)?;
         let mut l = Mat::zeros(t, t);
         match self.symbolic.raw() {

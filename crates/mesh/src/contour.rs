@@ -73,6 +73,11 @@ const GAUSS5: [(f64, f64); 5] = [
 ];
 
 impl Contour {
+    /// The node coordinates the contour's geometry ([`Contour::edge_point`]) is evaluated on.
+    pub fn points(&self) -> &[[f64; 2]] {
+        &self.points
+    }
+
     /// Builds the contour of the 1D physical group `name` of `mesh`.
     ///
     /// # Errors

@@ -172,7 +172,7 @@ pub(crate) fn solve_state_equations(
             PairState::Free => Tangential::Zero,
         };
     }
-    let (na, r) = (contact.len(), contact.len() + stick.len());
+    let r = contact.len() + stick.len();
     let mut x = DMatrix::<f64>::zeros(2 * m, 2);
     if r == 0 {
         return Some(x);
@@ -184,29 +184,40 @@ pub(crate) fn solve_state_equations(
     let mut b = Mat::<f64>::zeros(r, 2);
     // Row i of the reduced system: the gap row of contact[i] (i < na) or the slip row of
     // stick[i − na]; (c_n·, c_t·) are that row's compliances against λ and τ.
-    for i in 0..r {
-        let (row, c_n, c_t) = if i < na {
-            let k = contact[i];
+    let rows: Vec<(usize, bool)> =
+        contact.iter().map(|&k| (k, true)).chain(stick.iter().map(|&k| (k, false))).collect();
+    for (i, &(k, normal)) in rows.iter().enumerate() {
+        if normal {
             b[(i, 0)] = -interface.h_normal[k];
             b[(i, 1)] = -problem.gap[k];
-            (k, &interface.c_nn, &interface.c_nt)
         } else {
-            let k = stick[i - na];
             b[(i, 0)] = -interface.h_tangent[k];
             b[(i, 1)] = start.slip[k];
-            (k, &interface.c_tn, &interface.c_tt)
-        };
-        if hit {
-            continue;
         }
+    }
+    if !hit {
+        // Column by column: the compliances and `a` are column-major, so both are read and
+        // written along their columns.
         for (jc, &j) in contact.iter().enumerate() {
-            let mut v = c_n[(row, j)];
-            match tangential[j] {
-                Tangential::Slip(f) => v += c_t[(row, j)] * f,
-                Tangential::Unknown(col) => a[(i, col)] = c_t[(row, j)],
-                Tangential::Zero => {}
+            let nn = interface.c_nn.column(j);
+            // The tangential compliances exist (the interface is frictional) whenever a pair
+            // has a tangential unknown or a stick row.
+            let tangents = (tangential[j] != Tangential::Zero || !stick.is_empty())
+                .then(|| (interface.c_nt.column(j), interface.c_tn.column(j), interface.c_tt.column(j)));
+            for (i, &(row, normal)) in rows.iter().enumerate() {
+                let (c_n, c_t) = match (&tangents, normal) {
+                    (None, _) => (nn[row], 0.0),
+                    (Some((nt, _, _)), true) => (nn[row], nt[row]),
+                    (Some((_, tn, tt)), false) => (tn[row], tt[row]),
+                };
+                let mut v = c_n;
+                match tangential[j] {
+                    Tangential::Slip(f) => v += c_t * f,
+                    Tangential::Unknown(col) => a[(i, col)] = c_t,
+                    Tangential::Zero => {}
+                }
+                a[(i, jc)] = v;
             }
-            a[(i, jc)] = v;
         }
     }
     let par = parallelism();
