@@ -93,13 +93,16 @@ fn condensed_blocks(problem: &ContactProblem, tangent: &[PairRow]) -> Option<[Ma
     }
     let mut in_factor = vec![false; all.len()];
     index.iter().for_each(|&i| in_factor[i] = true);
-    let n = problem.system.dofs.num_free();
-    for (i, row) in all.iter().enumerate().filter(|(i, r)| !in_factor[*i] && !r.free.is_empty()) {
-        let mut b = vec![0.0; n];
-        row.free.iter().for_each(|&(d, v)| b[d] += v);
-        let z = problem.solver.solve(&b);
+    // The rows left out, solved together (one pass over the factor).
+    let left_out: Vec<usize> = (0..all.len()).filter(|&i| !in_factor[i] && !all[i].free.is_empty()).collect();
+    let mut b = Mat::zeros(problem.system.dofs.num_free(), left_out.len());
+    for (col, &i) in left_out.iter().enumerate() {
+        all[i].free.iter().for_each(|&(d, v)| b[(d, col)] += v);
+    }
+    let z = problem.solver.solve_many(&b);
+    for (col, &i) in left_out.iter().enumerate() {
         for (j, other) in all.iter().enumerate() {
-            let v: f64 = other.free.iter().map(|&(d, w)| w * z[d]).sum();
+            let v: f64 = other.free.iter().map(|&(d, w)| w * z[(d, col)]).sum();
             (c[(i, j)], c[(j, i)]) = (v, v);
         }
     }

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Time against the number of contact pairs on long, fully closed interfaces (issue 13, item 3;
+# results in docs/benchmarks.md, "Time against pair count").
+#
+# Generates meshes/generic/long_interface.geo at larger sizes than the committed ones (needs gmsh:
+# `pip install gmsh`) into a scratch directory, then runs `contact2d run` on
+# scenes/generic/long_interface.toml:
+#   history  the scene's 40-step press-and-slide history (pairs up to HISTORY_MAX)
+#   press    one frictional press step (the whole interface sticks), every size
+# and prints one markdown row per run: pairs, DOFs, iterations, whole-run wall and CPU time, peak
+# memory, and the JSON's per-phase times.
+#
+# Usage: benchmarks/long_interface.sh [n_upper ...]   (pairs = 2 n_upper + 1;
+#        default 96 190 380 760 1520 2500; HISTORY_MAX=1600 by default)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+sizes=("$@")
+[ ${#sizes[@]} -eq 0 ] && sizes=(96 190 380 760 1520 2500)
+history_max=${HISTORY_MAX:-1600}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cargo build --release --quiet --manifest-path "$root/Cargo.toml" --bin contact2d
+bin="$root/target/release/contact2d"
+cp "$root/scenes/generic/long_interface.toml" "$work/"
+
+echo "| run | pairs | DOFs | iterations | wall s | CPU s | peak RSS MiB | read | assemble | factor | condense | solve | post |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+for n in "${sizes[@]}"; do
+  mesh="$work/long_interface_$n.msh"
+  gmsh "$root/meshes/generic/long_interface.geo" -2 -order 2 -format msh41 -setnumber n_upper "$n" \
+    -o "$mesh" > /dev/null
+  runs=(press)
+  [ $((2 * n + 1)) -le "$history_max" ] && runs=(history press)
+  for run in "${runs[@]}"; do
+    extra=()
+    [ "$run" = press ] && extra=(--set 'loading.schedule=[{press=1.0}]')
+    /usr/bin/time -f "%e %U %S %M" -o "$work/time" \
+      "$bin" run "$work/long_interface.toml" --set "mesh=\"$mesh\"" "${extra[@]}" --json > "$work/out.json"
+    python3 - "$run" "$work/out.json" "$work/time" <<'EOF'
+import json, sys
+run, out, timing = sys.argv[1:4]
+d = json.load(open(out))
+wall, user, system, rss = open(timing).read().split()[-4:]
+t = d["time_s"]
+phases = " | ".join(f"{t[k]:.3f}" for k in ("read", "assemble", "factor", "condense", "solve", "post"))
+print(f"| {run} | {d['pairs']} | {d['dofs']} | {d['iterations']} | {float(wall):.2f} | "
+      f"{float(user) + float(system):.2f} | {int(rss) // 1024} | {phases} |")
+EOF
+  done
+  rm -f "$mesh"
+done
