@@ -119,57 +119,66 @@ fn closest_point(slave: &Contour, points: &[[f64; 2]], x: [f64; 2]) -> (usize, f
     (edge, snap(xi))
 }
 
-/// The edge of `slave` and the reference coordinate of the point closest to `x`.
+/// The edge of `slave` and the reference coordinate of the point closest to `x`: of the
+/// candidates of [`edge_candidates`], edge by edge, the first that is closer than the best so far
+/// by more than 1e-15.
+///
+/// Edges are skipped unsolved when their bounding box lies farther than a candidate already
+/// found (`U`, from the edge of the nearest box) plus a margin `1e-9 (U + its box's size)`: all of
+/// their candidates are then farther than the closest one by more than the margin, so they can be
+/// neither the answer nor, as a passing best, decide between candidates within 1e-15 of each
+/// other — the same answer as solving every edge.
 pub(crate) fn closest_point_unsnapped(slave: &Contour, points: &[[f64; 2]], x: [f64; 2]) -> (usize, f64) {
-    let mut best = (0, 0.0, f64::INFINITY);
-    // An edge whose bounding box is farther than the nearest edge node (+ a margin far above the
-    // 1e-15 tie tolerance below) can be neither the answer nor change it: skipped unsolved.
     // (Distances are those of `Contour::edge_point`, on the contour's own points.)
     let own = slave.points();
     let boxes: Vec<[f64; 4]> = slave.edges.iter().map(|e| edge_box(e, own)).collect();
-    let nearest_node = slave
-        .edges
-        .iter()
-        .flat_map(|e| e.nodes.iter().take(if e.quadratic { 3 } else { 2 }))
-        .map(|n| (own[n.0][0] - x[0]).hypot(own[n.0][1] - x[1]))
-        .fold(f64::INFINITY, f64::min);
-    let cutoff = nearest_node * (1.0 + 1e-9) + 1e-300;
-    for (i, edge) in slave.edges.iter().enumerate() {
-        let [x0, y0, x1, y1] = boxes[i];
-        if (x0 - x[0]).max(x[0] - x1).max(0.0).hypot((y0 - x[1]).max(x[1] - y1).max(0.0)) > cutoff {
-            continue;
-        }
-        // x''(ξ) is constant: Σ N''_a y_a with N'' = (1, 1, -2) for Line3, zero for Line2.
-        let dd = if edge.quadratic {
-            let [a, b, m] = edge.nodes.map(|n| points[n.0]);
-            [a[0] + b[0] - 2.0 * m[0], a[1] + b[1] - 2.0 * m[1]]
-        } else {
-            [0.0, 0.0]
-        };
-        // Newton on f(ξ) = (x(ξ) - x) · x'(ξ) = 0 from three starts, clamped to the edge.
-        for start in [-0.5, 0.0, 0.5] {
-            let mut xi: f64 = start;
-            for _ in 0..30 {
-                let (p, d) = slave.edge_point(edge, xi);
-                let r = [p[0] - x[0], p[1] - x[1]];
-                let f = r[0] * d[0] + r[1] * d[1];
-                let df = d[0] * d[0] + d[1] * d[1] + r[0] * dd[0] + r[1] * dd[1];
-                let step = if df > 0.0 { f / df } else { f / (d[0] * d[0] + d[1] * d[1]) };
-                let next = (xi - step).clamp(-1.0, 1.0);
-                let converged = (next - xi).abs() < 1e-15;
-                xi = next;
-                if converged {
-                    break;
-                }
-            }
-            let (p, _) = slave.edge_point(edge, xi);
-            let dist = (p[0] - x[0]).hypot(p[1] - x[1]);
+    let box_distance =
+        |[x0, y0, x1, y1]: [f64; 4]| (x0 - x[0]).max(x[0] - x1).max(0.0).hypot((y0 - x[1]).max(x[1] - y1).max(0.0));
+    let lower: Vec<f64> = boxes.iter().map(|b| box_distance(*b)).collect();
+    let Some(nearest) = (0..lower.len()).min_by(|&a, &b| lower[a].total_cmp(&lower[b])) else { return (0, 0.0) };
+    let upper = edge_candidates(slave, points, nearest, x).iter().map(|c| c.1).fold(f64::INFINITY, f64::min);
+    let [x0, y0, x1, y1] = boxes[nearest];
+    let cutoff = upper + 1e-9 * (upper + (x1 - x0).hypot(y1 - y0));
+    let mut best = (0, 0.0, f64::INFINITY);
+    for i in (0..slave.edges.len()).filter(|&i| lower[i] <= cutoff) {
+        for (xi, dist) in edge_candidates(slave, points, i, x) {
             if dist < best.2 - 1e-15 {
                 best = (i, xi, dist);
             }
         }
     }
     (best.0, best.1)
+}
+
+/// `(ξ, distance)` of Newton's method on `f(ξ) = (x(ξ) − x) · x'(ξ) = 0` from the starts −0.5, 0,
+/// 0.5 on edge `i` of `slave`, clamped to the edge.
+fn edge_candidates(slave: &Contour, points: &[[f64; 2]], i: usize, x: [f64; 2]) -> [(f64, f64); 3] {
+    let edge = &slave.edges[i];
+    // x''(ξ) is constant: Σ N''_a y_a with N'' = (1, 1, -2) for Line3, zero for Line2.
+    let dd = if edge.quadratic {
+        let [a, b, m] = edge.nodes.map(|n| points[n.0]);
+        [a[0] + b[0] - 2.0 * m[0], a[1] + b[1] - 2.0 * m[1]]
+    } else {
+        [0.0, 0.0]
+    };
+    [-0.5, 0.0, 0.5].map(|start: f64| {
+        let mut xi = start;
+        for _ in 0..30 {
+            let (p, d) = slave.edge_point(edge, xi);
+            let r = [p[0] - x[0], p[1] - x[1]];
+            let f = r[0] * d[0] + r[1] * d[1];
+            let df = d[0] * d[0] + d[1] * d[1] + r[0] * dd[0] + r[1] * dd[1];
+            let step = if df > 0.0 { f / df } else { f / (d[0] * d[0] + d[1] * d[1]) };
+            let next = (xi - step).clamp(-1.0, 1.0);
+            let converged = (next - xi).abs() < 1e-15;
+            xi = next;
+            if converged {
+                break;
+            }
+        }
+        let (p, _) = slave.edge_point(edge, xi);
+        (xi, (p[0] - x[0]).hypot(p[1] - x[1]))
+    })
 }
 
 /// A box holding the edge: its end nodes, and for a Line3 the control point `2 m − (a + b)/2`
