@@ -18,7 +18,7 @@
 //! symbolic analysis (ordering, elimination tree, supernodes), numeric factorisation
 //! `K_ff = L Lᵀ`, solve. The factorisation goes through faer's low-level API with the defaults
 //! that `CholeskySolver` uses (`SymbolicLlt::try_new` + `Llt::try_new_with_symbolic`: AMD,
-//! supernodal when worthwhile, global parallelism), so that the symbolic and numeric times and the
+//! supernodal when worthwhile, the library's sequential `parallelism()`), so that the symbolic and numeric times and the
 //! size of `L` can be reported separately.
 //!
 //! Variants, to measure what a change would gain:
@@ -213,7 +213,10 @@ fn factor_and_solve<I: faer::Index>(
         .map_err(|e| anyhow!("symbolic analysis: {e:?}"))?;
     phases.lap("symbolic analysis");
 
-    let par = faer::get_global_parallelism();
+    // The library's fixed parallelism (`CholeskySolver` runs faer sequentially, for bit-identical
+    // answers whatever the thread count; on this 2-vCPU machine it is also the faster: numeric
+    // factorisation 2.5 s against 3.2–4.1 s with faer's two-thread kernels at 10⁶ DOFs).
+    let par = contact2d::fem::parallelism();
     let mut l_values = vec![0.0; symbolic.len_val()];
     let mut scratch = MemBuffer::try_new(symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default()))
         .map_err(|e| anyhow!("factorisation workspace: {e:?}"))?;
