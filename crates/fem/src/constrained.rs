@@ -312,12 +312,15 @@ impl CholeskySolver {
                 }
             }
         }
+        let mut inverse_pivots = vec![0.0; n];
         for b in blocks.iter().filter(|b| b.start < n) {
             let (c, _) = k_part(b);
             for i in 0..c {
-                let d = b.values[(i, i)].recip();
-                y.row_mut(b.start + i).iter_mut().for_each(|v| *v *= d);
+                inverse_pivots[b.start + i] = b.values[(i, i)].recip();
             }
+        }
+        for j in 0..k {
+            y.col_mut(j).iter_mut().zip(&inverse_pivots).for_each(|(v, d)| *v *= d);
         }
         for b in blocks.iter().rev().filter(|b| b.start < n) {
             let (c, below) = k_part(b);
