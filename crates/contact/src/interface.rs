@@ -76,7 +76,7 @@ fn to_dmatrix(m: &Mat<f64>) -> DMatrix<f64> {
 
 /// The blocks `(C_NN, C_NT, C_TN, C_TT)` of `C = B K⁻¹ Bᵀ` from the factor bordered by the
 /// problem's rows, or `None` if the factor has no rows (they were dependent). The rows left out
-/// of the factor (a negligible free part, [`condensed_rows`]) get theirs by one solve each.
+/// of the factor (a negligible free part, [`condensed_rows`]) get theirs by one multi-RHS solve.
 fn condensed_blocks(problem: &ContactProblem, tangent: &[PairRow]) -> Option<[Mat<f64>; 4]> {
     let (index, rows) = condensed_rows(&problem.normal_rows, &problem.tangent_rows);
     if problem.solver.constraint_count() != rows.len() {

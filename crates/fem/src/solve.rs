@@ -6,6 +6,8 @@
 //! P from faer's AMD, or any permutation given (e.g. crate::ordering's nested dissection).
 //! With the last t DOFs of P chosen (contact DOFs), L = [L_aa 0; L_ba L_bb] and
 //! L_bb L_bbᵀ = K_bb − K_ba K_aa⁻¹ K_ab: the Schur complement on them (`trailing_block`).
+//! Bordered by constraint rows B (crate::constrained): P [K Bᵀ; B 0] Pᵀ = L D Lᵀ, the rows
+//! last; `solve` then uses the K block only and `condensed` gives C = B K⁻¹ Bᵀ.
 //! ```
 //!
 //! The symbolic factorisation and the values of `L` are shared (reference counted): cloning a
@@ -187,8 +189,9 @@ impl CholeskySolver {
     /// Refactors with new values on the same sparsity pattern, reusing the symbolic analysis.
     ///
     /// # Errors
-    /// [`FemError::Factorization`] if the pattern differs from the analysed one or the matrix is
-    /// not positive definite.
+    /// [`FemError::Factorization`] if the pattern differs from the analysed one, the matrix is
+    /// not positive definite, or the factor is bordered by constraint rows (use
+    /// [`CholeskySolver::refactor_with_constraints`]).
     pub fn refactor(&mut self, k: &Csc) -> Result<(), FemError> {
         if self.constraints > 0 {
             return Err(FemError::Factorization(
@@ -268,9 +271,13 @@ impl CholeskySolver {
 
     /// The trailing `t × t` block `L_bb` of the factor (dense, lower triangular), in the order of
     /// the last `t` DOFs of [`CholeskySolver::permutation`]: `L_bb L_bbᵀ` is the Schur
-    /// complement of `K` on those DOFs. `None` if `t` exceeds the dimension.
+    /// complement of `K` on those DOFs. `None` if `t` exceeds the dimension or the factor is
+    /// bordered by constraint rows ([`CholeskySolver::condensed`] gives their complement).
     pub fn trailing_block(&self, t: usize) -> Option<Mat<f64>> {
-        let n = self.dim + self.constraints;
+        if self.constraints > 0 {
+            return None; // an LDLᵀ factor: see `condensed` for the rows' Schur complement
+        }
+        let n = self.dim;
         let first = n.checked_sub(t)?;
         let mut l = Mat::zeros(t, t);
         match self.symbolic.raw() {
