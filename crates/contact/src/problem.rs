@@ -413,7 +413,7 @@ fn pair_rows(
 pub type SparseRow<'a> = &'a [(usize, f64)];
 
 /// The rows factored with `K` (their free parts): every normal row, then every tangential row,
-/// except rows whose free part is negligible (see [`has_free_part`]): a row along a Dirichlet
+/// except rows whose free part is negligible (`|free|² ≤ 1e-6 |row|²`): a row along a Dirichlet
 /// direction up to round-off would make the bordered factor's last block singular
 /// ([`crate::Interface`] solves for those rows instead). Returns their indices in
 /// `normal ++ tangent` and the rows.
