@@ -391,6 +391,7 @@ fn numeric_ldlt(symbolic: &SymbolicCholesky<usize>, a: &Csc, n: usize) -> Result
 
 #[cfg(test)]
 mod tests {
+    #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
     use faer::sparse::Triplet;
 
     use super::*;
