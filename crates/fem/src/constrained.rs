@@ -49,8 +49,8 @@ use crate::sparse::Csc;
 /// meshes (258 and 514 rows). Below it `K`'s AMD order is kept because the orderings change the
 /// answers at round-off level, and the placed Boussinesq search of the flagship's U(1) case on
 /// the N = 16 mesh lands on another (inadmissible) answer with the other order: that search is
-/// sensitive to round-off (a defect stated in docs/benchmarks.md), and the flagship's published
-/// answers stay bit for bit as they were.
+/// sensitive to round-off (a defect stated in docs/benchmarks.md); with `K`'s order the
+/// flagship's cases keep their printed answers and placed zone ends.
 const BORDERED_ORDERING_ROWS: usize = 1000;
 
 /// A multiplier of `L_bb` larger than this marks rows that are dependent up to round-off (the
