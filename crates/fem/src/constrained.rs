@@ -2,7 +2,7 @@
 //! `C = B K⁻¹ Bᵀ` (the compliance of the bodies at the rows) from one sparse factorisation.
 //!
 //! ```text
-//! A = [K  Bᵀ]      quasi-definite; ordered by AMD (on K, or on A for many rows), the rows last:
+//! A = [K  Bᵀ]      quasi-definite; ordered by AMD on A's pattern, the rows then moved last:
 //!     [B  0 ]      P A Pᵀ = L D Lᵀ  (faer's supernodal LDLᵀ, no pivoting), L unit lower,
 //!
 //! L = [L_kk 0; L_bk L_bb],  D = diag(D_k, D_b):   L_kk D_k L_kkᵀ = P_K K P_Kᵀ  (D_k > 0 ⇔ K SPD)
@@ -12,12 +12,12 @@
 //! ```
 //!
 //! Why: ordering the DOFs the rows touch last (so that the trailing block of K's own Cholesky
-//! factor is their Schur complement) makes a dense block of the size of those DOFs — about four
-//! per contact pair with a segment-to-segment slave side — and its `t³/3` flops dominate long
+//! factor is their Schur complement) makes a dense block of the size of those DOFs — about four per
+//! contact pair with a segment-to-segment slave side — and its `t³/3` flops dominate long
 //! interfaces (docs/benchmarks.md). Here the dense block has the size of the rows (two per pair)
-//! and `K`'s own DOFs keep their free AMD order. The `K` block is eliminated first, so its pivots
-//! are those of `K`'s Cholesky factorisation (no instability from the indefinite whole); the
-//! rows' block is then the negative definite `−C` whenever `B` has full row rank. Rows that are
+//! and `K`'s own DOFs are not constrained in the ordering. The `K` block is eliminated first, so
+//! its pivots are those of `K`'s Cholesky factorisation (no instability from the indefinite whole);
+//! the rows' block is then the negative definite `−C` whenever `B` has full row rank. Rows that are
 //! (numerically) dependent give a pivot of the wrong sign or a huge multiplier: the factorisation
 //! is then redone without rows (see [`CholeskySolver::factor_with_constraints`]).
 
@@ -40,18 +40,6 @@ use crate::error::FemError;
 use crate::ordering::fill_reducing_permutation_of_pattern;
 use crate::solve::{CholeskySolver, PatternFingerprint, parallelism};
 use crate::sparse::Csc;
-
-/// Past this many rows, the ordering is AMD on the whole bordered pattern with the rows then moved
-/// last, instead of AMD on `K` alone: the order of `K`'s DOFs then knows that each row joins the
-/// DOFs of a pair (AMD on `K` alone eliminates the contact DOFs early, on the boundary, and every
-/// row's part of `L` spans a long path of the elimination tree). Measured (docs/benchmarks.md):
-/// factorisation 1.15 → 0.57 s at 1 522 rows, 6.1 → 2.0 s at 3 042, 4 % less on the flagship
-/// meshes (258 and 514 rows). Below it `K`'s AMD order is kept because the orderings change the
-/// answers at round-off level, and the placed Boussinesq search of the flagship's U(1) case on
-/// the N = 16 mesh lands on another (inadmissible) answer with the other order: that search is
-/// sensitive to round-off (a defect stated in docs/benchmarks.md); with `K`'s order the
-/// flagship's cases keep their printed answers and placed zone ends.
-const BORDERED_ORDERING_ROWS: usize = 1000;
 
 /// A multiplier of `L_bb` larger than this marks rows that are dependent up to round-off (the
 /// pivot of a dependent row is a rounding residue, and dividing by it amplifies noise).
@@ -190,11 +178,13 @@ impl CholeskySolver {
             return CholeskySolver::factor(k);
         }
         let a = augmented_lower(k, rows)?;
-        let mut forward = if r > BORDERED_ORDERING_ROWS {
-            fill_reducing_permutation_of_pattern(&a)?.into_iter().filter(|&i| i < n).collect()
-        } else {
-            fill_reducing_permutation_of_pattern(k)?
-        };
+        // AMD on the whole bordered pattern, the rows then moved last: the order of K's DOFs
+        // knows that each row joins the DOFs of a pair. (AMD on K alone eliminates the contact
+        // DOFs early, on the boundary, and every row's part of L then spans a long path of the
+        // elimination tree: factorisation 1.15 s against 0.57 s at 1 522 rows, 6.1 s against
+        // 2.0 s at 3 042, 4 % more on the flagship meshes; docs/benchmarks.md.)
+        let mut forward: Vec<usize> =
+            fill_reducing_permutation_of_pattern(&a)?.into_iter().filter(|&i| i < n).collect();
         forward.extend(n..n + r);
         let mut inverse = vec![0; n + r];
         for (new, &old) in forward.iter().enumerate() {
@@ -448,11 +438,10 @@ mod tests {
     }
 
     #[test]
-    fn many_rows_are_ordered_with_the_border_and_still_condense_exactly() {
+    fn many_rows_condense_exactly() {
         let (m, k) = (50, grid_laplacian(50, 0.01));
-        // More rows than BORDERED_ORDERING_ROWS, independent (each has a DOF of its own).
-        let rows: Vec<Vec<(usize, f64)>> =
-            (0..BORDERED_ORDERING_ROWS + 100).map(|q| vec![(q, 1.0), (m * m - 1 - q, -0.5)]).collect();
+        // 1 100 rows, independent (each has a DOF of its own): a large dense last block.
+        let rows: Vec<Vec<(usize, f64)>> = (0..1100).map(|q| vec![(q, 1.0), (m * m - 1 - q, -0.5)]).collect();
         let refs: Vec<&[(usize, f64)]> = rows.iter().map(Vec::as_slice).collect();
         let bordered = CholeskySolver::factor_with_constraints(&k, &refs).expect("SPD with independent rows");
         assert_eq!(bordered.constraint_count(), rows.len());
