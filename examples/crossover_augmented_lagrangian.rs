@@ -31,7 +31,7 @@ use contact2d::contact::{
 };
 use contact2d::element::{Material, PlaneCondition};
 use contact2d::fem::{Component, Model};
-use contact2d::mesh::generate::{MappedGrid, Side, append_prefixed, mapped_grid};
+use contact2d::mesh::generate::{MappedGrid, append_prefixed, mapped_grid, side_name};
 use contact2d::mesh::{CellKind, Contour};
 
 /// The two-block problem with `na` cells along the lower block and `rows` cells through each.
@@ -46,17 +46,7 @@ fn two_blocks(na: usize, rows: usize, height: f64) -> ContactProblem {
                 let gap = if bottom_gap { 0.002 + 0.002 * (x / width - 0.5) } else { 0.0 };
                 [x, y0 + gap + height * v]
             },
-            |side, _| {
-                Some(
-                    match side {
-                        Side::Bottom => "bottom",
-                        Side::Top => "top",
-                        Side::Left => "left",
-                        Side::Right => "right",
-                    }
-                    .to_string(),
-                )
-            },
+            |side, _| Some(side_name(side).to_string()),
         )
     };
     let mut mesh = block(na, 0.0, width, -height, false);

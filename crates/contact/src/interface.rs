@@ -76,8 +76,9 @@ fn to_dmatrix(m: &Mat<f64>) -> DMatrix<f64> {
 
 /// The blocks `(C_NN, C_NT, C_TN, C_TT)` of `C = B K⁻¹ Bᵀ` from the factor bordered by the
 /// problem's rows, or `None` if the factor has no rows (they were dependent). The rows left out
-/// of the factor (a negligible free part, [`condensed_rows`]) get theirs by one multi-RHS solve.
-fn condensed_blocks(problem: &ContactProblem, tangent: &[PairRow]) -> Option<[Mat<f64>; 4]> {
+/// of the factor (a negligible free part, [`condensed_rows`]) get theirs by one multi-RHS solve,
+/// which also gives `u0 = K⁻¹ r` (its last column): one pass over the factor for both.
+fn condensed_blocks(problem: &ContactProblem, tangent: &[PairRow]) -> Option<([Mat<f64>; 4], Vec<f64>)> {
     let (index, rows) = condensed_rows(&problem.normal_rows, &problem.tangent_rows);
     if problem.solver.constraint_count() != rows.len() {
         return None;
@@ -93,13 +94,16 @@ fn condensed_blocks(problem: &ContactProblem, tangent: &[PairRow]) -> Option<[Ma
     }
     let mut in_factor = vec![false; all.len()];
     index.iter().for_each(|&i| in_factor[i] = true);
-    // The rows left out, solved together (one pass over the factor).
+    // The rows left out and the load, solved together (one pass over the factor).
     let left_out: Vec<usize> = (0..all.len()).filter(|&i| !in_factor[i] && !all[i].free.is_empty()).collect();
-    let mut b = Mat::zeros(problem.system.dofs.num_free(), left_out.len());
+    let load = left_out.len();
+    let mut b = Mat::zeros(problem.system.dofs.num_free(), load + 1);
     for (col, &i) in left_out.iter().enumerate() {
         all[i].free.iter().for_each(|&(d, v)| b[(d, col)] += v);
     }
+    b.col_mut(load).iter_mut().zip(&problem.pattern_rhs).for_each(|(x, r)| *x = *r);
     let z = problem.solver.solve_many(&b);
+    let u0 = z.col(load).iter().copied().collect();
     for (col, &i) in left_out.iter().enumerate() {
         for (j, other) in all.iter().enumerate() {
             let v: f64 = other.free.iter().map(|&(d, w)| w * z[(d, col)]).sum();
@@ -110,7 +114,7 @@ fn condensed_blocks(problem: &ContactProblem, tangent: &[PairRow]) -> Option<[Ma
     let block = |r: std::ops::Range<usize>, k: std::ops::Range<usize>| {
         c.as_ref().submatrix(r.start, k.start, r.len(), k.len()).to_owned()
     };
-    Some([block(0..m, 0..m), block(0..m, m..m + t), block(m..m + t, 0..m), block(m..m + t, m..m + t)])
+    Some(([block(0..m, 0..m), block(0..m, m..m + t), block(m..m + t, 0..m), block(m..m + t, m..m + t)], u0))
 }
 
 /// `A B` with the fixed [`parallelism`] (faer's `*` reads the global setting, which follows the
@@ -122,22 +126,23 @@ fn product(a: faer::MatRef<'_, f64>, b: &Mat<f64>) -> Mat<f64> {
 }
 
 impl Interface {
-    /// Condenses `problem` onto its pairs with the existing factorisation: one solve for `u0`
-    /// and `C = W Wᵀ` from the last block of the factor bordered by the rows.
+    /// Condenses `problem` onto its pairs with the existing factorisation: `C = W Wᵀ` from the
+    /// last block of the factor bordered by the rows, and one multi-RHS solve for `u0` and the
+    /// rows left out of the border.
     pub fn new(problem: &ContactProblem) -> Interface {
         let n = problem.system.dofs.num_free();
-        let u0 = problem.solver.solve(&problem.pattern_rhs);
         let frictional = problem.is_frictional();
         let normal = &problem.normal_rows[..];
         let tangent: &[PairRow] = if frictional { &problem.tangent_rows } else { &[] };
-        let (c_nn, c_nt, c_tn, c_tt) = match condensed_blocks(problem, tangent) {
-            Some([c_nn, c_nt, c_tn, c_tt]) => (c_nn, c_nt, c_tn, c_tt),
+        let ((c_nn, c_nt, c_tn, c_tt), u0) = match condensed_blocks(problem, tangent) {
+            Some(([c_nn, c_nt, c_tn, c_tt], u0)) => ((c_nn, c_nt, c_tn, c_tt), u0),
             None => {
                 let b_n = rows_to_columns(n, normal);
                 let b_t = rows_to_columns(n, tangent);
                 let (z_n, z_t) = (problem.solver.solve_many(&b_n), problem.solver.solve_many(&b_t));
                 let (bnt, btt) = (b_n.transpose(), b_t.transpose());
-                (product(bnt, &z_n), product(bnt, &z_t), product(btt, &z_n), product(btt, &z_t))
+                let blocks = (product(bnt, &z_n), product(bnt, &z_t), product(btt, &z_n), product(btt, &z_t));
+                (blocks, problem.solver.solve(&problem.pattern_rhs))
             }
         };
         let h = |rows: &[PairRow]| rows.iter().map(|r| r.dot(&u0, &problem.pattern_prescribed)).collect::<Vec<_>>();

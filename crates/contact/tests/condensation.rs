@@ -13,7 +13,7 @@
 use contact2d_contact::{ContactProblem, Interface, StepStart, pair_contours, solve_frictional_active_set};
 use contact2d_element::{Material, PlaneCondition};
 use contact2d_fem::{CholeskySolver, Component, Model};
-use contact2d_mesh::generate::{MappedGrid, Side, append_prefixed, mapped_grid, rectangle};
+use contact2d_mesh::generate::{MappedGrid, append_prefixed, mapped_grid, rectangle, side_name};
 use contact2d_mesh::{CellKind, Contour};
 use faer::Mat;
 
@@ -29,17 +29,7 @@ fn blocks(lift: f64, nb: usize) -> (Model, Vec<contact2d_contact::ContactPair>) 
             let x = 0.5 + 2.0 * u;
             [x, 0.01 + lift * x + 0.8 * v]
         },
-        |side, _| {
-            Some(
-                match side {
-                    Side::Bottom => "bottom",
-                    Side::Top => "top",
-                    Side::Left => "left",
-                    Side::Right => "right",
-                }
-                .to_string(),
-            )
-        },
+        |side, _| Some(side_name(side).to_string()),
     );
     append_prefixed(&mut mesh, &upper, "b_");
     let mut model = Model::new(mesh);

@@ -4,7 +4,7 @@
 
 use contact2d_element::{Material, PlaneCondition};
 use contact2d_fem::{BodyId, Component, EdgeLoad, FemError, Model, solve_linear};
-use contact2d_mesh::generate::{MappedGrid, Side, mapped_grid, rectangle};
+use contact2d_mesh::generate::{MappedGrid, Side, mapped_grid, rectangle, side_name};
 use contact2d_mesh::{CellKind, Mesh, cell_orientation, read_msh, signed_area};
 
 const KINDS: [CellKind; 5] = [CellKind::Tri3, CellKind::Tri6, CellKind::Quad4, CellKind::Quad8, CellKind::Quad9];
@@ -41,15 +41,7 @@ fn clockwise_twin(mesh: &Mesh) -> Mesh {
 /// A curved, non-affine 2 × 1 domain (every cell distorted, quadratic edges curved).
 fn distorted(kind: CellKind) -> Mesh {
     let grid = MappedGrid { kind, nx: 4, ny: 3, region: "domain" };
-    let name = |side: Side, _| {
-        let name = match side {
-            Side::Bottom => "bottom",
-            Side::Right => "right",
-            Side::Top => "top",
-            Side::Left => "left",
-        };
-        Some(name.to_string())
-    };
+    let name = |side: Side, _| Some(side_name(side).to_string());
     mapped_grid(&grid, |u, v| [2.0 * u + 0.3 * u * v, v + 0.15 * (std::f64::consts::PI * u).sin()], name)
 }
 

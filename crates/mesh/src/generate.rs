@@ -205,7 +205,9 @@ pub fn annulus_sector(kind: CellKind, r: [f64; 2], theta: [f64; 2], nr: usize, n
     )
 }
 
-fn side_name(side: Side) -> &'static str {
+/// The boundary group name [`rectangle`] gives a side: `bottom`, `right`, `top`, `left` (for
+/// [`mapped_grid`]'s naming closure: `|side, _| Some(side_name(side).to_string())`).
+pub fn side_name(side: Side) -> &'static str {
     match side {
         Side::Bottom => "bottom",
         Side::Right => "right",
