@@ -17,6 +17,7 @@ pub mod algorithms;
 pub mod builder;
 pub mod certify;
 pub mod error;
+mod floating;
 pub mod history;
 pub mod interface;
 pub mod loading;

@@ -12,20 +12,12 @@
 //! first instant and never change: spec §5.2, for friction too), so it is solved once at `d` and
 //! scaled: `u_i = t_i u(d)`, `Φ_f,i = t_i² Φ_f(d)`. This is exact, not an approximation.
 //!
-//! Floating bodies (held only by contact): assembly adds springs `D` of relative stiffness
-//! [`contact2d_fem::FLOATING_SPRING`] to their DOFs, and each step is solved by the proximal
-//! iteration
-//!
-//! ```text
-//! (K + D) u_{j+1} = f + Bᵀλ_{j+1} + D u_j          (a contact solve with the extra load D u_j)
-//! ```
-//!
-//! whose fixed point is `K u = f + Bᵀλ` exactly: the springs carry no force in the answer. The
-//! residual `‖D (u_{j+1} − u_j)‖₁`, the force the springs still carry, is the equilibrium error;
-//! the iteration stops when it is below [`SolverSettings::floating_tolerance`] times the force
-//! scale, and reports it. A body the contact does not hold keeps moving by `D⁻¹ f` per iteration:
-//! the residual does not fall, and the step fails with [`ContactError::BodyNotHeld`] naming the
-//! body and its free rigid motions.
+//! Floating bodies (held only by contact): assembly pins each floating piece at as many DOFs as
+//! it has free rigid modes, and each step finds the pieces' rigid motions `α` that leave the
+//! pins without force ([`crate::floating`]): exact equilibrium `K u = f + Bᵀλ`, any load lands
+//! in one step, zero load leaves a body where it was, and a body that no contact holds along the
+//! direction its load pushes it fails with [`ContactError::BodyNotHeld`] naming the body and its
+//! free rigid motions.
 
 use crate::algorithms::augmented_lagrangian::solve_augmented_lagrangian;
 use crate::algorithms::boussinesq::{BoussinesqLoading, solve_boussinesq_step};
@@ -33,6 +25,7 @@ use crate::algorithms::clarabel_tresca::solve_frictional_qp;
 use crate::algorithms::frictional_active_set::solve_frictional_active_set;
 use crate::algorithms::penalty::{PenaltyParameters, solve_penalty};
 use crate::error::ContactError;
+use crate::floating::{FloatingStep, RigidModes, solve_floating_step as solve_floating_step_with};
 use crate::history::{HistoryStep, march};
 use crate::interface::Interface;
 use crate::loading::LoadSchedule;
@@ -249,7 +242,9 @@ pub fn solve_with(
     let mut interface = Interface::new(&loaded);
     let condense_time = clock.elapsed();
     let order = boussinesq_order(problem);
-    let mut previous_free = vec![0.0; problem.system.dofs.num_free()];
+    let modes = RigidModes::of(problem);
+    let mut alpha = vec![0.0; modes.len()];
+    let zeros = vec![0.0; problem.patterns().len()];
     // (iterations, residual) of the floating bodies' proximal iteration, per step.
     let floating = std::cell::RefCell::new(Vec::with_capacity(targets.len()));
     let step_of = |i: usize, h: &HistoryStep| SolvedStep {
@@ -265,8 +260,10 @@ pub fn solve_with(
         |target, start, guess| {
             let step = floating.borrow().len() + 1;
             let context = StepContext { order: &order, start, guess, step };
+            let previous = if step >= 2 { &targets[step - 2] } else { &zeros };
+            let factors = StepFactors { target, previous };
             let (solution, iterations, residual) =
-                solve_floating_step(&mut loaded, &mut interface, settings, target, &context, &mut previous_free)?;
+                solve_floating_step(&mut loaded, &mut interface, settings, &factors, &context, &modes, &mut alpha)?;
             floating.borrow_mut().push((iterations, residual));
             Ok::<_, ContactError>(solution)
         },
@@ -340,6 +337,12 @@ pub fn scale_solution(s: &mut ContactSolution, t: f64, t_before: f64) {
     s.kkt.min_dissipation *= t * (t - t_before);
 }
 
+/// The pattern factors of a step and of the step before it.
+struct StepFactors<'a> {
+    target: &'a [f64],
+    previous: &'a [f64],
+}
+
 /// What a step needs besides the load.
 struct StepContext<'a> {
     order: &'a [usize],
@@ -348,110 +351,38 @@ struct StepContext<'a> {
     step: usize,
 }
 
-/// One step at `factors`; with floating bodies by the proximal iteration of the module docs.
-/// Returns the solution, the proximal iterations and the springs' residual force.
+/// One step at `factors`; with floating bodies their rigid motions `alpha` are unknowns
+/// ([`crate::floating`]). Returns the solution, the Newton iterations on `α` and the force
+/// the pins still carry.
 fn solve_floating_step(
     loaded: &mut ContactProblem,
     interface: &mut Interface,
     settings: &SolverSettings,
-    factors: &[f64],
+    factors: &StepFactors,
     context: &StepContext,
-    previous_free: &mut Vec<f64>,
+    modes: &RigidModes,
+    alpha: &mut Vec<f64>,
 ) -> Result<(ContactSolution, usize, f64), ContactError> {
-    let springs = loaded.system.stabilisation.clone();
-    if springs.is_empty() {
-        loaded.apply_load(factors, None)?;
-        interface.update_load_factors(loaded, factors);
+    if modes.is_empty() {
+        loaded.apply_load(factors.target, None)?;
+        interface.update_load_factors(loaded, factors.target);
         return Ok((solve_step(loaded, interface, settings, context), 0, 0.0));
     }
-    let mut residuals: Vec<f64> = vec![];
-    // The step's time is every proximal iteration's (load update and contact solve), its
-    // iterations the algorithm's summed over them.
-    let clock = web_time::Instant::now();
-    let mut inner_iterations = 0;
-    for iteration in 1..=settings.max_floating_iterations {
-        let mut extra = vec![0.0; previous_free.len()];
-        for &(i, k) in &springs {
-            extra[i] = k * previous_free[i];
-        }
-        loaded.apply_load(factors, Some(&extra))?;
-        interface.update_load(loaded);
-        let mut solution = solve_step(loaded, interface, settings, context);
-        inner_iterations += solution.iterations;
-        solution.iterations = inner_iterations;
-        solution.time = clock.elapsed();
-        let free = loaded.system.dofs.restrict_free(&solution.displacement);
-        // The springs' total force (ℓ1): its resultant bounds the error of every resultant.
-        let residual: f64 = springs.iter().map(|&(i, k)| (k * (free[i] - previous_free[i])).abs()).sum();
-        let scale = force_scale(loaded, &solution);
-        let moved: Vec<f64> = free.iter().zip(previous_free.iter()).map(|(a, b)| a - b).collect();
-        *previous_free = free;
-        if !residual.is_finite() || !solution.status.is_solved() {
-            return Ok((solution, iteration, residual));
-        }
-        if residual <= settings.floating_tolerance * scale {
-            return Ok((solution, iteration, residual));
-        }
-        residuals.push(residual / scale);
-        if stalled(&residuals) {
-            return Err(not_held(loaded, &moved, context.step));
-        }
-    }
-    Err(not_held(loaded, &vec![1.0; previous_free.len()], context.step))
-}
-
-/// The proximal iteration has stalled when the springs' relative force has not halved over
-/// three iterations (a held body's falls by about FLOATING_SPRING against its elastic stiffness
-/// per iteration; an unheld one's stays constant).
-fn stalled(residuals: &[f64]) -> bool {
-    residuals.len() >= 4 && residuals[residuals.len() - 1] > 0.5 * residuals[residuals.len() - 4]
-}
-
-/// The force scale of a step: the largest of the load's nodal forces and the contact forces.
-fn force_scale(problem: &ContactProblem, solution: &ContactSolution) -> f64 {
-    let load = problem.pattern_rhs.iter().fold(0.0f64, |a, r| a.max(r.abs()));
-    solution
-        .normal_force
-        .iter()
-        .chain(&solution.tangential_force)
-        .fold(load, |a, l| a.max(l.abs()))
-        .max(f64::MIN_POSITIVE)
-}
-
-/// The error for the floating piece whose rigid motion dominates the last increment `moved`
-/// (free DOF values), naming its free modes that move.
-fn not_held(problem: &ContactProblem, moved: &[f64], step: usize) -> ContactError {
-    let dofs = &problem.system.dofs;
-    let full = dofs.expand(moved, &vec![0.0; dofs.num_constrained()]);
-    let mut worst: Option<(f64, String, Vec<String>)> = None;
-    for piece in &problem.system.floating {
-        let names = piece.mode_names();
-        let mut moving = vec![];
-        let mut total = 0.0f64;
-        for (mode, name) in piece.free_modes.iter().zip(names) {
-            // Least-squares amplitude of the rigid mode in the increment.
-            let (mut num, mut den) = (0.0, 0.0);
-            for &n in &piece.nodes {
-                let x = problem.model.mesh.points[n];
-                let (dx, dy) = ((x[0] - piece.centre[0]) / piece.scale, (x[1] - piece.centre[1]) / piece.scale);
-                let r = [mode[0] - mode[2] * dy, mode[1] + mode[2] * dx];
-                num += r[0] * full[2 * n] + r[1] * full[2 * n + 1];
-                den += r[0] * r[0] + r[1] * r[1];
-            }
-            let amplitude = if den > 0.0 { (num / den).abs() } else { 0.0 };
-            total = total.max(amplitude);
-            moving.push((amplitude, name));
-        }
-        let largest = moving.iter().fold(0.0f64, |a, m| a.max(m.0));
-        let modes: Vec<String> = moving.into_iter().filter(|m| m.0 >= 1e-3 * largest).map(|m| m.1).collect();
-        if worst.as_ref().is_none_or(|w| total > w.0) {
-            worst = Some((total, piece.body.clone(), modes));
-        }
-    }
-    match worst {
-        Some((_, body, modes)) => ContactError::BodyNotHeld { body, modes, step },
-        None => ContactError::InvalidInput("the proximal iteration stalled without a floating body".into()),
-    }
+    let step = FloatingStep {
+        factors: factors.target,
+        previous_factors: factors.previous,
+        start: context.start,
+        guess: context.guess,
+        step: context.step,
+        max_iterations: settings.max_floating_iterations,
+        tolerance: settings.floating_tolerance,
+    };
+    let solve = |problem: &ContactProblem, interface: &Interface, start: &StepStart, guess: Option<&[PairState]>| {
+        let inner = StepContext { order: context.order, start, guess, step: context.step };
+        solve_step(problem, interface, settings, &inner)
+    };
+    let answer = solve_floating_step_with(loaded, interface, modes, &step, alpha, &solve)?;
+    Ok((answer.solution, answer.iterations, answer.residual))
 }
 
 /// One step of the chosen algorithm at the problem's current load (`w` = 1).

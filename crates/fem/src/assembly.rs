@@ -44,23 +44,26 @@ pub struct LinearSystem {
     pub load: Vec<f64>,
     /// The body pieces held by no Dirichlet condition (only with [`Model::allow_floating`]).
     pub floating: Vec<FloatingPiece>,
-    /// `(free index, k)`: the springs to ground added to the diagonal of `K_ff` on the DOFs of
-    /// the floating pieces, so that `K_ff + D` is positive definite:
+    /// `(free index, k)`: the pins of the floating pieces, springs to ground added to the
+    /// diagonal of `K_ff` on as many DOFs of each piece as it has free rigid modes, chosen so that
+    /// they see every free mode (`Rᵀ H` invertible, `R` the modes, `H` the pinned DOFs):
     ///
     /// ```text
-    /// k = FLOATING_SPRING · mean diag(K_ff) over the piece's free DOFs
+    /// k = FLOATING_PIN_STIFFNESS · mean diag(K_ff) over the piece's free DOFs
     /// ```
     ///
-    /// A contact solve removes their effect exactly by the proximal iteration
-    /// `(K + D) u_{i+1} = f + Bᵀλ + D u_i` (at its fixed point `K u = f + Bᵀλ`).
+    /// `K_ff + D` is then positive definite, and for a load `h` that the piece balances
+    /// (`Rᵀ h = 0`) `u = (K_ff + D)⁻¹ h` solves `K_ff u = h` exactly with `Hᵀ u = 0`: the pins carry
+    /// no force (Farhat and Roux's generalised inverse of a floating subdomain). The contact
+    /// solve makes the rigid motion `R α` an unknown and finds it by asking the pins' forces to
+    /// vanish (`contact2d_contact::solve`).
     pub stabilisation: Vec<(usize, f64)>,
 }
 
-/// The relative stiffness of the springs that stabilise a floating piece (see
-/// [`LinearSystem::stabilisation`]): small enough that one proximal iteration reduces the
-/// spring force by about this factor against the body's elastic stiffness, large enough that
-/// the condensed contact compliance stays well conditioned (about 1/FLOATING_SPRING).
-pub const FLOATING_SPRING: f64 = 1e-6;
+/// The relative stiffness of the pins of a floating piece (see [`LinearSystem::stabilisation`]):
+/// any positive value gives the same answer; the mean diagonal keeps `K_ff + D` as well
+/// conditioned as `K_ff` with Dirichlet conditions.
+pub const FLOATING_PIN_STIFFNESS: f64 = 1.0;
 
 #[derive(Default)]
 struct Triplets {
@@ -108,7 +111,7 @@ pub fn assemble(model: &Model) -> Result<LinearSystem, FemError> {
     };
     let graph = NodeGraph::of_model(model);
     let mut stiffness = assemble_free_free(model, &dofs, &graph)?;
-    let stabilisation = stabilise(&mut stiffness, &dofs, &floating);
+    let stabilisation = stabilise(&mut stiffness, model, &dofs, &floating);
     Ok(LinearSystem {
         stiffness,
         coupling: build(nf, nc, &triplets.fc)?,
@@ -120,17 +123,17 @@ pub fn assemble(model: &Model) -> Result<LinearSystem, FemError> {
     })
 }
 
-/// Adds the springs of [`LinearSystem::stabilisation`] to the diagonal of `K_ff` (lower
+/// Adds the pins of [`LinearSystem::stabilisation`] to the diagonal of `K_ff` (lower
 /// triangle, sorted rows: the diagonal is the first entry of its column).
-fn stabilise(stiffness: &mut Csc, dofs: &DofMap, floating: &[FloatingPiece]) -> Vec<(usize, f64)> {
+fn stabilise(stiffness: &mut Csc, model: &Model, dofs: &DofMap, floating: &[FloatingPiece]) -> Vec<(usize, f64)> {
     let mut springs = vec![];
     for piece in floating {
-        let free: Vec<usize> = piece
+        let free: Vec<(usize, Dof)> = piece
             .nodes
             .iter()
             .flat_map(|&n| [Dof::of(n, Component::X), Dof::of(n, Component::Y)])
             .filter_map(|d| match dofs.kind(d) {
-                DofKind::Free(i) => Some(i),
+                DofKind::Free(i) => Some((i, d)),
                 _ => None,
             })
             .collect();
@@ -138,9 +141,9 @@ fn stabilise(stiffness: &mut Csc, dofs: &DofMap, floating: &[FloatingPiece]) -> 
             let k = k.as_ref();
             k.row_idx_of_col(i).zip(k.val_of_col(i)).find(|(r, _)| *r == i).map_or(0.0, |(_, v)| *v)
         };
-        let mean = free.iter().map(|&i| diagonal(stiffness, i)).sum::<f64>() / free.len().max(1) as f64;
-        let k = FLOATING_SPRING * mean;
-        springs.extend(free.iter().map(|&i| (i, k)));
+        let mean = free.iter().map(|&(i, _)| diagonal(stiffness, i)).sum::<f64>() / free.len().max(1) as f64;
+        let k = FLOATING_PIN_STIFFNESS * mean;
+        springs.extend(pin_dofs(model, piece, &free).into_iter().map(|i| (i, k)));
     }
     if springs.is_empty() {
         return springs;
@@ -153,6 +156,46 @@ fn stabilise(stiffness: &mut Csc, dofs: &DofMap, floating: &[FloatingPiece]) -> 
         }
     }
     springs
+}
+
+/// One free DOF per free mode of `piece`, chosen greedily so that the pinned DOFs see every
+/// mode: each pick maximises the part of its row `(r_1(d), …, r_m(d))` (the modes' values at
+/// DOF `d`) orthogonal to the rows picked before (a column-pivoted QR of `Rᵀ`; ties go to the
+/// first DOF, so the choice is reproducible).
+fn pin_dofs(model: &Model, piece: &FloatingPiece, free: &[(usize, Dof)]) -> Vec<usize> {
+    let modes = piece.free_modes.len();
+    let rows: Vec<Vec<f64>> = free
+        .iter()
+        .map(|&(_, d)| {
+            let x = model.mesh.points[d.node()];
+            let c = d.0 % 2;
+            (0..modes).map(|m| piece.mode_displacement(m, x)[c]).collect()
+        })
+        .collect();
+    let mut basis: Vec<Vec<f64>> = vec![];
+    let mut pins = vec![];
+    for _ in 0..modes {
+        let residual = |row: &[f64]| {
+            let mut r = row.to_vec();
+            for q in &basis {
+                let dot: f64 = r.iter().zip(q).map(|(a, b)| a * b).sum();
+                r.iter_mut().zip(q).for_each(|(a, b)| *a -= dot * b);
+            }
+            r
+        };
+        let mut best: Option<(f64, usize, Vec<f64>)> = None;
+        for (k, row) in rows.iter().enumerate() {
+            let r = residual(row);
+            let norm = r.iter().map(|v| v * v).sum::<f64>().sqrt();
+            if best.as_ref().is_none_or(|b| norm > b.0) {
+                best = Some((norm, k, r));
+            }
+        }
+        let Some((norm, k, r)) = best.filter(|b| b.0 > 0.0) else { break };
+        basis.push(r.iter().map(|v| v / norm).collect());
+        pins.push(free[k].0);
+    }
+    pins
 }
 
 fn scatter_cell(model: &Model, dofs: &DofMap, b: usize, i: usize, t: &mut Triplets) -> Result<(), FemError> {

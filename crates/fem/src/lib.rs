@@ -25,7 +25,7 @@ pub mod solution;
 pub mod solve;
 mod sparse;
 
-pub use assembly::{Csc, FLOATING_SPRING, LinearSystem, assemble, assemble_body_forces, assemble_edge_loads};
+pub use assembly::{Csc, FLOATING_PIN_STIFFNESS, LinearSystem, assemble, assemble_body_forces, assemble_edge_loads};
 pub use dof::{Component, Dof, DofKind, DofMap};
 pub use error::FemError;
 pub use model::{Body, BodyId, Dirichlet, EdgeLoad, Model, element_type};

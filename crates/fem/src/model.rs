@@ -102,8 +102,9 @@ pub struct Model {
     /// Edge loads.
     pub edge_loads: Vec<EdgeLoad>,
     /// Whether a body piece that the Dirichlet conditions leave free to move rigidly is
-    /// accepted (held by contact; assembly then adds a vanishing stabilisation that the contact
-    /// solve removes, see [`crate::assembly::LinearSystem::stabilisation`]) instead of rejected
+    /// accepted (held by contact; assembly then pins it at as many DOFs as it has free rigid modes,
+    /// pins whose forces the contact solve drives to zero, see
+    /// [`crate::assembly::LinearSystem::stabilisation`]) instead of rejected
     /// with [`FemError::UnconstrainedBody`].
     pub allow_floating: bool,
 }

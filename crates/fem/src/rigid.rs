@@ -39,6 +39,14 @@ pub struct FloatingPiece {
 }
 
 impl FloatingPiece {
+    /// The displacement at `x` of free mode `mode` with unit amplitude:
+    /// `(a − θ (x2 − c2)/L, b + θ (x1 − c1)/L)` for the mode's `(a, b, θ)`.
+    pub fn mode_displacement(&self, mode: usize, x: [f64; 2]) -> [f64; 2] {
+        let [a, b, theta] = self.free_modes[mode];
+        let (dx, dy) = ((x[0] - self.centre[0]) / self.scale, (x[1] - self.centre[1]) / self.scale);
+        [a - theta * dy, b + theta * dx]
+    }
+
     /// Names of the free modes for people: "u1 translation", "u2 translation", "rotation", or
     /// a mixture written as its components.
     pub fn mode_names(&self) -> Vec<String> {

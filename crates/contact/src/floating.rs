@@ -1,0 +1,491 @@
+//! Bodies held only by contact: their rigid motions as unknowns of each step.
+//!
+//! Assembly pins every floating piece at as many DOFs as it has free rigid modes (springs `D`
+//! of the stiffness of its mean diagonal, [`contact2d_fem::LinearSystem::stabilisation`]). With
+//! the pins anchored at a rigid motion `R α` of the pieces, a step is an ordinary contact solve
+//!
+//! ```text
+//! (K + D) u = f + Bᵀλ + D R α        (K R = 0, so u − R α is the pinned piece's deformation)
+//! ```
+//!
+//! and the pins' forces `s(α) = D (u − R α)` (at the pinned DOFs) measure how far the answer is
+//! from equilibrium: `K u = f + Bᵀλ − s`, so `Rᵀ(f + Bᵀλ) = Rᵀ s` is the load the contact does
+//! not balance. The step is solved when `s(α) = 0` (Farhat and Roux's floating subdomains, the
+//! rigid modes as unknowns). `s` is piecewise linear in `α`, so a Newton iteration on `α` with
+//! a finite-difference Jacobian `J = ∂s/∂α` ends in a few steps:
+//!
+//! ```text
+//! range of J:      α ← α − J⁺ s                      (backtracked on ‖s‖₁)
+//! null space of J: the pieces move freely there (no contact engages): the unbalanced modal
+//!                  force F = Rᵀ s, projected on the null space, gives the direction d of travel,
+//!                  and the landing α ← α + t d with t = min_i gap_i / (−B_N R d)_i closes the
+//!                  first pair exactly; no pair ahead → the body is not held (an error)
+//! ```
+//!
+//! Any load lands in one step, however small, whatever the mesh; at zero load a body stays
+//! where it was (`α` carries over from the previous step), never an error.
+//!
+//! Landing is not slip: a pair that is open at the step's start has no stick anchor, so its
+//! reference for the slip increment is where the rigid travel brings it,
+//! `s_ref = s_start + B_T R (α_landing − α_start)`: the travel across a clearance does no friction
+//! work and the friction law does not see it.
+//!
+//! # References
+//! C. Farhat, F.-X. Roux (1991), A method of finite element tearing and interconnecting and its
+//! parallel solution algorithm, IJNME 32, 1205–1227 (the generalised inverse of a floating
+//! subdomain and its rigid modes); Z. Dostál et al. (2006), Total FETI, Comm. Numer. Meth. Eng.
+//! 22, 1155–1162.
+
+use nalgebra::{DMatrix, DVector};
+
+use crate::error::ContactError;
+use crate::interface::Interface;
+use crate::problem::ContactProblem;
+use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
+
+/// The free rigid modes of the floating pieces and their pins.
+#[derive(Debug, Clone)]
+pub(crate) struct RigidModes {
+    /// One free-DOF vector per mode, in the order of the pieces and their modes.
+    columns: Vec<Vec<f64>>,
+    /// `(piece, mode)` of each column.
+    owners: Vec<(usize, usize)>,
+    /// `(free index, k)` of the pins (as many as modes).
+    pins: Vec<(usize, f64)>,
+}
+
+impl RigidModes {
+    /// The modes of `problem`'s floating pieces, as free-DOF vectors.
+    pub(crate) fn of(problem: &ContactProblem) -> RigidModes {
+        let dofs = &problem.system.dofs;
+        let n = dofs.num_free();
+        let mut columns = vec![];
+        let mut owners = vec![];
+        for (p, piece) in problem.system.floating.iter().enumerate() {
+            for m in 0..piece.free_modes.len() {
+                let mut column = vec![0.0; n];
+                for &node in &piece.nodes {
+                    let r = piece.mode_displacement(m, problem.model.mesh.points[node]);
+                    for (c, value) in r.into_iter().enumerate() {
+                        if let contact2d_fem::DofKind::Free(i) = dofs.kind(contact2d_fem::Dof(2 * node + c)) {
+                            column[i] = value;
+                        }
+                    }
+                }
+                columns.push(column);
+                owners.push((p, m));
+            }
+        }
+        RigidModes { columns, owners, pins: problem.system.stabilisation.clone() }
+    }
+
+    /// Number of modes (the unknowns `α`).
+    pub(crate) fn len(&self) -> usize {
+        self.columns.len()
+    }
+
+    /// Whether the problem has no floating piece.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.columns.is_empty() || self.pins.len() != self.columns.len()
+    }
+
+    /// `R α` over the free DOFs.
+    fn displacement(&self, alpha: &[f64]) -> Vec<f64> {
+        let mut out = vec![0.0; self.columns.first().map_or(0, Vec::len)];
+        for (column, a) in self.columns.iter().zip(alpha) {
+            if *a != 0.0 {
+                out.iter_mut().zip(column).for_each(|(o, c)| *o += a * c);
+            }
+        }
+        out
+    }
+
+    /// The pins' anchor load `D R α` (free DOFs).
+    fn anchor_load(&self, alpha: &[f64]) -> Vec<f64> {
+        let rigid = self.displacement(alpha);
+        let mut out = vec![0.0; rigid.len()];
+        for &(i, k) in &self.pins {
+            out[i] = k * rigid[i];
+        }
+        out
+    }
+
+    /// The pins' forces `s = D (u − R α)` at the pinned DOFs.
+    fn pin_forces(&self, u_free: &[f64], alpha: &[f64]) -> Vec<f64> {
+        self.pins
+            .iter()
+            .map(|&(i, k)| {
+                let rigid: f64 = self.columns.iter().zip(alpha).map(|(c, a)| a * c[i]).sum();
+                k * (u_free[i] - rigid)
+            })
+            .collect()
+    }
+
+    /// The modal load `Rᵀ f` of a free-DOF load `f`.
+    fn modal_load(&self, load: &[f64]) -> Vec<f64> {
+        self.columns.iter().map(|c| c.iter().zip(load).map(|(a, b)| a * b).sum()).collect()
+    }
+
+    /// The modal force `Rᵀ s` of the pins' forces.
+    fn modal_force(&self, s: &[f64]) -> Vec<f64> {
+        self.columns.iter().map(|c| self.pins.iter().zip(s).map(|(&(i, _), f)| c[i] * f).sum()).collect()
+    }
+
+    /// The largest pin stiffness (the scale of `J`).
+    fn stiffness(&self) -> f64 {
+        self.pins.iter().fold(0.0f64, |a, p| a.max(p.1))
+    }
+}
+
+/// What one step of a floating problem needs besides the problem: the step's load factors, its
+/// start, the previous step's pair states, and the step number (for errors).
+pub(crate) struct FloatingStep<'a> {
+    /// Pattern factors of the step.
+    pub factors: &'a [f64],
+    /// Pattern factors of the previous step (zeros before the first).
+    pub previous_factors: &'a [f64],
+    /// The state the step starts from.
+    pub start: &'a StepStart,
+    /// The previous step's pair states (`None` before the first step).
+    pub guess: Option<&'a [PairState]>,
+    /// The step number, from 1.
+    pub step: usize,
+    /// Newton iterations allowed.
+    pub max_iterations: usize,
+    /// Relative tolerance on the pins' forces.
+    pub tolerance: f64,
+}
+
+/// The answer of a floating step: the solution, the Newton iterations, the pins' force left.
+pub(crate) struct FloatingAnswer {
+    pub solution: ContactSolution,
+    pub iterations: usize,
+    pub residual: f64,
+}
+
+/// The contact solve of one step at given `α`, `start` and warm-start `guess`.
+pub(crate) type StepSolver<'s> =
+    dyn Fn(&ContactProblem, &Interface, &StepStart, Option<&[PairState]>) -> ContactSolution + 's;
+
+/// Solves one step with the floating pieces' rigid motions `α` as unknowns (module docs);
+/// `alpha` enters as the previous step's and leaves as this step's.
+///
+/// A piece that is free during the step lands first. Along the step the load is
+/// `f(θ) = f_start + θ (f_end − f_start)`; where the pieces' modal load `Rᵀ f(θ)` vanishes inside
+/// the step (a load that reverses), the step is solved to that `θ*` first, and a step that
+/// starts with no pair in contact starts free (`θ* = 0`). From `θ*` a sub-step at
+/// `LANDING_FRACTION` of the rest of the increment carries the pieces across their clearances (in
+/// a quasi-static model any load, however small, does), and the step ends from where they
+/// landed. The step's dissipation is the sum over these legs.
+///
+/// # Errors
+/// A piece that no contact holds along the direction its load pushes it
+/// ([`ContactError::BodyNotHeld`]), or load factors the problem rejects.
+pub(crate) fn solve_floating_step(
+    loaded: &mut ContactProblem,
+    interface: &mut Interface,
+    modes: &RigidModes,
+    step: &FloatingStep,
+    alpha: &mut Vec<f64>,
+    solve: &StepSolver,
+) -> Result<FloatingAnswer, ContactError> {
+    let clock = web_time::Instant::now();
+    let along = |theta: f64| -> Vec<f64> {
+        step.previous_factors.iter().zip(step.factors).map(|(f0, f1)| f0 + theta * (f1 - f0)).collect()
+    };
+    let free_at_start = step.guess.is_none_or(|states| states.iter().all(|s| *s == PairState::Free));
+    let moves = step.factors.iter().zip(step.previous_factors).any(|(a, b)| a != b);
+    let release = match release_fraction(loaded, modes, step)? {
+        Some(theta) => Some(theta),
+        None if free_at_start && moves => Some(0.0),
+        None => None,
+    };
+    let mut legs = vec![];
+    if let Some(theta) = release {
+        if theta > 0.0 {
+            legs.push(along(theta));
+        }
+        legs.push(along(theta + LANDING_FRACTION * (1.0 - theta)));
+    }
+    legs.push(step.factors.to_vec());
+    let (mut start, mut guess) = (step.start.clone(), step.guess.map(<[PairState]>::to_vec));
+    let (mut dissipation, mut inner, mut outer) = (0.0, 0, 0);
+    let mut friction_slip = vec![0.0; step.start.slip.len()];
+    let mut last = None;
+    for leg in &legs {
+        let answer = balance_pins(loaded, interface, modes, step, leg, &start, guess.as_deref(), alpha, solve)?;
+        dissipation += answer.solution.dissipation;
+        friction_slip.iter_mut().zip(&answer.solution.slip_increment).for_each(|(a, d)| *a += d);
+        inner += answer.solution.iterations;
+        outer += answer.iterations;
+        let solved = answer.solution.status.is_solved();
+        start = StepStart::after(&answer.solution);
+        guess = Some(answer.solution.state.clone());
+        last = Some(answer);
+        if !solved {
+            break;
+        }
+    }
+    let Some(mut answer) = last else {
+        return Err(ContactError::InvalidInput("a floating step without a leg".into()));
+    };
+    answer.solution.dissipation = dissipation;
+    // The step's slip increment is the friction slip of its legs (landing travel excluded).
+    answer.solution.slip_increment = friction_slip;
+    answer.solution.iterations = inner;
+    answer.iterations = outer;
+    answer.solution.time = clock.elapsed();
+    Ok(answer)
+}
+
+/// The `θ*` strictly inside the step where the floating pieces' modal load `Rᵀ f(θ)` vanishes
+/// (to 1e-12 of its larger end value), if any: `Rᵀ f(θ)` is linear in `θ`, so `θ*` minimises
+/// `‖a + θ b‖` with `a = Rᵀ f_start`, `b = Rᵀ (f_end − f_start)`.
+fn release_fraction(
+    loaded: &mut ContactProblem,
+    modes: &RigidModes,
+    step: &FloatingStep,
+) -> Result<Option<f64>, ContactError> {
+    loaded.apply_load(step.previous_factors, None)?;
+    let a = modes.modal_load(&loaded.pattern_rhs);
+    loaded.apply_load(step.factors, None)?;
+    let c = modes.modal_load(&loaded.pattern_rhs);
+    let b: Vec<f64> = c.iter().zip(&a).map(|(c, a)| c - a).collect();
+    let dot = |x: &[f64], y: &[f64]| x.iter().zip(y).map(|(p, q)| p * q).sum::<f64>();
+    let bb = dot(&b, &b);
+    if bb == 0.0 {
+        return Ok(None);
+    }
+    let theta = -dot(&a, &b) / bb;
+    if !(theta > 0.0 && theta < 1.0) {
+        return Ok(None);
+    }
+    let at: Vec<f64> = a.iter().zip(&b).map(|(a, b)| a + theta * b).collect();
+    let scale = dot(&a, &a).sqrt().max(dot(&c, &c).sqrt());
+    Ok((dot(&at, &at).sqrt() <= 1e-12 * scale).then_some(theta))
+}
+
+/// The fraction of a step's load increment at which a piece free at the step's start lands.
+const LANDING_FRACTION: f64 = 1e-3;
+
+/// The Newton iteration of the module docs at pattern factors `factors`: `α` such that the pins
+/// carry no force, from `start`. The pairs open at `start` measure their slip from where the
+/// rigid travel of each landing brings them: `s_ref = s_start + B_T R (α_landing − α_start)`.
+#[allow(clippy::too_many_arguments)]
+fn balance_pins(
+    loaded: &mut ContactProblem,
+    interface: &mut Interface,
+    modes: &RigidModes,
+    step: &FloatingStep,
+    factors: &[f64],
+    step_start: &StepStart,
+    step_guess: Option<&[PairState]>,
+    alpha: &mut Vec<f64>,
+    solve: &StepSolver,
+) -> Result<FloatingAnswer, ContactError> {
+    loaded.apply_load(factors, None)?;
+    let load_scale = loaded.pattern_rhs.iter().fold(0.0f64, |a, r| a.max(r.abs()));
+    let alpha_start = alpha.clone();
+    let open_at_start: Vec<bool> = match step_guess {
+        Some(states) => states.iter().map(|s| *s == PairState::Free).collect(),
+        None => vec![true; loaded.num_pairs()],
+    };
+    let mut start = step_start.clone();
+    let inner_iterations = std::cell::Cell::new(0);
+    let evaluate = |loaded: &mut ContactProblem,
+                    interface: &mut Interface,
+                    alpha: &[f64],
+                    start: &StepStart,
+                    guess: Option<&[PairState]>|
+     -> Result<(ContactSolution, Vec<f64>), ContactError> {
+        loaded.apply_load(factors, Some(&modes.anchor_load(alpha)))?;
+        interface.update_load(loaded);
+        let solution = solve(loaded, interface, start, guess);
+        inner_iterations.set(inner_iterations.get() + solution.iterations);
+        let u_free = loaded.system.dofs.restrict_free(&solution.displacement);
+        let s = modes.pin_forces(&u_free, alpha);
+        Ok((solution, s))
+    };
+    let (mut solution, mut s) = evaluate(loaded, interface, alpha, &start, step_guess)?;
+    let mut iterations = 0;
+    let size = length_scale(loaded);
+    let finish = |mut solution: ContactSolution, iterations: usize, s: &[f64]| {
+        solution.iterations = inner_iterations.get();
+        FloatingAnswer { solution, iterations, residual: norm1(s) }
+    };
+    loop {
+        let scale = force_scale(load_scale, &solution);
+        let residual = norm1(&s);
+        // The pins' force of a displacement of 1e-12 of the model's size is round-off: the floor
+        // of the tolerance where the load and the contact forces vanish (an unloaded step).
+        let allowed = (step.tolerance * scale).max(1e-12 * modes.stiffness() * size);
+        if !residual.is_finite() || !solution.status.is_solved() || residual <= allowed {
+            return Ok(finish(solution, iterations, &s));
+        }
+        if iterations >= step.max_iterations {
+            solution.status = ContactStatus::MaxIterations;
+            return Ok(finish(solution, iterations, &s));
+        }
+        iterations += 1;
+        let guess = solution.state.clone();
+        // J = ∂s/∂α by forward differences (s is piecewise linear: exact away from a kink). The
+        // step moves the pins' forces by 1e-6 of the force scale: small against the answer's
+        // kinks (pairs changing state), large against the solve's round-off.
+        let h = (1e-6 * scale / modes.stiffness().max(f64::MIN_POSITIVE)).max(1e-12 * size);
+        // Each difference is taken the way the unbalanced modal force pushes the pieces: the
+        // one-sided derivative that matters at a pair that has just landed (gap 0, no force).
+        let force = modes.modal_force(&s);
+        let mut jacobian = DMatrix::<f64>::zeros(s.len(), modes.len());
+        for j in 0..modes.len() {
+            let hj = if force[j] < 0.0 { -h } else { h };
+            let mut shifted = alpha.clone();
+            shifted[j] += hj;
+            let (_, sj) = evaluate(loaded, interface, &shifted, &start, Some(&guess))?;
+            for (i, (a, b)) in sj.iter().zip(&s).enumerate() {
+                jacobian[(i, j)] = (a - b) / hj;
+            }
+        }
+        let svd = jacobian.svd(true, true);
+        let (Some(u), Some(v_t)) = (svd.u.as_ref(), svd.v_t.as_ref()) else {
+            solution.status = ContactStatus::Numerical;
+            return Ok(finish(solution, iterations, &s));
+        };
+        let engaged = |sigma: f64| sigma > 1e-8 * modes.stiffness();
+        // The modal force in the null space of J: where the pieces move freely.
+        let force = DVector::from_vec(force);
+        let mut travel = DVector::<f64>::zeros(modes.len());
+        for (k, sigma) in svd.singular_values.iter().enumerate() {
+            if !engaged(*sigma) {
+                let v = v_t.row(k).transpose();
+                travel += &v * v.dot(&force);
+            }
+        }
+        if travel.norm() > allowed {
+            let direction = travel.normalize();
+            let t = landing_distance(loaded, modes, &solution, direction.as_slice())
+                .ok_or_else(|| not_held(loaded, modes, direction.as_slice(), step.step))?;
+            let t = t * (1.0 + 1e-6);
+            alpha.iter_mut().zip(direction.iter()).for_each(|(a, d)| *a += t * d);
+            anchor_open_pairs(loaded, modes, &open_at_start, step_start, &alpha_start, alpha, &mut start);
+            (solution, s) = evaluate(loaded, interface, alpha, &start, Some(&guess))?;
+            continue;
+        }
+        // Newton on the engaged modes, backtracked on ‖s‖₁.
+        let mut delta = DVector::<f64>::zeros(modes.len());
+        let s_vec = DVector::from_column_slice(&s);
+        for (k, sigma) in svd.singular_values.iter().enumerate() {
+            if engaged(*sigma) {
+                delta -= v_t.row(k).transpose() * (u.column(k).dot(&s_vec) / sigma);
+            }
+        }
+        let mut fraction = 1.0;
+        let mut best: Option<(Vec<f64>, ContactSolution, Vec<f64>)> = None;
+        for _ in 0..8 {
+            let trial: Vec<f64> = alpha.iter().zip(delta.iter()).map(|(a, d)| a + fraction * d).collect();
+            let (trial_solution, trial_s) = evaluate(loaded, interface, &trial, &start, Some(&guess))?;
+            let better = norm1(&trial_s) < residual;
+            if best.is_none() || better {
+                best = Some((trial, trial_solution, trial_s));
+            }
+            if better {
+                break;
+            }
+            fraction *= 0.5;
+        }
+        if let Some((next_alpha, next_solution, next_s)) = best {
+            *alpha = next_alpha;
+            (solution, s) = (next_solution, next_s);
+        }
+    }
+}
+
+fn norm1(s: &[f64]) -> f64 {
+    s.iter().map(|v| v.abs()).sum()
+}
+
+/// The force scale of a step: the largest of the load's nodal forces and the contact forces.
+fn force_scale(load_scale: f64, solution: &ContactSolution) -> f64 {
+    solution
+        .normal_force
+        .iter()
+        .chain(&solution.tangential_force)
+        .fold(load_scale, |a, l| a.max(l.abs()))
+        .max(f64::MIN_POSITIVE)
+}
+
+/// The size of the model (the largest coordinate extent), the unit of `α`'s differences.
+fn length_scale(problem: &ContactProblem) -> f64 {
+    let points = &problem.model.mesh.points;
+    let extent = |c: usize| {
+        let (lo, hi) =
+            points.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| (lo.min(p[c]), hi.max(p[c])));
+        (hi - lo).max(0.0)
+    };
+    extent(0).max(extent(1)).max(f64::MIN_POSITIVE)
+}
+
+/// How far the pieces travel rigidly along `direction` (in `α`) until the first open pair
+/// closes: `min gap_i / c_i` over the pairs that close, `c_i = −B_N,i R d`; `None` when no pair
+/// lies ahead.
+fn landing_distance(
+    problem: &ContactProblem,
+    modes: &RigidModes,
+    solution: &ContactSolution,
+    direction: &[f64],
+) -> Option<f64> {
+    let rigid = modes.displacement(direction);
+    let zeros = vec![0.0; problem.system.dofs.num_constrained()];
+    let scale = rigid.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    let mut best: Option<f64> = None;
+    for (row, gap) in problem.normal_rows.iter().zip(&solution.gap) {
+        let closing = -row.dot(&rigid, &zeros);
+        // A row that does not see the travel (to round-off of the unit motion) cannot stop it.
+        if closing > 1e-9 * scale {
+            let t = gap.max(0.0) / closing;
+            best = Some(best.map_or(t, |b: f64| b.min(t)));
+        }
+    }
+    best
+}
+
+/// The slip references of the pairs open at the step's start moved along with the rigid travel
+/// from `alpha_start` to `alpha` (landing is not slip).
+fn anchor_open_pairs(
+    problem: &ContactProblem,
+    modes: &RigidModes,
+    open_at_start: &[bool],
+    original: &StepStart,
+    alpha_start: &[f64],
+    alpha: &[f64],
+    start: &mut StepStart,
+) {
+    let travel: Vec<f64> = alpha.iter().zip(alpha_start).map(|(a, b)| a - b).collect();
+    let rigid = modes.displacement(&travel);
+    let zeros = vec![0.0; problem.system.dofs.num_constrained()];
+    for (k, row) in problem.tangent_rows.iter().enumerate() {
+        if open_at_start.get(k).copied().unwrap_or(false) {
+            start.slip[k] = original.slip[k] + row.dot(&rigid, &zeros);
+        }
+    }
+}
+
+/// The error for the piece that moves most along `direction`, naming its modes that move.
+fn not_held(problem: &ContactProblem, modes: &RigidModes, direction: &[f64], step: usize) -> ContactError {
+    let largest = direction.iter().fold(0.0f64, |a, d| a.max(d.abs()));
+    let Some((worst, _)) =
+        direction.iter().enumerate().max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()).then(b.0.cmp(&a.0)))
+    else {
+        return ContactError::InvalidInput("a floating step without a floating body".into());
+    };
+    let piece_index = modes.owners[worst].0;
+    let piece = &problem.system.floating[piece_index];
+    let names = piece.mode_names();
+    let moving: Vec<String> = modes
+        .owners
+        .iter()
+        .zip(direction)
+        .filter(|((p, _), d)| *p == piece_index && d.abs() >= 1e-3 * largest)
+        .map(|((_, m), _)| names[*m].clone())
+        .collect();
+    ContactError::BodyNotHeld { body: piece.body.clone(), modes: moving, step }
+}
