@@ -289,10 +289,17 @@ fn print_generic(out: &mut impl Write, r: &contact2d::generic::GenericReport) ->
              max pressure {:.6e}, dissipation {:.3e}",
             c.normal_force, c.tangential_force, c.contact_length, c.stick_length, c.max_pressure, c.dissipation
         )?;
+        if let Some([f1, f2]) = c.rigid_resultant {
+            writeln!(out, "  contact {name}: rigid obstacle's resultant [{f1:.6e}, {f2:.6e}]")?;
+        }
     }
+    // A component the group's own fixes do not prescribe is "none" (JSON null).
+    let component = |f: Option<f64>| f.map_or_else(|| "none".to_string(), |v| format!("{v:.6e}"));
     for (group, f) in &r.reactions {
-        writeln!(out, "  reaction {group}: [{:.6e}, {:.6e}]", f[0], f[1])?;
+        writeln!(out, "  reaction {group}: [{}, {}]", component(f[0]), component(f[1]))?;
     }
+    let [t1, t2] = r.reactions_total;
+    writeln!(out, "  reactions total (every constrained DOF once): [{t1:.6e}, {t2:.6e}]")?;
     for (body, e) in &r.energies {
         writeln!(out, "  energy {body}: {e:.6e}")?;
     }

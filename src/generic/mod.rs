@@ -24,7 +24,7 @@ use contact2d_contact::{
 };
 use contact2d_mesh::read_msh;
 
-pub use results::{ContactResult, Kkt, Profile, StepResult};
+pub use results::{ContactResult, FixedGroup, Kkt, Profile, StepResult};
 pub use scene::GenericScene;
 
 use crate::input_file::{InputFileError, MAX_MESH_BYTES, check_input_file};
@@ -132,8 +132,11 @@ pub struct GenericReport {
     pub steps: Vec<StepResult>,
     /// The last step's interfaces, with profiles.
     pub contacts: BTreeMap<String, ContactResult>,
-    /// The last step's reactions per fixed group.
-    pub reactions: BTreeMap<String, [f64; 2]>,
+    /// The last step's reactions per fixed group (`null` in a component the group's own fixes
+    /// do not prescribe).
+    pub reactions: BTreeMap<String, [Option<f64>; 2]>,
+    /// The last step's reactions of every constrained DOF, each once: `[R1, R2]`.
+    pub reactions_total: [f64; 2],
     /// The last step's strain energy per body.
     pub energies: BTreeMap<String, f64>,
     /// The last step's KKT residuals.
@@ -227,9 +230,8 @@ fn solve_generic_from(
     let history =
         solve_with(&built.problem, &settings, &schedule, &mut |i, _| on_step(i + 1, total)).map_err(contact_error)?;
     let post_clock = Instant::now();
-    let fixed: Vec<String> = unique(scene.fix.iter().map(|f| f.group.clone()));
-    let mut steps = results::step_results(&built, &history, &fixed)
-        .map_err(|source| GenericError::Fem { scene: scene_name.clone(), source })?;
+    let fixed = fixed_groups(scene);
+    let mut steps = results::step_results(&built, &history, &fixed).map_err(contact_error)?;
     let last = steps.pop().ok_or_else(|| contact_error(ContactError::InvalidInput("no load step solved".into())))?;
     let mut summary_steps: Vec<StepResult> = steps;
     summary_steps.push(without_profiles(&last));
@@ -292,6 +294,7 @@ fn solve_generic_from(
         steps: summary_steps,
         contacts: last.contacts,
         reactions: last.reactions,
+        reactions_total: last.reactions_total,
         energies: last.energies,
         kkt: last.kkt,
         floating_bodies,
@@ -305,8 +308,24 @@ fn solve_generic_from(
     Ok(GenericOutcome { scene: scene.clone(), built, history, report })
 }
 
+/// The groups of the scene's `[[fix]]` entries, each with the components any of its entries
+/// prescribes.
+fn fixed_groups(scene: &GenericScene) -> Vec<FixedGroup> {
+    let mut out: Vec<FixedGroup> = vec![];
+    for f in &scene.fix {
+        let components = [f.u1.is_some(), f.u2.is_some()];
+        match out.iter_mut().find(|g| g.name == f.group) {
+            Some(g) => g.components = [g.components[0] || components[0], g.components[1] || components[1]],
+            None => out.push(FixedGroup { name: f.group.clone(), components }),
+        }
+    }
+    out
+}
+
 /// The dotted path of the first non-finite number in a serialised summary (serde_json writes
-/// NaN and ±∞ as `null`, and the summary has no other `null`).
+/// NaN and ±∞ as `null`). The only other `null` is a group reaction's component that the group
+/// does not prescribe (`reactions.<group>.<c>`): it is skipped, a NaN there being caught in
+/// `reactions_total`, which sums every constrained DOF.
 fn non_finite(value: &serde_json::Value, at: &str) -> Option<String> {
     let join = |k: &str| if at.is_empty() { k.to_string() } else { format!("{at}.{k}") };
     match value {
@@ -314,7 +333,13 @@ fn non_finite(value: &serde_json::Value, at: &str) -> Option<String> {
         serde_json::Value::Array(items) => {
             items.iter().enumerate().find_map(|(i, v)| non_finite(v, &join(&i.to_string())))
         }
-        serde_json::Value::Object(map) => map.iter().find_map(|(k, v)| non_finite(v, &join(k))),
+        serde_json::Value::Object(map) => map.iter().find_map(|(k, v)| match (k.as_str(), v) {
+            ("reactions", serde_json::Value::Object(groups)) => groups.iter().find_map(|(g, f)| {
+                let components = f.as_array().map(|c| c.iter().filter(|v| !v.is_null()).cloned().collect());
+                non_finite(&serde_json::Value::Array(components.unwrap_or_default()), &join(&format!("reactions.{g}")))
+            }),
+            _ => non_finite(v, &join(k)),
+        }),
         _ => None,
     }
 }

@@ -1,5 +1,6 @@
 //! Generic results of a solved scene: per interface the resultants, zone lengths and the profile
-//! along the master curve; reactions per fixed group; strain energy per body; KKT residuals.
+//! along the master curve; reactions per fixed group and in total; strain energy per body; KKT
+//! residuals.
 //!
 //! ```text
 //! pressure_k = λ_k / (w_k t)     shear_k = τ_k / (w_k t)        (stresses; ≥ 0 in compression)
@@ -12,13 +13,22 @@
 //! stick_length: likewise for the stick zone, with |Δs|^{2/3} of the next slipping pairs
 //!     (0 without friction)
 //! dissipation = Σ_steps Σ_k −½(τ_k,start + τ_k) Δs_k over the interface's slipping pairs
+//!
+//! reactions.<group>[c] = Σ_{nodes of group} r_(node, c)  where the group's own [[fix]] entries
+//!     prescribe c (null where they do not: another group's support is not this group's)
+//! reactions_total[c]   = Σ_{constrained DOFs in c} r      (every constrained DOF once)
+//! rigid_resultant      = Σ_k R_k over a rigid obstacle's pairs (its force on the bodies)
+//! Σ loads + reactions_total + Σ rigid_resultant = 0       (global equilibrium)
 //! ```
+//!
+//! The reactions `r` include the contact forces on constrained DOFs
+//! ([`contact2d_contact::ContactProblem::reactions`]).
 
 use std::collections::BTreeMap;
 
 use serde::Serialize;
 
-use contact2d_contact::{BuiltProblem, ContactSolution, History, InterfaceInfo, PairState};
+use contact2d_contact::{BuiltProblem, ContactError, ContactSolution, History, InterfaceInfo, PairState};
 
 use crate::output::step_view::state_label;
 
@@ -58,6 +68,10 @@ pub struct ContactResult {
     pub max_pressure: f64,
     /// Friction dissipation accumulated up to this step.
     pub dissipation: f64,
+    /// A rigid obstacle's force on the bodies, `[R1, R2]` (the interfaces with a deformable
+    /// slave have none: their pair forces are internal).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rigid_resultant: Option<[f64; 2]>,
     /// The profile (top level only; omitted in the per-step entries).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile: Option<Profile>,
@@ -93,8 +107,12 @@ pub struct StepResult {
     pub iterations: usize,
     /// Per interface.
     pub contacts: BTreeMap<String, ContactResult>,
-    /// Per fixed group: `[f1, f2]`.
-    pub reactions: BTreeMap<String, [f64; 2]>,
+    /// Per fixed group: `[f1, f2]`, a component `None` (JSON `null`) where the group's own
+    /// fixes do not prescribe it.
+    pub reactions: BTreeMap<String, [Option<f64>; 2]>,
+    /// `[R1, R2]`: the reactions of every constrained DOF, each counted once; with the loads and
+    /// the rigid obstacles' resultants it sums to zero.
+    pub reactions_total: [f64; 2],
     /// Per body: strain energy.
     pub energies: BTreeMap<String, f64>,
     /// Work of the loads and prescribed displacements up to this step, `W = Σ ½ (f_{i−1} + f_i) ·
@@ -120,15 +138,24 @@ pub fn status_name(status: contact2d_contact::ContactStatus) -> &'static str {
     }
 }
 
+/// A group that `[[fix]]` entries name, with the components they prescribe on it.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FixedGroup {
+    /// The physical group.
+    pub name: String,
+    /// Whether u1 and u2 are prescribed (by any of the group's entries).
+    pub components: [bool; 2],
+}
+
 /// The results of every step of `history`, the profile kept at the last.
 ///
 /// # Errors
-/// A strain energy that cannot be evaluated (an element failure).
+/// [`ContactError::InvalidInput`] when a step's solution does not fit the problem (reactions).
 pub fn step_results(
     built: &BuiltProblem,
     history: &History,
-    fixed_groups: &[String],
-) -> Result<Vec<StepResult>, contact2d_fem::FemError> {
+    fixed_groups: &[FixedGroup],
+) -> Result<Vec<StepResult>, ContactError> {
     let problem = &built.problem;
     let names: Vec<String> = problem.patterns().iter().map(|p| p.name.clone()).collect();
     let mut dissipated = vec![0.0; built.interfaces.len()];
@@ -144,7 +171,7 @@ pub fn step_results(
             dissipated[k] += interface_dissipation(iface, s, previous);
             contacts.insert(iface.name.clone(), contact_result(built, iface, s, dissipated[k], last));
         }
-        let reactions = reactions_at_dofs(built, s, &step.factors);
+        let reactions = reactions_at_dofs(built, s, &step.factors)?;
         let force = external_force(built, &reactions, &step.factors);
         let before = previous.map(|p| p.displacement.as_slice());
         work += s
@@ -163,6 +190,7 @@ pub fn step_results(
             iterations: s.iterations,
             contacts,
             reactions: group_reactions(built, &reactions, fixed_groups),
+            reactions_total: reactions_total(built, &reactions),
             energies,
             work,
             dissipated: step.dissipated,
@@ -246,14 +274,22 @@ fn body_energies(problem: &contact2d_contact::ContactProblem, owner: &[usize], u
 }
 
 /// The reactions of a step in global DOF order (zero at free DOFs).
-fn reactions_at_dofs(built: &BuiltProblem, s: &ContactSolution, factors: &[f64]) -> Vec<f64> {
+fn reactions_at_dofs(built: &BuiltProblem, s: &ContactSolution, factors: &[f64]) -> Result<Vec<f64>, ContactError> {
     let problem = &built.problem;
     let mut at_dof = vec![0.0; problem.system.dofs.num_global()];
-    let r = problem.reactions(&s.displacement, factors);
+    let r = problem.reactions(s, factors)?;
     for (j, d) in problem.system.dofs.constrained_dofs().iter().enumerate() {
         at_dof[d.0] = r[j];
     }
-    at_dof
+    Ok(at_dof)
+}
+
+/// `[R1, R2]`: the reactions (global DOF order) of every constrained DOF, each once.
+fn reactions_total(built: &BuiltProblem, at_dof: &[f64]) -> [f64; 2] {
+    built.problem.system.dofs.constrained_dofs().iter().fold([0.0; 2], |mut a, d| {
+        a[d.0 % 2] += at_dof[d.0];
+        a
+    })
 }
 
 /// The external nodal forces of a step in global DOF order: the loads of its pattern factors plus
@@ -266,14 +302,16 @@ fn external_force(built: &BuiltProblem, reactions: &[f64], factors: &[f64]) -> V
     f
 }
 
-/// `[f1, f2]` summed over the reactions (global DOF order) of each group's nodes.
-fn group_reactions(built: &BuiltProblem, at_dof: &[f64], groups: &[String]) -> BTreeMap<String, [f64; 2]> {
+/// `[f1, f2]` summed over the reactions (global DOF order) of each group's nodes, in the
+/// components the group's own fixes prescribe (`None` in the others: a node there may be held
+/// by another group, whose reaction that is).
+fn group_reactions(built: &BuiltProblem, at_dof: &[f64], groups: &[FixedGroup]) -> BTreeMap<String, [Option<f64>; 2]> {
     groups
         .iter()
         .filter_map(|g| {
-            let nodes = built.problem.model.mesh.group_nodes(g).ok()?;
-            let sum = nodes.iter().fold([0.0, 0.0], |a, n| [a[0] + at_dof[2 * n.0], a[1] + at_dof[2 * n.0 + 1]]);
-            Some((g.clone(), sum))
+            let nodes = built.problem.model.mesh.group_nodes(&g.name).ok()?;
+            let sum = |c: usize| g.components[c].then(|| nodes.iter().map(|n| at_dof[2 * n.0 + c]).sum::<f64>());
+            Some((g.name.clone(), [sum(0), sum(1)]))
         })
         .collect()
 }
@@ -325,8 +363,19 @@ pub fn contact_result(
         stick_length,
         max_pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).fold(0.0, f64::max),
         dissipation,
+        rigid_resultant: iface.rigid_slave.then(|| rigid_resultant(built, iface, s)),
         profile,
     }
+}
+
+/// The force a rigid obstacle exerts on the bodies through the interface's pairs, `Σ_k R_k`
+/// ([`contact2d_contact::ContactProblem::pair_resultant`]; NaN, caught as a non-finite summary,
+/// if a pair were out of range).
+fn rigid_resultant(built: &BuiltProblem, iface: &InterfaceInfo, s: &ContactSolution) -> [f64; 2] {
+    iface.pairs.clone().fold([0.0; 2], |a, k| {
+        let r = built.problem.pair_resultant(k, s.normal_force[k], s.tangential_force[k]).unwrap_or([f64::NAN; 2]);
+        [a[0] + r[0], a[1] + r[1]]
+    })
 }
 
 /// The length of the zone of pairs where `inside` holds (first to last such pair along `arc`),

@@ -79,7 +79,11 @@ fn sheared_steps(out: &GenericOutcome) -> Result<Vec<Sheared>, VerifyError> {
         if result.factors.get("shear").is_none_or(|f| *f == 0.0) {
             continue;
         }
-        let [q, p] = *result.reactions.get("cylinder_top").ok_or_else(|| missing("no reaction on cylinder_top"))?;
+        let [Some(q), Some(p)] =
+            *result.reactions.get("cylinder_top").ok_or_else(|| missing("no reaction on cylinder_top"))?
+        else {
+            return Err(missing("cylinder_top is not driven in both directions"));
+        };
         let p = -p;
         let exact = ClosedForm::new(p, q);
         let contact = contact_result(&out.built, iface, &step.solution, 0.0, true);

@@ -94,7 +94,7 @@ pub fn run(root: &Path, level: Level) -> Result<CaseReport, VerifyError> {
             let rows = history(&out)?;
             if scene.ends_with("pin_lug.toml") {
                 for (result, (factor, _, _)) in out.report.steps.iter().zip(&rows) {
-                    let reaction = result.reactions.get("lug_fixed").map_or(f64::NAN, |r| -r[0]);
+                    let reaction = result.reactions.get("lug_fixed").and_then(|r| r[0]).map_or(f64::NAN, |r| -r);
                     report.checks.push(Check {
                         quantity: format!("{label}: lug reaction = push (equilibrium)"),
                         mesh: format!("{name}, load {factor}"),

@@ -24,6 +24,7 @@ pub mod loading;
 pub mod pairing;
 pub mod post;
 pub mod problem;
+pub mod reactions;
 pub mod report;
 pub mod segment_to_segment;
 pub mod solution;

@@ -331,28 +331,6 @@ impl ContactProblem {
         out
     }
 
-    /// Reactions at the constrained DOFs (per constrained index) of a displacement field `u`
-    /// (global DOF order) under the load with pattern factors `factors`:
-    ///
-    /// ```text
-    /// r_c = K_cf u_f + K_cc u_c − Σ_p f_p f_c,p
-    /// ```
-    pub fn reactions(&self, displacement: &[f64], factors: &[f64]) -> Vec<f64> {
-        let dofs = &self.system.dofs;
-        let u_free = dofs.restrict_free(displacement);
-        let u_c: Vec<f64> = dofs.constrained_dofs().iter().map(|d| displacement[d.0]).collect();
-        // LinearSystem::reactions subtracts the model's own loads; add them back and subtract
-        // the patterns' instead.
-        let mut r = self.system.reactions(&u_free, &u_c);
-        for (j, d) in dofs.constrained_dofs().iter().enumerate() {
-            r[j] += self.system.load[d.0];
-            for (p, f) in self.patterns.iter().zip(factors) {
-                r[j] -= f * p.nodal[d.0];
-            }
-        }
-        r
-    }
-
     /// Whether any pair has friction.
     pub fn is_frictional(&self) -> bool {
         self.friction.iter().any(|mu| *mu > 0.0)

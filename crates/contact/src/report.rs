@@ -140,9 +140,19 @@ pub(crate) fn force_scale(problem: &ContactProblem, w: f64, lambda: &[f64], tau:
     lambda.iter().chain(tau).fold(load_force.max(k_max * length_scale), |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE)
 }
 
-/// Reactions of a contact solution: `K u − f` at constrained DOFs, as a fem [`Solution`].
+/// Reactions of a contact solution: `K u − f − B_Nᵀ λ − B_Tᵀ τ` at constrained DOFs (the contact
+/// forces a support carries included, as in [`ContactProblem::reactions`]), as a fem
+/// [`Solution`].
 pub fn fem_solution(problem: &ContactProblem, solution: &ContactSolution) -> Solution {
-    let u_free = problem.system.dofs.restrict_free(&solution.displacement);
+    let dofs = &problem.system.dofs;
+    let u_free = dofs.restrict_free(&solution.displacement);
     let prescribed: Vec<f64> = problem.pattern_prescribed.iter().map(|v| solution.load_factor * v).collect();
-    Solution::from_free(&problem.system, &u_free, &prescribed)
+    let mut out = Solution::from_free(&problem.system, &u_free, &prescribed);
+    let normal = solution.normal_force.iter().zip(&problem.normal_rows);
+    for (force, row) in normal.chain(solution.tangential_force.iter().zip(&problem.tangent_rows)) {
+        for (j, c) in &row.constrained {
+            out.reactions[dofs.constrained_dofs()[*j].0] -= c * force;
+        }
+    }
+    out
 }

@@ -127,7 +127,7 @@ fn press_then_slide_reaches_coulomb_gross_sliding() {
     assert!((normal - 20.0).abs() < 1e-8 * 20.0, "normal {normal}");
     assert!((tangential.abs() - mu * 20.0).abs() < 1e-8 * 20.0, "tangential {tangential} against μP = {}", mu * 20.0);
     // Reactions: the slid top carries −τ in x (the block is in equilibrium).
-    let reactions = built.problem.reactions(&last.solution.displacement, &last.factors);
+    let reactions = built.problem.reactions(&last.solution, &last.factors).unwrap();
     let dofs = &built.problem.system.dofs;
     let top: f64 = dofs
         .constrained_dofs()
@@ -138,6 +138,24 @@ fn press_then_slide_reaches_coulomb_gross_sliding() {
         .sum();
     assert!((top.abs() - mu * 20.0).abs() < 1e-7 * 20.0, "top reaction {top}");
     assert!(last.dissipated > 0.0);
+    // Every constrained DOF once: the clamped bottom and the slid top balance the press P = 20
+    // (x2) and each other (x1); the pairs are internal (their resultants vanish).
+    let mut total = [0.0; 2];
+    for (d, r) in dofs.constrained_dofs().iter().zip(&reactions) {
+        total[d.0 % 2] += r;
+    }
+    assert!(total[0].abs() < 1e-7 * 20.0 && (total[1] - 20.0).abs() < 1e-7 * 20.0, "total {total:?}");
+    for k in 0..built.problem.num_pairs() {
+        let (lambda, tau) = (last.solution.normal_force[k], last.solution.tangential_force[k]);
+        let r = built.problem.pair_resultant(k, lambda, tau).unwrap();
+        assert!(r[0].hypot(r[1]) <= 1e-12 * (lambda.abs() + tau.abs()).max(1.0), "pair {k}: {r:?}");
+    }
+    // Bad input is an error, not a panic.
+    let mut short = last.solution.clone();
+    short.normal_force.pop();
+    assert!(matches!(built.problem.reactions(&short, &last.factors), Err(ContactError::InvalidInput(_))));
+    assert!(matches!(built.problem.reactions(&last.solution, &[1.0]), Err(ContactError::InvalidInput(_))));
+    assert!(matches!(built.problem.pair_resultant(usize::MAX, 1.0, 0.0), Err(ContactError::InvalidInput(_))));
 }
 
 #[test]

@@ -191,7 +191,11 @@ pub fn cattaneo_mindlin_view(mesh_file: &str, outcome: &GenericOutcome) -> Resul
     let nu = [scene.body[0].poissons_ratio, scene.body[1].poissons_ratio];
     let mu = scene.contact.iter().find(|c| c.name == INTERFACE).map_or(0.0, |c| c.friction);
     let contact = report.contacts.get(INTERFACE).ok_or_else(|| WebError::Solve(format!("no interface {INTERFACE}")))?;
-    let [f1, f2] = *report.reactions.get(DRIVEN).ok_or_else(|| WebError::Solve(format!("no reaction on {DRIVEN}")))?;
+    let [Some(f1), Some(f2)] =
+        *report.reactions.get(DRIVEN).ok_or_else(|| WebError::Solve(format!("no reaction on {DRIVEN}")))?
+    else {
+        return Err(WebError::Solve(format!("{DRIVEN} is not driven in both directions")));
+    };
     let (p, q) = (-f2, f1);
     let measured = CattaneoMindlinMeasured {
         p,
