@@ -25,6 +25,7 @@ pub mod post;
 pub mod problem;
 pub mod report;
 pub mod segment_to_segment;
+mod side;
 pub mod solution;
 pub mod solve;
 
