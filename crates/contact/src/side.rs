@@ -119,8 +119,8 @@ impl SlaveBody {
         let d = [x[0] - p.point[0], x[1] - p.point[1]];
         let along = d[0] * n[0] + d[1] * n[1];
         let distance = d[0].hypot(d[1]);
-        let at_end = !slave.closed
-            && ((p.edge == 0 && p.xi <= -1.0) || (p.edge + 1 == slave.edges.len() && p.xi >= 1.0));
+        let at_end =
+            !slave.closed && ((p.edge == 0 && p.xi <= -1.0) || (p.edge + 1 == slave.edges.len() && p.xi >= 1.0));
         let facing = !at_end || (d[0] * t[0] + d[1] * t[1]).abs() <= FACING * distance;
         let own_body = p.own.iter().any(|m| self.cells_of.contains_key(m));
         let gap = if along >= 0.0 {
