@@ -112,6 +112,7 @@ fn a_block_on_a_rigid_obstacle_passes_with_segment_to_segment() {
                 pairing: Pairing::Automatic,
                 gap: GapDescription::Geometric,
                 friction: 0.0,
+                self_contact: false,
             }],
         };
         let built = description.build().unwrap();

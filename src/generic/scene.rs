@@ -189,6 +189,9 @@ pub struct ContactEntry {
     /// μ (default 0).
     #[serde(default)]
     pub friction: f64,
+    /// Master and slave may bound the same body (default `false`: such a pair is an error).
+    #[serde(default)]
+    pub self_contact: bool,
 }
 
 /// The `[loading]` section.
@@ -561,6 +564,7 @@ impl GenericScene {
                     GapKey::Named(_) => GapDescription::Geometric,
                 },
                 friction: c.friction,
+                self_contact: c.self_contact,
             })
             .collect();
         ProblemDescription { mesh, bodies, fixes, loads, contacts }

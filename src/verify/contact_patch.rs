@@ -144,6 +144,7 @@ pub fn measure(
             pairing,
             gap: GapDescription::Geometric,
             friction: 0.0,
+            self_contact: false,
         }],
     };
     let built = description.build()?;

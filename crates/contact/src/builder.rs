@@ -150,6 +150,10 @@ pub struct ContactDescription {
     pub gap: GapDescription,
     /// Coulomb's friction coefficient μ.
     pub friction: f64,
+    /// Whether master and slave may bound the same body (a body touching itself); without it
+    /// such a pair is [`ContactError::SameBody`]. A master point behind a slave curve of its own
+    /// body is then open (its gap is its distance to the curve), never an interference.
+    pub self_contact: bool,
 }
 
 /// A whole problem.
@@ -208,7 +212,8 @@ impl ProblemDescription {
     /// Invalid values (non-positive moduli or thickness, ν out of range, non-finite values,
     /// μ < 0), unknown or misdimensioned groups, a curve no region owns, a rigid slave that is a
     /// body, a deformable slave that is none, a value prescribed twice in two patterns, and
-    /// every error of the model, pairing and factorisation.
+    /// every error of the model, pairing and factorisation; [`ContactError::SameBody`] for an
+    /// interface whose two curves bound one body without `self_contact`.
     pub fn build(&self) -> Result<BuiltProblem, ContactError> {
         self.check_values()?;
         let mut mesh = self.mesh.clone();
@@ -345,6 +350,14 @@ impl ProblemDescription {
             _ => {}
         }
         let master_region = owning_region(&model.mesh, &c.master, &self.regions())?;
+        if master_region == region && !c.self_contact {
+            return Err(ContactError::SameBody {
+                contact: c.name.clone(),
+                body: region,
+                master: c.master.clone(),
+                slave: c.slave.clone(),
+            });
+        }
         if model.body(&master_region).is_none() {
             return Err(err(format!(
                 "contact \"{}\": the master curve bounds region \"{master_region}\", which is no [[body]]",

@@ -25,6 +25,23 @@ pub enum ContactError {
         /// What went wrong.
         reason: String,
     },
+    /// The two curves of an interface bound one body, and the interface does not declare
+    /// self-contact.
+    #[error(
+        "contact \"{contact}\": master \"{master}\" and slave \"{slave}\" both bound the body \"{body}\"; \
+         a contact joins two bodies (pick a curve of the other body, or set self_contact = true for a body \
+         that touches itself)"
+    )]
+    SameBody {
+        /// The interface.
+        contact: String,
+        /// The body both curves bound.
+        body: String,
+        /// The master curve.
+        master: String,
+        /// The slave curve.
+        slave: String,
+    },
     /// A body held only by contact that the contact does not hold under the load: no pair
     /// closes against some of its rigid motions (it would fly away or spin).
     #[error(

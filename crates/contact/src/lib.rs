@@ -27,6 +27,7 @@ pub mod problem;
 pub mod reactions;
 pub mod report;
 pub mod segment_to_segment;
+mod side;
 pub mod solution;
 pub mod solve;
 

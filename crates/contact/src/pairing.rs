@@ -7,7 +7,9 @@
 //! y = Σ_j N_j(ξ*) y_j,   ξ* = argmin |x(ξ) - x_m|  over every slave edge (Newton, ξ ∈ [-1, 1])
 //! n = unit normal of the slave curve at y, pointing out of the slave body (towards the master)
 //! t = (-n_y, n_x)                       (n turned counter-clockwise; the paper's l_c for n_c)
-//! g0 = (x_m - y) · n                    (initial gap, ≥ 0 when apart; geometric)
+//! g0 = (x_m - y) · n                    (initial gap, ≥ 0 when apart; geometric; |x_m − y| off
+//!                                        the slave curve's ends and behind a curve of the
+//!                                        master's own body: crate::side)
 //! gap(u) = g0 + n · (u_m - Σ_j N_j u_j) ≥ 0                            (non-penetration)
 //! w_m = Σ_edges ∫ N_m ds                (tributary length of the master node: p = -λ / w_m)
 //! γ   = ds_master / ds_slave            (force-transfer ratio of paired arc elements, (4.x))
@@ -23,6 +25,7 @@ use contact2d_mesh::{Contour, ContourEdge, NodeId};
 
 use crate::error::ContactError;
 use crate::segment_to_segment::IntegratedRows;
+use crate::side::{Projection, SlaveBody};
 
 /// One contact pair: a master node and its closest point on the slave curve.
 #[derive(Debug, Clone, PartialEq)]
@@ -68,7 +71,7 @@ pub fn pair_contours(
     slave_region: &str,
 ) -> Result<Vec<ContactPair>, ContactError> {
     let err = |reason: String| ContactError::Pairing { master: master.name.clone(), slave: slave.name.clone(), reason };
-    let centroids = slave_edge_centroids(model, slave_region, slave).map_err(err)?;
+    let body = SlaveBody::new(model, slave_region, slave).map_err(err)?;
     let weights = tributary_weights(master);
     let mut pairs = Vec::with_capacity(master.nodes.len());
     for (k, &m) in master.nodes.iter().enumerate() {
@@ -76,12 +79,8 @@ pub fn pair_contours(
         let (edge_index, xi) = closest_point(slave, &model.mesh.points, x);
         let edge = &slave.edges[edge_index];
         let (y, t, _) = slave.edge_frame(edge, xi);
-        let mut normal = [t[1], -t[0]];
-        let c = centroids[edge_index];
-        // Out of the slave body: away from the centroid of the cell that owns the edge.
-        if normal[0] * (y[0] - c[0]) + normal[1] * (y[1] - c[1]) < 0.0 {
-            normal = [-normal[0], -normal[1]];
-        }
+        let projection = Projection { edge: edge_index, xi, point: y, tangent: t, own: &[m] };
+        let (normal, gap) = body.normal_and_gap(slave, x, &projection);
         let shape = edge_shape(edge.quadratic, xi);
         let count = if edge.quadratic { 3 } else { 2 };
         let slave_nodes: Vec<(NodeId, f64)> =
@@ -92,7 +91,7 @@ pub fn pair_contours(
             slave_point: y,
             normal,
             tangent: [-normal[1], normal[0]],
-            gap: (x[0] - y[0]) * normal[0] + (x[1] - y[1]) * normal[1],
+            gap,
             weight: weights[k],
             gamma: 1.0,
             master_arc_length: master.arc_length[k],
@@ -219,36 +218,6 @@ fn snap(xi: f64) -> f64 {
         }
     }
     xi
-}
-
-pub(crate) fn slave_edge_centroids(model: &Model, region: &str, slave: &Contour) -> Result<Vec<[f64; 2]>, String> {
-    use std::collections::HashMap;
-    let blocks = model.mesh.blocks_in_group(region).map_err(|e| e.to_string())?;
-    let cells: Vec<&[NodeId]> = blocks.iter().filter(|b| b.kind.dim() == 2).flat_map(|b| b.cells()).collect();
-    let mut cells_of: HashMap<NodeId, Vec<usize>> = HashMap::new();
-    for (i, cell) in cells.iter().enumerate() {
-        for n in *cell {
-            cells_of.entry(*n).or_default().push(i);
-        }
-    }
-    slave
-        .edges
-        .iter()
-        .map(|e| {
-            let cell = cells_of
-                .get(&e.nodes[0])
-                .and_then(|cs| cs.iter().find(|&&c| cells[c].contains(&e.nodes[1])))
-                .ok_or_else(|| {
-                    format!("slave edge at node index {} does not bound region \"{region}\"", e.nodes[0].0)
-                })?;
-            let k = cells[*cell].len() as f64;
-            let sum = cells[*cell].iter().fold([0.0, 0.0], |a, n| {
-                let p = model.mesh.points[n.0];
-                [a[0] + p[0], a[1] + p[1]]
-            });
-            Ok([sum[0] / k, sum[1] / k])
-        })
-        .collect()
 }
 
 /// `w_a = Σ_edges ∫ N_a ds` for every node of the contour (5-point Gauss per edge).

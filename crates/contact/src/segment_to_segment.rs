@@ -11,7 +11,9 @@
 //! ```text
 //! w_k  = ∫_Γ φ_k(s) ds                                         (tributary length)
 //! g̃_k  = (1/w_k) ∫_Γ φ_k(s) [g0(s) + n(s)·(u_master(s) − u_slave(π(s)))] ds ≥ 0
-//! g0(s) = (x(s) − π(s)) · n(s)                                 (geometric gap)
+//! g0(s) = (x(s) − π(s)) · n(s)                                 (geometric gap; |x(s) − π(s)|
+//!                                     off the slave curve's ends and behind a curve of the
+//!                                     master's own body: crate::side)
 //! (B_N u)_k = Σ_j M_kj·u_j − Σ_l D_kl·u_l,
 //!   M_kj = (1/w_k) ∫ φ_k N_j n ds   (master nodes j),   D_kl = (1/w_k) ∫ φ_k N_l(π(s)) n ds   (slave nodes l)
 //! (B_T u)_k likewise with t(s)
@@ -51,7 +53,8 @@ use contact2d_fem::Model;
 use contact2d_mesh::{Contour, ContourEdge, NodeId};
 
 use crate::error::ContactError;
-use crate::pairing::{ContactPair, closest_point_unsnapped, edge_shape, pair_contours, slave_edge_centroids};
+use crate::pairing::{ContactPair, closest_point_unsnapped, edge_shape, pair_contours};
+use crate::side::{Projection, SlaveBody};
 
 /// One node's coefficients in an integrated pair row: the row is `Σ_a c_a · u_a` over nodes.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -100,7 +103,7 @@ pub fn pair_segments(
 ) -> Result<Vec<ContactPair>, ContactError> {
     let err = |reason: String| ContactError::Pairing { master: master.name.clone(), slave: slave.name.clone(), reason };
     let mut pairs = pair_contours(model, master, slave, slave_region)?;
-    let centroids = slave_edge_centroids(model, slave_region, slave).map_err(err)?;
+    let body = SlaveBody::new(model, slave_region, slave).map_err(err)?;
     let (gx, gw) = gauss_legendre(5).map_err(|e| err(e.to_string()))?;
     let points = &model.mesh.points;
     let mut sums = vec![NodeIntegrals::default(); master.nodes.len()];
@@ -119,13 +122,9 @@ pub fn pair_segments(
                 let (e, eta) = closest_point_unsnapped(slave, points, x);
                 let slave_edge = &slave.edges[e];
                 let (y, t, _) = slave.edge_frame(slave_edge, eta);
-                let mut normal = [t[1], -t[0]];
-                let c = centroids[e];
-                if normal[0] * (y[0] - c[0]) + normal[1] * (y[1] - c[1]) < 0.0 {
-                    normal = [-normal[0], -normal[1]];
-                }
+                let projection = Projection { edge: e, xi: eta, point: y, tangent: t, own: &edge.nodes[..count] };
+                let (normal, g0) = body.normal_and_gap(slave, x, &projection);
                 let tangent = [-normal[1], normal[0]];
-                let g0 = (x[0] - y[0]) * normal[0] + (x[1] - y[1]) * normal[1];
                 let n_slave = edge_shape(slave_edge.quadratic, eta);
                 let slave_count = if slave_edge.quadratic { 3 } else { 2 };
                 for a in 0..count {

@@ -64,6 +64,7 @@ fn description(mesh: Mesh, friction: f64, pressure: f64, slide: Option<f64>) -> 
             pairing: Pairing::NodeToSegment,
             gap: GapDescription::Geometric,
             friction,
+            self_contact: false,
         }],
     }
 }
