@@ -20,7 +20,8 @@ use web_time::Instant;
 use serde::Serialize;
 
 use contact2d_contact::{
-    BuiltProblem, ContactError, ContactStatus, History, builder::group_length, check_energy_balance, solve_with,
+    BuiltProblem, ContactError, ContactStatus, History, builder::group_length, check_energy_balance, energy_scale,
+    solve_with,
 };
 use contact2d_mesh::read_msh;
 
@@ -327,9 +328,10 @@ fn certified_status(history: &History, steps: &[StepResult], balance: bool) -> (
     if let Some(s) = history.steps.iter().map(|s| s.solution.status).find(|s| *s != ContactStatus::Converged) {
         return (results::status_name(s), None);
     }
+    let stored = |step: &StepResult| step.energies.values().sum::<f64>();
+    let scale = energy_scale(steps.iter().map(|s| (s.work, stored(s), s.dissipated)));
     for (i, step) in steps.iter().enumerate().filter(|_| balance) {
-        let stored: f64 = step.energies.values().sum();
-        if let Err(f) = check_energy_balance(step.work, stored, step.dissipated, history.scaled) {
+        if let Err(f) = check_energy_balance(step.work, stored(step), step.dissipated, history.scaled, scale) {
             return ("numerical", Some(format!("step {}: {f}", i + 1)));
         }
     }
