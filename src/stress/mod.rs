@@ -231,6 +231,6 @@ pub fn run_command(args: &StressArgs) -> Result<String, StressError> {
     for (name, text) in [("stress.csv", report::csv(&results)), ("stress.md", md.clone())] {
         out.write_bytes(name, text.as_bytes()).map_err(|e| file(&args.out.join(name), &e))?;
     }
-    out.finish(|name| name == "stress.csv" || name == "stress.md", |_| Ok(vec![])).map_err(|e| file(&args.out, &e))?;
+    out.close().map_err(|e| file(&args.out, &e))?;
     Ok(md)
 }
