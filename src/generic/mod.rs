@@ -178,6 +178,20 @@ pub fn solve_generic(
     scene: &GenericScene,
     on_step: &mut dyn FnMut(usize, usize),
 ) -> Result<GenericOutcome, GenericError> {
+    solve_generic_until(scene, None, on_step)
+}
+
+/// [`solve_generic`] with a wall-clock deadline checked before each load step
+/// ([`contact2d_contact::SolverSettings::with_deadline`]).
+///
+/// # Errors
+/// As [`solve_generic`]; a passed deadline is [`GenericError::Contact`] with
+/// [`ContactError::DeadlineExceeded`].
+pub fn solve_generic_until(
+    scene: &GenericScene,
+    deadline: Option<Instant>,
+    on_step: &mut dyn FnMut(usize, usize),
+) -> Result<GenericOutcome, GenericError> {
     let clock = Instant::now();
     let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
     // A FIFO or an endless device is refused before reading; the reader reports the rest.
@@ -192,7 +206,7 @@ pub fn solve_generic(
         mesh: mesh_name.clone(),
         source,
     })?;
-    solve_generic_from(scene, mesh, clock, on_step)
+    solve_generic_from(scene, mesh, clock, deadline, on_step)
 }
 
 /// [`solve_generic`] on a mesh already read instead of the scene's mesh file (which is neither
@@ -206,7 +220,7 @@ pub fn solve_generic_on_mesh(
     mesh: contact2d_mesh::Mesh,
     on_step: &mut dyn FnMut(usize, usize),
 ) -> Result<GenericOutcome, GenericError> {
-    solve_generic_from(scene, mesh, Instant::now(), on_step)
+    solve_generic_from(scene, mesh, Instant::now(), None, on_step)
 }
 
 /// The solve of [`solve_generic`] once the mesh is read (`clock` started before reading).
@@ -214,6 +228,7 @@ fn solve_generic_from(
     scene: &GenericScene,
     mesh: contact2d_mesh::Mesh,
     clock: Instant,
+    deadline: Option<Instant>,
     on_step: &mut dyn FnMut(usize, usize),
 ) -> Result<GenericOutcome, GenericError> {
     let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
@@ -224,6 +239,10 @@ fn solve_generic_from(
     let built = scene.description(mesh).build().map_err(contact_error)?;
     let schedule = scene.schedule()?;
     let settings = scene.settings()?;
+    let settings = match deadline {
+        Some(d) => settings.with_deadline(d),
+        None => settings,
+    };
     let total = schedule.steps().len();
     let history =
         solve_with(&built.problem, &settings, &schedule, &mut |i, _| on_step(i + 1, total)).map_err(contact_error)?;
