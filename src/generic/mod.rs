@@ -10,6 +10,7 @@
 pub mod outputs;
 pub mod results;
 pub mod scene;
+pub mod setup_notes;
 #[cfg(feature = "native")]
 pub mod sweep;
 
@@ -282,6 +283,9 @@ fn solve_generic_from(
         total: clock.elapsed().as_secs_f64(),
     };
     let mut notes = scene.element_warnings();
+    let regions: Vec<String> = scene.body.iter().map(|b| b.region.clone()).collect();
+    notes.extend(setup_notes::shared_node_notes(&built.problem.model.mesh, &regions));
+    notes.extend(setup_notes::deep_interference_notes(&built));
     if interference {
         notes.push(
             "energy balance not checked: the initial interference (negative gaps) stores energy that no load put in"
