@@ -20,7 +20,13 @@
 //!             finest mesh   two meshes: the baseline's value on the finest
 //!             same mesh     one mesh: the baseline on the same mesh (the method's error alone)
 //! error       |q − q_ref| / |q_ref|
+//! time limit  --time-limit seconds per combination (all its repeats), checked before each load
+//!             step: a combination past it stops and is listed as `timed_out`
+//! progress    one line per combination, reported through the caller's callback (the CLI
+//!             prints it to stderr)
 //! ```
+//! Every mesh (the `--mesh` levels, or the scene's own) is read before the first combination: a
+//! missing or malformed mesh is an error, not a table of failed rows.
 //!
 //! Writes `compare.csv`, `compare.md` and one work-precision figure per quantity
 //! (`compare_<quantity>.png`: error against whole-run time, one line per algorithm × pairing
@@ -32,9 +38,9 @@ use std::path::{Path, PathBuf};
 use contact2d_contact::{ContactAlgorithm, Pairing};
 use serde_json::Value;
 
-use crate::generic::{load_scene, solve_generic};
-use crate::output::OutputError;
+use crate::generic::{GenericError, load_scene, solve_generic_until};
 use crate::output::chart::{Axes, Series, line_chart};
+use crate::output::{OutputDir, OutputError};
 use crate::scene::SceneError;
 
 /// Command-line flags of `contact2d compare`.
@@ -57,7 +63,16 @@ pub struct CompareArgs {
     /// Output directory.
     #[arg(long, default_value = "compare-out")]
     pub out: PathBuf,
+    /// Wall-clock limit per combination in seconds (all its repeats together), checked before
+    /// each load step: a combination past it is listed as `timed_out` and the next one starts.
+    #[arg(long = "time-limit", default_value_t = DEFAULT_TIME_LIMIT_S)]
+    pub time_limit: f64,
 }
+
+/// The default `--time-limit` of a combination, seconds: a pin-cycle combination that converges
+/// finishes in seconds, so two minutes leaves ample room while a table of a dozen combinations
+/// that never finish still ends within the half hour.
+pub const DEFAULT_TIME_LIMIT_S: f64 = 120.0;
 
 /// What can stop a comparison (a combination that fails is a row, not an error).
 #[derive(Debug, thiserror::Error)]
@@ -85,6 +100,14 @@ pub enum CompareError {
     /// Drawing a figure.
     #[error(transparent)]
     Output(#[from] OutputError),
+    /// A mesh level (or the scene's own mesh) that cannot be read.
+    #[error("mesh {path}: {reason}")]
+    Mesh {
+        /// The mesh file.
+        path: PathBuf,
+        /// Why it cannot be used.
+        reason: String,
+    },
 }
 
 /// One algorithm × pairing × mesh.
@@ -98,7 +121,8 @@ pub struct CompareRow {
     pub level: usize,
     /// The mesh file.
     pub mesh: String,
-    /// The status, or `skipped`.
+    /// The status, `skipped` (refused or failed, see `reason`) or `timed_out` (past
+    /// `--time-limit`).
     pub status: String,
     /// Why it was skipped or failed (the library's message).
     pub reason: Option<String>,
@@ -136,31 +160,52 @@ pub struct Comparison {
     pub references: BTreeMap<String, Reference>,
 }
 
-/// Runs the comparison and writes its files; returns the markdown table.
+/// Runs the comparison and writes its files; returns the markdown table. `on_row(done, total,
+/// row)` is called after each combination (progress).
 ///
 /// # Errors
-/// An unreadable scene, a malformed flag, or an output that cannot be written.
-pub fn run_command(args: &CompareArgs) -> Result<String, CompareError> {
-    let comparison = compare(args)?;
-    std::fs::create_dir_all(&args.out).map_err(|source| CompareError::Io { path: args.out.clone(), source })?;
-    let write = |name: &str, text: String| {
-        let path = args.out.join(name);
-        std::fs::write(&path, text).map_err(|source| CompareError::Io { path, source })
-    };
+/// An unreadable scene or mesh, a malformed flag, or an output that cannot be written.
+pub fn run_command(
+    args: &CompareArgs,
+    on_row: &mut dyn FnMut(usize, usize, &CompareRow),
+) -> Result<String, CompareError> {
+    check_flags(args)?;
+    // The folder is checked and locked before the combinations run.
+    let mut out = OutputDir::prepare(&args.out, None)?;
+    let comparison = compare(args, on_row)?;
     let markdown = markdown(&comparison);
-    write("compare.md", markdown.clone())?;
-    write("compare.csv", csv(&comparison))?;
+    out.write_bytes("compare.md", markdown.as_bytes())?;
+    out.write_bytes("compare.csv", csv(&comparison).as_bytes())?;
     for quantity in comparison.references.keys() {
-        draw(&args.out.join(format!("compare_{}.png", quantity.replace('.', "_"))), quantity, &comparison.rows)?;
+        let name = format!("compare_{}.png", quantity.replace('.', "_"));
+        if has_points(quantity, &comparison.rows) {
+            out.write_with(&name, |path| draw(path, quantity, &comparison.rows))?;
+        }
     }
+    out.close()?;
     Ok(markdown)
 }
 
-/// Runs every combination (see the module docs).
+/// Checks the flags that need no file: `--time-limit` finite and positive.
+fn check_flags(args: &CompareArgs) -> Result<(), CompareError> {
+    if !(args.time_limit.is_finite() && args.time_limit > 0.0) {
+        return Err(CompareError::Flag {
+            flag: "--time-limit",
+            reason: format!("{} must be a positive number of seconds", args.time_limit),
+        });
+    }
+    Ok(())
+}
+
+/// Runs every combination (see the module docs), calling `on_row(done, total, row)` after each.
 ///
 /// # Errors
-/// An unreadable scene or a malformed `--reference`.
-pub fn compare(args: &CompareArgs) -> Result<Comparison, CompareError> {
+/// An unreadable scene or mesh, or a malformed `--reference` or `--time-limit`.
+pub fn compare(
+    args: &CompareArgs,
+    on_row: &mut dyn FnMut(usize, usize, &CompareRow),
+) -> Result<Comparison, CompareError> {
+    check_flags(args)?;
     let closed: Vec<(String, f64)> = args
         .references
         .iter()
@@ -184,6 +229,10 @@ pub fn compare(args: &CompareArgs) -> Result<Comparison, CompareError> {
     } else {
         args.meshes.iter().map(|m| Some(std::path::absolute(m).unwrap_or_else(|_| m.clone()))).collect()
     };
+    for mesh in &meshes {
+        let path = mesh.clone().unwrap_or_else(|| base.mesh_path());
+        check_mesh(&path)?;
+    }
     let mut quantities: Vec<String> = vec![];
     for c in &base.contact {
         quantities.push(format!("contacts.{}.max_pressure", c.name));
@@ -195,10 +244,13 @@ pub fn compare(args: &CompareArgs) -> Result<Comparison, CompareError> {
     quantities.push("energy".into());
     quantities.extend(closed.iter().map(|(p, _)| p.clone()).filter(|p| !quantities.contains(p)).collect::<Vec<_>>());
     let mut rows = vec![];
+    let total = ContactAlgorithm::ALL.len() * Pairing::ALL.len() * meshes.len();
     for &algorithm in &ContactAlgorithm::ALL {
         for &pairing in Pairing::ALL {
             for (level, mesh) in meshes.iter().enumerate() {
-                rows.push(run_one(args, base.contact.len(), algorithm, pairing, level, mesh.as_deref(), &quantities));
+                let row = run_one(args, base.contact.len(), algorithm, pairing, level, mesh.as_deref(), &quantities);
+                on_row(rows.len() + 1, total, &row);
+                rows.push(row);
             }
         }
     }
@@ -212,6 +264,13 @@ pub fn compare(args: &CompareArgs) -> Result<Comparison, CompareError> {
         }
     }
     Ok(Comparison { rows, references })
+}
+
+/// Reads `path` as a mesh (the reader's checks: size, FIFO, syntax).
+fn check_mesh(path: &Path) -> Result<(), CompareError> {
+    let fail = |reason: String| CompareError::Mesh { path: path.to_path_buf(), reason };
+    crate::input_file::check_input_file(path, crate::input_file::MAX_MESH_BYTES).map_err(|e| fail(e.reason()))?;
+    contact2d_mesh::read_msh(path).map(drop).map_err(|e| fail(e.to_string()))
 }
 
 fn run_one(
@@ -253,8 +312,10 @@ fn run_one(
         }
     };
     let (mut times, mut solve_times) = (vec![], vec![]);
+    let limit = std::time::Duration::from_secs_f64(args.time_limit);
+    let deadline = web_time::Instant::now() + limit;
     for _ in 0..args.repeat.max(1) {
-        match solve_generic(&scene, &mut |_, _| {}) {
+        match solve_generic_until(&scene, Some(deadline), &mut |_, _| {}) {
             Ok(outcome) => {
                 let report = &outcome.report;
                 times.push(report.time_s.total);
@@ -271,8 +332,18 @@ fn run_one(
                     }
                 }
             }
+            Err(GenericError::Contact { source, .. })
+                if matches!(*source, contact2d_contact::ContactError::DeadlineExceeded { .. }) =>
+            {
+                row.status = "timed_out".into();
+                row.reason = Some(format!("time limit of {} s: {source}", args.time_limit));
+                row.values.clear();
+                return row;
+            }
             Err(e) => {
+                row.status = "skipped".into();
                 row.reason = Some(e.to_string());
+                row.values.clear();
                 return row;
             }
         }
@@ -356,9 +427,9 @@ fn markdown(c: &Comparison) -> String {
     s += &"---|".repeat(quantities.len());
     s += "\n";
     for r in &c.rows {
-        if r.status == "skipped" {
+        if r.status == "skipped" || r.status == "timed_out" {
             let reason = r.reason.as_deref().unwrap_or("").replace('|', "/");
-            s += &format!("| {} | {} | {} | | skipped: {reason} |", r.algorithm, r.pairing, r.mesh);
+            s += &format!("| {} | {} | {} | | {}: {reason} |", r.algorithm, r.pairing, r.mesh, r.status);
             s += &" |".repeat(5 + quantities.len());
             s += "\n";
             continue;
@@ -410,6 +481,11 @@ fn csv(c: &Comparison) -> String {
         s += "\n";
     }
     s
+}
+
+/// Whether any row has a point of `quantity` to draw.
+fn has_points(quantity: &str, rows: &[CompareRow]) -> bool {
+    rows.iter().any(|r| r.errors.get(quantity).is_some_and(|e| *e > 0.0) && r.time > 0.0)
 }
 
 /// Error against whole-run time, one line per algorithm × pairing through its mesh levels.

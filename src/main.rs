@@ -133,6 +133,11 @@ enum Command {
     /// Examples:
     ///   contact2d compare scenes/generic/cylinder_on_block.toml --mesh meshes/generic/cylinder_on_block_L1.msh --mesh meshes/generic/cylinder_on_block_L2.msh --reference contacts.hertz.max_pressure=3585 --reference contacts.hertz.contact_length=6.21
     ///   contact2d compare scenes/generic/two_blocks_press_slide.toml --repeat 1 --out compare-out
+    ///   contact2d compare scenes/generic/pin_lug.toml --repeat 1 --time-limit 30
+    ///
+    /// Each combination prints a progress line on stderr. A combination still running after
+    /// --time-limit seconds (default 120, all its repeats together; checked between load steps)
+    /// stops and is listed with status timed_out.
     #[command(verbatim_doc_comment)]
     Compare(contact2d::compare::CompareArgs),
     /// The verification gallery: closed-form and published cases, measured against their
@@ -224,7 +229,17 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             }
         }
         Command::Stress(args) => writeln!(std::io::stdout().lock(), "{}", contact2d::stress::run_command(&args)?)?,
-        Command::Compare(args) => writeln!(std::io::stdout().lock(), "{}", contact2d::compare::run_command(&args)?)?,
+        Command::Compare(args) => {
+            // One progress line per combination on stderr: a long table shows where it is.
+            let mut progress = |done: usize, total: usize, row: &contact2d::compare::CompareRow| {
+                let time = if row.time.is_finite() { format!(", {:.2} s", row.time) } else { String::new() };
+                eprintln!(
+                    "compare {done}/{total}: {} × {} on {}: {}{time}",
+                    row.algorithm, row.pairing, row.mesh, row.status
+                );
+            };
+            writeln!(std::io::stdout().lock(), "{}", contact2d::compare::run_command(&args, &mut progress)?)?;
+        }
     }
     Ok(())
 }

@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use contact2d_contact::{
     BoussinesqLoading, ContactError, ContactSolution, ContactStatus, HistoryStep, Interface, StepAlgorithm, certify,
-    check_energy_balance, equal_steps, solve_boussinesq_history, solve_history_with,
+    check_energy_balance, energy_scale, equal_steps, solve_boussinesq_history, solve_history_with,
 };
 
 use crate::plate_insert::{
@@ -487,6 +487,7 @@ fn certified_status(scene: &Scene, solved: &[SolvedStep], steps: &[StepReport]) 
     // One proportional step from the unloaded state (no gap: solved once and scaled) makes
     // W = P w / 2 exact; otherwise W is the trapezoid rule over the steps.
     let exact = p.clearance == 0.0 && p.l_steps.is_empty();
+    let scale = energy_scale(steps.iter().map(|r| (r.W, r.Phi_E1 + r.Phi_E2, r.Phi_f)));
     for (i, (step, report)) in solved.iter().zip(steps).enumerate() {
         let status = step.solution.status;
         if status == ContactStatus::Numerical {
@@ -496,7 +497,7 @@ fn certified_status(scene: &Scene, solved: &[SolvedStep], steps: &[StepReport]) 
         if status != ContactStatus::Converged {
             return (status, None);
         }
-        let balance = check_energy_balance(report.W, report.Phi_E1 + report.Phi_E2, report.Phi_f, exact);
+        let balance = check_energy_balance(report.W, report.Phi_E1 + report.Phi_E2, report.Phi_f, exact, scale);
         if let Err(f) = balance {
             return (ContactStatus::Numerical, Some(format!("step {}: {f}", i + 1)));
         }

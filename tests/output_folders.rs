@@ -3,7 +3,7 @@
 //! ```text
 //! lock       a second writer (live lock holder) is refused before solving; a stale lock goes
 //! stale      a 3-step run then a 1-step run: history.*, step_001/002.vtu are gone, the user's
-//!            own file stays, summary.json lists exactly the files present
+//!            own files stay (even one named like an output), summary.json lists exactly the files present
 //! fail fast  an --out that cannot be created fails before the solve (no report on stdout)
 //! killed     SIGTERM at any moment: either no summary.json, or one listing exactly the
 //!            (non-hidden) files present
@@ -101,16 +101,17 @@ fn a_shorter_run_removes_the_stale_files_and_keeps_the_users() {
         assert!(dir.join(stale).exists(), "{stale} after three steps");
     }
     std::fs::write(dir.join("my_notes.txt"), "the user's own file").unwrap();
-    // Outputs of ours not listed by any manifest (e.g. left by a killed run) are ours by name.
-    std::fs::write(dir.join("step_007.vtu"), "left over").unwrap();
+    // Named like an output but listed by no record (issue 27): the user's, and it stays.
+    std::fs::write(dir.join("step_007.vtu"), "the user's own step").unwrap();
     assert!(run(&dir, &["--set", "plate_insert.steps=1"]).status.success());
-    for stale in ["history.png", "history.svg", "step_001.vtu", "step_002.vtu", "step_007.vtu"] {
+    for stale in ["history.png", "history.svg", "step_001.vtu", "step_002.vtu"] {
         assert!(!dir.join(stale).exists(), "{stale} is stale after one step");
     }
     let mut present = names(&dir);
-    present.retain(|n| n != "my_notes.txt");
+    present.retain(|n| n != "my_notes.txt" && n != "step_007.vtu");
     assert_eq!(listed(&dir).unwrap(), present, "summary.json lists exactly the run's files");
     assert_eq!(std::fs::read_to_string(dir.join("my_notes.txt")).unwrap(), "the user's own file");
+    assert_eq!(std::fs::read_to_string(dir.join("step_007.vtu")).unwrap(), "the user's own step");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -373,16 +373,6 @@ fn out_err(path: &Path, e: &dyn std::fmt::Display) -> BenchError {
     BenchError::Output { path: path.display().to_string(), reason: e.to_string() }
 }
 
-/// Whether `name` is a file the bench writes (stale ones of an earlier bench are removed).
-fn is_bench_output(name: &str) -> bool {
-    name == "bench.csv"
-        || name == "bench.md"
-        || name
-            .strip_prefix("bench_")
-            .and_then(|n| n.rsplit_once('.'))
-            .is_some_and(|(case, ext)| BenchCase::ALL.iter().any(|c| c.name() == case) && ["svg", "png"].contains(&ext))
-}
-
 /// Writes `bench.csv`, `bench.md` and the figures into `dir`; returns the markdown.
 ///
 /// # Errors
@@ -407,7 +397,7 @@ pub fn write_outputs_into(mut out: OutputDir, measurements: &[Measurement]) -> R
     for (name, text) in [("bench.md", md.clone()), ("bench.csv", report::csv(measurements, &refs))] {
         out.write_bytes(name, text.as_bytes()).map_err(|e| out_err(&dir.join(name), &e))?;
     }
-    out.finish(is_bench_output, |_| Ok(vec![])).map_err(|e| out_err(&dir, &e))?;
+    out.close().map_err(|e| out_err(&dir, &e))?;
     Ok(md)
 }
 

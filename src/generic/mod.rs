@@ -10,6 +10,7 @@
 pub mod outputs;
 pub mod results;
 pub mod scene;
+pub mod setup_notes;
 #[cfg(feature = "native")]
 pub mod sweep;
 
@@ -20,7 +21,8 @@ use web_time::Instant;
 use serde::Serialize;
 
 use contact2d_contact::{
-    BuiltProblem, ContactError, ContactStatus, History, builder::group_length, check_energy_balance, solve_with,
+    BuiltProblem, ContactError, ContactStatus, History, builder::group_length, check_energy_balance, energy_scale,
+    solve_with,
 };
 use contact2d_mesh::read_msh;
 
@@ -180,6 +182,20 @@ pub fn solve_generic(
     scene: &GenericScene,
     on_step: &mut dyn FnMut(usize, usize),
 ) -> Result<GenericOutcome, GenericError> {
+    solve_generic_until(scene, None, on_step)
+}
+
+/// [`solve_generic`] with a wall-clock deadline checked before each load step
+/// ([`contact2d_contact::SolverSettings::with_deadline`]).
+///
+/// # Errors
+/// As [`solve_generic`]; a passed deadline is [`GenericError::Contact`] with
+/// [`ContactError::DeadlineExceeded`].
+pub fn solve_generic_until(
+    scene: &GenericScene,
+    deadline: Option<Instant>,
+    on_step: &mut dyn FnMut(usize, usize),
+) -> Result<GenericOutcome, GenericError> {
     let clock = Instant::now();
     let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
     // A FIFO or an endless device is refused before reading; the reader reports the rest.
@@ -194,7 +210,7 @@ pub fn solve_generic(
         mesh: mesh_name.clone(),
         source,
     })?;
-    solve_generic_from(scene, mesh, clock, on_step)
+    solve_generic_from(scene, mesh, clock, deadline, on_step)
 }
 
 /// [`solve_generic`] on a mesh already read instead of the scene's mesh file (which is neither
@@ -208,7 +224,7 @@ pub fn solve_generic_on_mesh(
     mesh: contact2d_mesh::Mesh,
     on_step: &mut dyn FnMut(usize, usize),
 ) -> Result<GenericOutcome, GenericError> {
-    solve_generic_from(scene, mesh, Instant::now(), on_step)
+    solve_generic_from(scene, mesh, Instant::now(), None, on_step)
 }
 
 /// The solve of [`solve_generic`] once the mesh is read (`clock` started before reading).
@@ -216,6 +232,7 @@ fn solve_generic_from(
     scene: &GenericScene,
     mesh: contact2d_mesh::Mesh,
     clock: Instant,
+    deadline: Option<Instant>,
     on_step: &mut dyn FnMut(usize, usize),
 ) -> Result<GenericOutcome, GenericError> {
     let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
@@ -226,6 +243,10 @@ fn solve_generic_from(
     let built = scene.description(mesh).build().map_err(contact_error)?;
     let schedule = scene.schedule()?;
     let settings = scene.settings()?;
+    let settings = match deadline {
+        Some(d) => settings.with_deadline(d),
+        None => settings,
+    };
     let total = schedule.steps().len();
     let history =
         solve_with(&built.problem, &settings, &schedule, &mut |i, _| on_step(i + 1, total)).map_err(contact_error)?;
@@ -264,6 +285,9 @@ fn solve_generic_from(
         total: clock.elapsed().as_secs_f64(),
     };
     let mut notes = scene.element_warnings();
+    let regions: Vec<String> = scene.body.iter().map(|b| b.region.clone()).collect();
+    notes.extend(setup_notes::shared_node_notes(&built.problem.model.mesh, &regions));
+    notes.extend(setup_notes::deep_interference_notes(&built));
     if interference {
         notes.push(
             "energy balance not checked: the initial interference (negative gaps) stores energy that no load put in"
@@ -352,9 +376,10 @@ fn certified_status(history: &History, steps: &[StepResult], balance: bool) -> (
     if let Some(s) = history.steps.iter().map(|s| s.solution.status).find(|s| *s != ContactStatus::Converged) {
         return (results::status_name(s), None);
     }
+    let stored = |step: &StepResult| step.energies.values().sum::<f64>();
+    let scale = energy_scale(steps.iter().map(|s| (s.work, stored(s), s.dissipated)));
     for (i, step) in steps.iter().enumerate().filter(|_| balance) {
-        let stored: f64 = step.energies.values().sum();
-        if let Err(f) = check_energy_balance(step.work, stored, step.dissipated, history.scaled) {
+        if let Err(f) = check_energy_balance(step.work, stored(step), step.dissipated, history.scaled, scale) {
             return ("numerical", Some(format!("step {}: {f}", i + 1)));
         }
     }

@@ -70,22 +70,11 @@ pub fn write_generic_outputs_into(mut out: OutputDir, outcome: &GenericOutcome) 
     let mut report = outcome.report.clone();
     report.notes.extend(skipped);
     let summary_path = out.path().join(SUMMARY_FILE);
-    out.finish(is_generic_output, |files| {
+    out.finish(|files| {
         let value = serde_json::to_value(&report)
             .map_err(|e| OutputError::Serialize { path: summary_path.clone(), reason: e.to_string() })?;
         atomic::manifest_json(value, files, &summary_path)
     })
-}
-
-/// Whether a file name is one a generic run writes (stale copies of it are removed).
-pub fn is_generic_output(name: &str) -> bool {
-    let (stem, ext) = name.rsplit_once('.').unwrap_or((name, ""));
-    let figure = (["mesh", "von_mises", "history"].contains(&stem) || stem.starts_with("contact_"))
-        && FIGURE_EXTENSIONS.contains(&ext);
-    let csv = ext == "csv" && (stem == "steps" || stem.starts_with("contact_"));
-    let step = ext == "vtu"
-        && stem.strip_prefix("step_").is_some_and(|k| k.len() >= 3 && k.bytes().all(|b| b.is_ascii_digit()));
-    figure || csv || step || ["steps.pvd", SUMMARY_FILE].contains(&name)
 }
 
 /// A name usable in a file name: letters, digits, `-` and `_` kept, anything else `_`.

@@ -170,7 +170,7 @@ pub fn write_generic_sweep(
         }
     }
     out.write_bytes("sweep.md", md.as_bytes())?;
-    out.finish(|n| n.starts_with("sweep"), |_| Ok(vec![]))
+    out.close()
 }
 
 fn plot(

@@ -10,10 +10,16 @@
 //!                                     file system); the first write removes the old manifest
 //! out.stream(name)                    a file that grows while the work goes on (rows flushed as
 //!                                     they finish) as <name>.partial, renamed by commit()
-//! out.finish(manifest_bytes, is_own)  remove stale files (listed by the previous manifest, or
-//!                                     named like our outputs by is_own) not written now, then
-//!                                     write the manifest last, then release the lock
+//! out.finish(manifest_bytes)          remove stale files (those the previous manifest listed)
+//! out.close()                         not written now, then write the manifest (or, for a folder
+//!                                     without one, the hidden record .contact2d-files.json) last,
+//!                                     then release the lock
 //! ```
+//! Temporary and `.partial` files are created exclusively (`create_new`, and `O_NOFOLLOW` on
+//! Linux): a file or symbolic link already at that name is removed (never followed) first, so a
+//! link planted there cannot redirect the output onto another file. Cleanup removes only the
+//! files the folder's own record lists (and their temporary and `.partial` leftovers): a file
+//! that merely looks like an output (`step_007.vtu` of the user's) stays.
 //! A folder therefore holds either a manifest and exactly the files it lists, or no manifest
 //! (a run that failed or was killed while writing). Dropping an [`OutputDir`] without
 //! [`OutputDir::finish`] removes the files this run wrote (except streamed `.partial` files,
@@ -38,12 +44,17 @@ pub const TEMP_PREFIX: &str = ".contact2d-tmp-";
 /// The suffix of a streamed file until [`StreamedFile::commit`].
 pub const PARTIAL_SUFFIX: &str = ".partial";
 
+/// The hidden record of a folder without a manifest of its own (sweep, stress, bench, verify):
+/// the same JSON as a manifest, listing the files the run wrote, so that the next run removes
+/// exactly those that it does not write again.
+pub const RECORD_FILE: &str = ".contact2d-files.json";
+
 /// An output folder being written: locked against other writers, every file atomic.
 #[derive(Debug)]
 pub struct OutputDir {
     dir: PathBuf,
     lock: PathBuf,
-    manifest: Option<String>,
+    manifest: String,
     previous: Vec<String>,
     written: Vec<String>,
     manifest_removed: bool,
@@ -65,11 +76,12 @@ impl OutputDir {
         std::fs::create_dir_all(dir).map_err(|e| OutputError::io(dir, e))?;
         let lock = dir.join(LOCK_FILE);
         take_lock(dir, &lock)?;
-        let previous = manifest.map_or_else(Vec::new, |m| previous_files(&dir.join(m)));
+        let record = manifest.unwrap_or(RECORD_FILE);
+        let previous = previous_files(&dir.join(record));
         Ok(OutputDir {
             dir: dir.to_path_buf(),
             lock,
-            manifest: manifest.map(String::from),
+            manifest: record.to_string(),
             previous,
             written: vec![],
             manifest_removed: false,
@@ -93,13 +105,15 @@ impl OutputDir {
     /// [`OutputError::Io`] naming the file (the temporary file is removed).
     pub fn write_bytes(&mut self, name: &str, bytes: &[u8]) -> Result<PathBuf, OutputError> {
         self.write_with(name, |tmp| {
-            let mut f = std::fs::File::create(tmp).map_err(|e| OutputError::io(tmp, e))?;
+            // write_with created `tmp` exclusively: open that regular file, never a link.
+            let mut f = open_no_follow(tmp).map_err(|e| OutputError::io(tmp, e))?;
             f.write_all(bytes).map_err(|e| OutputError::io(tmp, e))
         })
     }
 
-    /// Runs `write` on a temporary path in the folder (same extension as `name`), then syncs and
-    /// renames it onto `name`; returns the final path. On any error the temporary file is removed
+    /// Creates a temporary file in the folder exclusively (same extension as `name`; see the
+    /// module docs), runs `write` on its path, then syncs and renames it onto `name`; returns the
+    /// final path. On any error the temporary file is removed
     /// and `name` is left as it was; the error names `name`'s final path.
     ///
     /// # Errors
@@ -112,7 +126,8 @@ impl OutputDir {
         let target = self.target(name)?;
         self.remove_old_manifest()?;
         let tmp = self.dir.join(format!("{TEMP_PREFIX}{}-{name}", std::process::id()));
-        if let Err(e) = write(&tmp).and_then(|()| commit(&tmp, &target)) {
+        let created = create_exclusive(&tmp).map(drop).map_err(|e| OutputError::io(&tmp, e));
+        if let Err(e) = created.and_then(|()| write(&tmp)).and_then(|()| commit(&tmp, &target)) {
             let _ = std::fs::remove_file(&tmp);
             return Err(e.at_path(&tmp, &target));
         }
@@ -120,7 +135,8 @@ impl OutputDir {
         Ok(target)
     }
 
-    /// Opens `name` + [`PARTIAL_SUFFIX`] for a file written piece by piece (each
+    /// Creates `name` + [`PARTIAL_SUFFIX`] exclusively (see the module docs) for a file written
+    /// piece by piece (each
     /// [`StreamedFile::append`] is flushed, so an interrupted run keeps what was finished);
     /// [`StreamedFile::commit`] renames it onto `name`.
     ///
@@ -130,7 +146,7 @@ impl OutputDir {
         let target = self.target(name)?;
         self.remove_old_manifest()?;
         let partial = self.dir.join(format!("{name}{PARTIAL_SUFFIX}"));
-        let file = std::fs::File::create(&partial).map_err(|e| OutputError::io(&partial, e))?;
+        let file = create_exclusive(&partial).map_err(|e| OutputError::io(&partial, e))?;
         Ok(StreamedFile { file: std::io::BufWriter::new(file), partial, target })
     }
 
@@ -141,33 +157,63 @@ impl OutputDir {
         }
     }
 
-    /// Ends the run: removes stale files — those the previous manifest listed, those `is_own`
-    /// recognises as this writer's outputs, temporary and `.partial` files — that this run did not
-    /// write, then writes the manifest (when the folder has one) from `manifest(files)` with the
-    /// run's file names (the manifest's own name last), then releases the lock. Returns the paths
-    /// of the run's files, the manifest last.
+    /// Ends the run: removes stale files — those the previous manifest listed, and temporary or
+    /// `.partial` leftovers of a listed or written name — that this run did not write, then writes
+    /// the manifest from `manifest(files)` with the run's file names (the manifest's own name
+    /// last; make it with [`manifest_json`] so that the next run can read it), then releases the
+    /// lock. Returns the paths of the run's files, the manifest last.
     ///
     /// # Errors
     /// [`OutputError::Io`] when a stale file cannot be removed or the manifest cannot be written.
     pub fn finish(
         mut self,
-        is_own: impl Fn(&str) -> bool,
         manifest: impl FnOnce(&[String]) -> Result<Vec<u8>, OutputError>,
     ) -> Result<Vec<PathBuf>, OutputError> {
-        self.remove_stale(&is_own)?;
-        if let Some(name) = self.manifest.clone() {
-            let mut files = self.written.clone();
-            files.push(name.clone());
-            let bytes = manifest(&files)?;
+        self.remove_stale()?;
+        let name = self.manifest.clone();
+        let mut files = self.written.clone();
+        files.push(name.clone());
+        let bytes = manifest(&files)?;
+        if name == RECORD_FILE {
+            // The hidden record is written directly: write_bytes refuses reserved names.
+            self.write_reserved(&name, &bytes)?;
+        } else {
             self.write_bytes(&name, &bytes)?;
         }
         self.finished = true;
         let _ = std::fs::remove_file(&self.lock);
-        Ok(self.written.iter().map(|n| self.dir.join(n)).collect())
+        Ok(self.written.iter().map(|n| self.dir.join(n)).filter(|p| !p.ends_with(RECORD_FILE)).collect())
+    }
+
+    /// [`OutputDir::finish`] for a folder without a manifest of its own: the record is
+    /// [`RECORD_FILE`], a [`manifest_json`] of the run's files. Returns the paths of the run's
+    /// files (the hidden record not among them).
+    ///
+    /// # Errors
+    /// As [`OutputDir::finish`].
+    pub fn close(self) -> Result<Vec<PathBuf>, OutputError> {
+        let path = self.dir.join(&self.manifest);
+        self.finish(|files| manifest_json(serde_json::json!({}), files, &path))
+    }
+
+    /// Writes a reserved name (the hidden record) atomically, like [`OutputDir::write_bytes`].
+    fn write_reserved(&mut self, name: &str, bytes: &[u8]) -> Result<(), OutputError> {
+        let target = self.dir.join(name);
+        let tmp = self.dir.join(format!("{TEMP_PREFIX}{}-{name}", std::process::id()));
+        let written = create_exclusive(&tmp)
+            .and_then(|mut f| f.write_all(bytes))
+            .map_err(|e| OutputError::io(&tmp, e))
+            .and_then(|()| commit(&tmp, &target));
+        if let Err(e) = written {
+            let _ = std::fs::remove_file(&tmp);
+            return Err(e.at_path(&tmp, &target));
+        }
+        self.record(name);
+        Ok(())
     }
 
     fn target(&self, name: &str) -> Result<PathBuf, OutputError> {
-        if !plain_name(name) || name == LOCK_FILE {
+        if !plain_name(name) || name == LOCK_FILE || name == RECORD_FILE {
             return Err(OutputError::MissingData {
                 path: self.dir.join(name),
                 reason: "an output name must be a plain file name".into(),
@@ -188,30 +234,32 @@ impl OutputDir {
         if self.manifest_removed {
             return Ok(());
         }
-        if let Some(name) = &self.manifest {
-            let path = self.dir.join(name);
-            match std::fs::remove_file(&path) {
-                Ok(()) => {}
-                Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
-                Err(e) => return Err(OutputError::io(path, e)),
-            }
+        let path = self.dir.join(&self.manifest);
+        match std::fs::remove_file(&path) {
+            Ok(()) => {}
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
+            Err(e) => return Err(OutputError::io(path, e)),
         }
         self.manifest_removed = true;
         Ok(())
     }
 
-    fn remove_stale(&self, is_own: &impl Fn(&str) -> bool) -> Result<(), OutputError> {
+    /// Removes what the previous record listed and this run did not write, and the temporary
+    /// (`.contact2d-tmp-<pid>-<name>`) and `.partial` leftovers of a listed or written name.
+    fn remove_stale(&self) -> Result<(), OutputError> {
         let entries = std::fs::read_dir(&self.dir).map_err(|e| OutputError::io(&self.dir, e))?;
+        let known = |stem: &str| self.previous.iter().chain(&self.written).any(|p| p == stem);
         for entry in entries.flatten() {
             let Some(name) = entry.file_name().to_str().map(String::from) else { continue };
-            if self.written.contains(&name) || name == LOCK_FILE || self.manifest.as_deref() == Some(name.as_str()) {
+            if self.written.contains(&name) || name == LOCK_FILE || self.manifest == name {
                 continue;
             }
-            let leftover = name.starts_with(TEMP_PREFIX)
-                || name
-                    .strip_suffix(PARTIAL_SUFFIX)
-                    .is_some_and(|stem| is_own(stem) || self.previous.iter().any(|p| p == stem));
-            if !(leftover || self.previous.contains(&name) || is_own(&name)) {
+            let temporary = name
+                .strip_prefix(TEMP_PREFIX)
+                .and_then(|rest| rest.split_once('-'))
+                .is_some_and(|(pid, stem)| !pid.is_empty() && pid.bytes().all(|b| b.is_ascii_digit()) && known(stem));
+            let leftover = temporary || name.strip_suffix(PARTIAL_SUFFIX).is_some_and(known);
+            if !(leftover || self.previous.contains(&name)) {
                 continue;
             }
             // Only regular files: a directory or link of the user's with an output's name stays.
@@ -302,6 +350,46 @@ pub fn manifest_json(value: serde_json::Value, files: &[String], path: &Path) ->
     Ok((text + "\n").into_bytes())
 }
 
+/// Creates `path` exclusively for writing: whatever file or symbolic link is already there is
+/// removed (a link is removed, never followed), then the file is created with `create_new`
+/// (which refuses a name that exists, dangling links included) and, on Linux, `O_NOFOLLOW`.
+///
+/// # Errors
+/// The I/O error (a directory at `path`, a race that recreated the name, permissions).
+pub fn create_exclusive(path: &Path) -> std::io::Result<std::fs::File> {
+    match std::fs::symlink_metadata(path) {
+        Ok(m) if !m.is_dir() => std::fs::remove_file(path)?,
+        _ => {}
+    }
+    let mut options = std::fs::OpenOptions::new();
+    options.write(true).create_new(true);
+    no_follow(&mut options);
+    options.open(path)
+}
+
+/// Opens an existing regular file for writing (truncated), refusing a symbolic link on Linux.
+fn open_no_follow(path: &Path) -> std::io::Result<std::fs::File> {
+    let mut options = std::fs::OpenOptions::new();
+    options.write(true).truncate(true);
+    no_follow(&mut options);
+    options.open(path)
+}
+
+/// Adds `O_NOFOLLOW` (Linux's value per architecture; libc is no dependency of ours).
+#[cfg(target_os = "linux")]
+fn no_follow(options: &mut std::fs::OpenOptions) {
+    use std::os::unix::fs::OpenOptionsExt as _;
+    #[cfg(any(target_arch = "aarch64", target_arch = "arm", target_arch = "powerpc", target_arch = "powerpc64"))]
+    const O_NOFOLLOW: i32 = 0o100_000;
+    #[cfg(not(any(target_arch = "aarch64", target_arch = "arm", target_arch = "powerpc", target_arch = "powerpc64")))]
+    const O_NOFOLLOW: i32 = 0o400_000;
+    options.custom_flags(O_NOFOLLOW);
+}
+
+/// Elsewhere `create_new` alone refuses an existing name (links included).
+#[cfg(not(target_os = "linux"))]
+fn no_follow(_options: &mut std::fs::OpenOptions) {}
+
 /// Syncs `tmp` to disk and renames it onto `target`.
 fn commit(tmp: &Path, target: &Path) -> Result<(), OutputError> {
     let file = std::fs::File::open(tmp).map_err(|e| OutputError::io(tmp, e))?;
@@ -353,7 +441,8 @@ fn process_is_gone(pid: u32) -> bool {
 /// manifest or it is not ours).
 fn previous_files(manifest: &Path) -> Vec<String> {
     // A manifest is small; a huge or unreadable file at that name is not one of ours.
-    let small = std::fs::metadata(manifest).is_ok_and(|m| m.is_file() && m.len() < 64 << 20);
+    // A link at the record's name is no record of ours (it could list any file).
+    let small = std::fs::symlink_metadata(manifest).is_ok_and(|m| m.is_file() && m.len() < 64 << 20);
     let value: Option<serde_json::Value> =
         small.then(|| std::fs::read(manifest).ok()).flatten().and_then(|b| serde_json::from_slice(&b).ok());
     let Some(value) = value else { return vec![] };
@@ -402,26 +491,27 @@ mod tests {
         // A lock of a process that no longer runs (pid beyond Linux's pid_max) is replaced.
         std::fs::write(dir.join(LOCK_FILE), "4194305\n").unwrap();
         let out = OutputDir::prepare(&dir, None).unwrap();
-        out.finish(|_| false, manifest).unwrap();
+        out.close().unwrap();
         std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
     fn the_manifest_lists_exactly_the_files_and_stale_ones_go() {
         let dir = temp_dir("stale");
-        let own = |n: &str| n.starts_with("step_");
         let mut out = OutputDir::prepare(&dir, Some("m.json")).unwrap();
         for name in ["a.txt", "step_000.vtu", "step_001.vtu"] {
             out.write_bytes(name, b"x").unwrap();
         }
-        out.finish(own, manifest).unwrap();
+        out.finish(manifest).unwrap();
         std::fs::write(dir.join("user_notes.txt"), "mine").unwrap();
-        // A shorter second run: a.txt and step_001.vtu are stale, the user's file stays.
+        // Named like an output but listed by no record: the user's.
+        std::fs::write(dir.join("step_007.vtu"), "mine too").unwrap();
+        // A shorter second run: a.txt and step_001.vtu are stale, the user's files stay.
         let mut out = OutputDir::prepare(&dir, Some("m.json")).unwrap();
         out.write_bytes("step_000.vtu", b"y").unwrap();
-        let written = out.finish(own, manifest).unwrap();
+        let written = out.finish(manifest).unwrap();
         assert_eq!(written.len(), 2);
-        assert_eq!(names(&dir), ["m.json", "step_000.vtu", "user_notes.txt"]);
+        assert_eq!(names(&dir), ["m.json", "step_000.vtu", "step_007.vtu", "user_notes.txt"]);
         let m: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("m.json")).unwrap()).unwrap();
         assert_eq!(m["files"], serde_json::json!(["step_000.vtu", "m.json"]));
         std::fs::remove_dir_all(&dir).unwrap();
@@ -432,7 +522,7 @@ mod tests {
         let dir = temp_dir("fail");
         let mut out = OutputDir::prepare(&dir, Some("m.json")).unwrap();
         out.write_bytes("a.txt", b"old").unwrap();
-        out.finish(|_| false, manifest).unwrap();
+        out.finish(manifest).unwrap();
         let mut out = OutputDir::prepare(&dir, Some("m.json")).unwrap();
         out.write_bytes("b.txt", b"new").unwrap();
         let failed: Result<PathBuf, OutputError> = out.write_with("a.txt", |tmp| {
@@ -458,8 +548,8 @@ mod tests {
         assert_eq!(std::fs::read_to_string(dir.join("rows.csv.partial")).unwrap(), "a\n");
         let path = s.commit().unwrap();
         out.record_streamed(&path);
-        out.finish(|_| false, manifest).unwrap();
-        assert_eq!(names(&dir), ["rows.csv"]);
+        out.close().unwrap();
+        assert_eq!(names(&dir), [RECORD_FILE, "rows.csv"]);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 
@@ -474,6 +564,28 @@ mod tests {
         let mut out = OutputDir::prepare(&dir, None).unwrap();
         assert!(out.write_bytes("../escape.txt", b"x").is_err());
         drop(out);
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_link_planted_at_a_temporary_or_partial_name_is_not_followed() {
+        let dir = temp_dir("link");
+        std::fs::create_dir_all(&dir).unwrap();
+        let victim = dir.join("victim.txt");
+        std::fs::write(&victim, "keep").unwrap();
+        let tmp = dir.join(format!("{TEMP_PREFIX}{}-a.txt", std::process::id()));
+        std::os::unix::fs::symlink(&victim, &tmp).unwrap();
+        std::os::unix::fs::symlink(&victim, dir.join("rows.csv.partial")).unwrap();
+        let mut out = OutputDir::prepare(&dir, None).unwrap();
+        out.write_bytes("a.txt", b"output").unwrap();
+        let mut s = out.stream("rows.csv").unwrap();
+        s.append("row\n").unwrap();
+        out.record_streamed(&s.commit().unwrap());
+        out.close().unwrap();
+        assert_eq!(std::fs::read_to_string(&victim).unwrap(), "keep", "the link's target is untouched");
+        assert_eq!(std::fs::read_to_string(dir.join("a.txt")).unwrap(), "output");
+        assert_eq!(std::fs::read_to_string(dir.join("rows.csv")).unwrap(), "row\n");
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

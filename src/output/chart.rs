@@ -122,6 +122,15 @@ pub fn register_bundled_font() -> Result<(), OutputError> {
 /// ```
 pub fn line_chart(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), OutputError> {
     let format = ImageFormat::from_path(path)?;
+    // Names from the scene (titles, legends) may hold control characters, which XML forbids.
+    let axes = &Axes {
+        title: drawable_text(&axes.title),
+        x_label: drawable_text(&axes.x_label),
+        y_label: drawable_text(&axes.y_label),
+        ..axes.clone()
+    };
+    let series: &[Series] =
+        &series.iter().map(|s| Series { label: drawable_text(&s.label), ..s.clone() }).collect::<Vec<_>>();
     register_bundled_font()?;
     let points = || series.iter().flat_map(|s| s.points.iter());
     if points().next().is_some() && !points().any(|p| p.0.is_finite() && p.1.is_finite()) {
@@ -148,6 +157,13 @@ pub fn line_chart(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), Out
         }
     };
     result.map_err(|reason| OutputError::draw(path, reason))
+}
+
+/// `text` with every control character (C0, DEL, C1; tab and line breaks included, which a
+/// one-line label cannot show) and the non-characters U+FFFE, U+FFFF replaced by U+FFFD, so that
+/// it can go into any figure: XML 1.0, and so SVG, allows no C0 control but tab and line breaks.
+pub fn drawable_text(text: &str) -> String {
+    text.chars().map(|c| if c.is_control() || c == '\u{FFFE}' || c == '\u{FFFF}' { '\u{FFFD}' } else { c }).collect()
 }
 
 /// The largest magnitude an axis may reach and the smallest range it may span: the plotting

@@ -105,6 +105,7 @@ pub fn draw_von_mises(path: &Path, title: &str, step: &StepView) -> Result<(), O
         drawable_range(bounds[0][k], bounds[1][k]).map_err(|r| undrawable(format!("mesh extent in {axis}: {r}")))?;
     }
     let size = figure_size(bounding_box(step.problem.model.mesh.points.iter()));
+    let title = &super::chart::drawable_text(title);
     let result = match format {
         ImageFormat::Png => draw_on(&BitMapBackend::new(path, size).into_drawing_area(), title, step, &cells, true),
         ImageFormat::Svg => draw_on(&SVGBackend::new(path, size).into_drawing_area(), title, step, &cells, false),

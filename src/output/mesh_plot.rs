@@ -132,6 +132,7 @@ pub fn draw_mesh(path: &Path, title: &str, step: &StepView) -> Result<(), Output
     for (axis, k) in [("x1", 0), ("x2", 1)] {
         drawable_range(bounds[0][k], bounds[1][k]).map_err(|r| undrawable(format!("mesh extent in {axis}: {r}")))?;
     }
+    let title = &super::chart::drawable_text(title);
     let result = match format {
         ImageFormat::Png => draw_on(&BitMapBackend::new(path, FIGURE_SIZE).into_drawing_area(), title, step),
         ImageFormat::Svg => draw_on(&SVGBackend::new(path, FIGURE_SIZE).into_drawing_area(), title, step),

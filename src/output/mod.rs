@@ -61,19 +61,6 @@ pub fn write_outputs(dir: &Path, scene: &Scene, outcome: &RunOutcome) -> Result<
     write_outputs_into(OutputDir::prepare(dir, Some(SUMMARY_FILE))?, scene, outcome)
 }
 
-/// Whether `name` is a file name [`write_outputs_into`] writes (the stale ones of an earlier run
-/// in the same folder are removed by name; other files are left alone).
-pub fn is_run_output(name: &str) -> bool {
-    let (stem, ext) = name.rsplit_once('.').unwrap_or((name, ""));
-    let figure = ["mesh", "hole_edge", "insert_hoop", "von_mises", "history"].contains(&stem)
-        && FIGURE_EXTENSIONS.contains(&ext);
-    let step = ext == "vtu"
-        && stem.strip_prefix("step_").is_some_and(|k| k.len() >= 3 && k.bytes().all(|b| b.is_ascii_digit()));
-    figure
-        || step
-        || ["hole_edge.csv", "insert_edge.csv", "steps.csv", "steps.pvd", "README.txt", SUMMARY_FILE].contains(&name)
-}
-
 #[cfg(feature = "native")]
 /// Writes every output of a solved scene into the prepared folder `out` and returns the paths
 /// written, the summary last: each file atomically, stale files of an earlier run removed, the
@@ -161,7 +148,7 @@ pub fn write_outputs_into(
     let mut report = outcome.report.clone();
     report.notes.extend(skipped);
     let summary_path = dir.join(SUMMARY_FILE);
-    out.finish(is_run_output, |files| {
+    out.finish(|files| {
         let value = serde_json::to_value(&report)
             .map_err(|e| OutputError::Serialize { path: summary_path.clone(), reason: e.to_string() })?;
         atomic::manifest_json(value, files, &summary_path)

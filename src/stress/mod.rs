@@ -188,6 +188,48 @@ pub fn run_stress_cell(
     Ok(run_cell(&base_scene, &absolute.display().to_string(), cell, algorithms, quality))
 }
 
+/// Checks every value of the grid's axes (clap parses `1e400` as ∞): a ratio positive and
+/// finite, a friction coefficient, clearance or distortion finite and ≥ 0, a Poisson's ratio in
+/// (−1, 0.5).
+///
+/// # Errors
+/// [`StressError::Flag`] naming the flag and the value.
+pub fn check_axes(args: &StressArgs) -> Result<(), StressError> {
+    type Rule = (&'static str, fn(f64) -> bool, &'static str);
+    let rules: [(&[f64], Rule); 5] = [
+        (&args.ratios, ("--ratios", |v| v.is_finite() && v > 0.0, "a positive finite stiffness ratio")),
+        (&args.frictions, ("--frictions", |v| v.is_finite() && v >= 0.0, "a finite friction coefficient ≥ 0")),
+        (&args.eps, ("--eps", |v| v.is_finite() && v >= 0.0, "a finite clearance ≥ 0")),
+        (&args.strain_nu, ("--strain-nu", |v| v > -1.0 && v < 0.5, "a Poisson's ratio in (-1, 0.5)")),
+        (&args.distortions, ("--distortions", |v| v.is_finite() && v >= 0.0, "a finite distortion ≥ 0")),
+    ];
+    for (values, (flag, admissible, what)) in rules {
+        if let Some(v) = values.iter().find(|v| !admissible(**v)) {
+            return Err(StressError::Flag {
+                flag,
+                reason: format!("{v} is not {what} (a value beyond ±1.8e308 reads as inf)"),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// A fresh folder of this process for the distorted meshes, created with `create_dir` (which
+/// refuses an existing name, a planted link included): `contact2d-stress-<pid>-<k>` in the
+/// system's temporary folder, the first `k` free.
+fn private_temp_dir() -> std::io::Result<PathBuf> {
+    let mut last = None;
+    for k in 0..100 {
+        let dir = std::env::temp_dir().join(format!("contact2d-stress-{}-{k}", std::process::id()));
+        match std::fs::create_dir(&dir) {
+            Ok(()) => return Ok(dir),
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => last = Some(e),
+            Err(e) => return Err(e),
+        }
+    }
+    Err(last.unwrap_or_else(|| std::io::Error::other("no free temporary folder name")))
+}
+
 /// The whole command: runs the grid with a progress bar, writes `stress.csv` and `stress.md` into
 /// `args.out`, and returns the markdown.
 ///
@@ -202,6 +244,7 @@ pub fn run_command(args: &StressArgs) -> Result<String, StressError> {
                 .ok_or_else(|| StressError::Flag { flag: "--algorithms", reason: format!("unknown algorithm {s:?}") })
         })
         .collect::<Result<Vec<_>, _>>()?;
+    check_axes(args)?;
     let extra = |v: &Vec<f64>| if args.no_extra { vec![] } else { v.clone() };
     let cells = grid(&GridAxes {
         ratios: args.ratios.clone(),
@@ -217,7 +260,7 @@ pub fn run_command(args: &StressArgs) -> Result<String, StressError> {
     };
     let mut out = crate::output::OutputDir::prepare(&args.out, None).map_err(|e| file(&args.out, &e))?;
     let bar = progress_bar(cells.len(), args.quiet);
-    let tmp = std::env::temp_dir().join(format!("contact2d-stress-{}", std::process::id()));
+    let tmp = private_temp_dir().map_err(|e| file(&std::env::temp_dir(), &e))?;
     let mut results = Vec::with_capacity(cells.len());
     for cell in cells {
         bar.set_message(format!("E2/E1 {:e} μ {} ε {:e}", cell.ratio, cell.mu, cell.eps));
@@ -231,6 +274,6 @@ pub fn run_command(args: &StressArgs) -> Result<String, StressError> {
     for (name, text) in [("stress.csv", report::csv(&results)), ("stress.md", md.clone())] {
         out.write_bytes(name, text.as_bytes()).map_err(|e| file(&args.out.join(name), &e))?;
     }
-    out.finish(|name| name == "stress.csv" || name == "stress.md", |_| Ok(vec![])).map_err(|e| file(&args.out, &e))?;
+    out.close().map_err(|e| file(&args.out, &e))?;
     Ok(md)
 }

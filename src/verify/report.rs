@@ -112,5 +112,5 @@ pub fn write(dir: &Path, reports: &[CaseReport]) -> Result<Vec<PathBuf>, OutputE
         }
     }
     out.write_bytes("verification.md", markdown(reports).as_bytes())?;
-    out.finish(|_| false, |_| Ok(vec![]))
+    out.close()
 }

@@ -61,6 +61,15 @@ pub enum ContactError {
     /// result whose NaN would be written as JSON `null`.
     #[error("the solution is not finite ({0}); status numerical")]
     NotFinite(String),
+    /// The deadline of [`crate::SolverSettings::with_deadline`] passed before load step `step`
+    /// (from 1) of `steps` could start.
+    #[error("the time limit passed before load step {step} of {steps}")]
+    DeadlineExceeded {
+        /// The step that was not started (from 1).
+        step: usize,
+        /// The steps of the schedule.
+        steps: usize,
+    },
     /// A parameter outside its admissible range.
     #[error("invalid contact input: {0}")]
     InvalidInput(String),

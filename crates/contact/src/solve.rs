@@ -88,6 +88,7 @@ pub struct SolverSettings {
     floating_tolerance: f64,
     max_floating_iterations: usize,
     penalty: PenaltyParameters,
+    deadline: Option<web_time::Instant>,
 }
 
 impl SolverSettings {
@@ -100,7 +101,21 @@ impl SolverSettings {
             floating_tolerance: 1e-10,
             max_floating_iterations: 60,
             penalty: PenaltyParameters::default(),
+            deadline: None,
         }
+    }
+
+    /// Sets a wall-clock deadline: [`solve_with`] checks it before each load step and stops with
+    /// [`ContactError::DeadlineExceeded`] once it has passed (a step under way is not
+    /// interrupted). No deadline by default.
+    pub fn with_deadline(mut self, deadline: web_time::Instant) -> SolverSettings {
+        self.deadline = Some(deadline);
+        self
+    }
+
+    /// The deadline of [`SolverSettings::with_deadline`], if any.
+    pub fn deadline(&self) -> Option<web_time::Instant> {
+        self.deadline
     }
 
     /// Sets the iteration limit of the algorithm per step.
@@ -213,7 +228,7 @@ pub fn solve(
 /// [`solve`], calling `on_step(i, step)` after each solved step (progress reporting).
 ///
 /// # Errors
-/// As [`solve`].
+/// As [`solve`], and [`ContactError::DeadlineExceeded`] when the settings' deadline passes.
 pub fn solve_with(
     problem: &ContactProblem,
     settings: &SolverSettings,
@@ -259,6 +274,9 @@ pub fn solve_with(
         problem.num_pairs(),
         |target, start, guess| {
             let step = floating.borrow().len() + 1;
+            if settings.deadline.is_some_and(|d| web_time::Instant::now() >= d) {
+                return Err(ContactError::DeadlineExceeded { step, steps: targets.len() });
+            }
             let context = StepContext { order: &order, start, guess, step };
             let previous = if step >= 2 { &targets[step - 2] } else { &zeros };
             let factors = StepFactors { target, previous };
