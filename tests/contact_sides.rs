@@ -52,15 +52,17 @@ fn both_orders_agree(path: &str, contact: &str, master: &str, slave: &str) -> (G
         assert!(!out.report.notes.iter().any(|n| n.contains("interference")), "{path}: {:?}", out.report.notes);
     }
     let (a, b) = (&original.report.contacts[contact], &swapped.report.contacts[contact]);
-    // 5 %: the issue's bound for two discretisations of one joint (module docs).
-    let close = |x: f64, y: f64, scale: f64| (x - y).abs() <= 0.05 * scale;
-    let n = a.normal_force.abs().max(b.normal_force.abs());
-    assert!(close(a.normal_force, b.normal_force, n), "{path}: normal {} against {}", a.normal_force, b.normal_force);
-    let t = a.tangential_force.abs().max(b.tangential_force.abs()).max(1e-9 * n);
+    // 5 % of the resultant (N, T): the issue's bound for two discretisations of one joint
+    // (module docs). The tangential part alone is a small difference of two friction states
+    // (|T| ≈ 3 % of N on the pin), so it is judged within the resultant, as the issue states.
+    let resultant = a.normal_force.hypot(a.tangential_force).max(b.normal_force.hypot(b.tangential_force));
+    let moved = (a.normal_force - b.normal_force).hypot(a.tangential_force - b.tangential_force);
     assert!(
-        close(a.tangential_force, b.tangential_force, t),
-        "{path}: tangential {} against {}",
+        moved <= 0.05 * resultant,
+        "{path}: resultant (N, T) ({}, {}) against ({}, {})",
+        a.normal_force,
         a.tangential_force,
+        b.normal_force,
         b.tangential_force
     );
     (original, swapped)
