@@ -180,3 +180,19 @@ fn penalties_are_read_for_the_penalty_method_only() {
     assert_eq!(key(&["solver.algorithm=penalty", "solver.penalty=0"]), "solver.penalty");
     assert_eq!(key(&["solver.algorithm=penalty", "solver.tangential_penalty=1e20"]), "solver.tangential_penalty");
 }
+
+#[test]
+fn a_schedule_set_on_the_command_line_replaces_the_files_steps() {
+    // pin_lug has `steps = 4`; `--set loading.schedule=[…]` means that schedule (the two keys
+    // exclude each other), and `--set loading.steps=2` on a scheduled scene means two equal steps.
+    let path = Path::new("scenes/generic/pin_lug.toml");
+    let set = |s: &str| contact2d::generic::load_scene(path, &[s.to_string()]).unwrap();
+    let scheduled = solve_generic(&set("loading.schedule=[{main=0.5},{main=1.0}]"), &mut |_, _| {}).unwrap();
+    let stepped = solve_generic(&set("loading.steps=2"), &mut |_, _| {}).unwrap();
+    assert_eq!(scheduled.report.steps.len(), 2);
+    let factors = |o: &contact2d::generic::GenericOutcome| -> Vec<f64> {
+        o.report.steps.iter().map(|s| s.factors["main"]).collect()
+    };
+    assert_eq!(factors(&scheduled), vec![0.5, 1.0]);
+    assert_eq!(factors(&scheduled), factors(&stepped), "two equal steps are that schedule");
+}

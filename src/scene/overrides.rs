@@ -29,6 +29,16 @@ fn check_number_spelling(raw: &str, parsed: Option<&toml::Value>) -> Result<(), 
     }
 }
 
+/// The key that `key` in table `table` excludes (a scene gives one of them): `loading.steps`
+/// and `loading.schedule`.
+fn excluded_by(table: &[&str], key: &str) -> Option<&'static str> {
+    match (table, key) {
+        (["loading"], "steps") => Some("schedule"),
+        (["loading"], "schedule") => Some("steps"),
+        _ => None,
+    }
+}
+
 /// Sets `a.b.c = value` in a TOML tree; the key must exist (unknown keys are errors). An array
 /// of tables (`[[contact]]` of a generic scene) is entered by index (`contact.0.friction`) or by
 /// the entry's `name`, `region` or `group` (`contact.hertz.friction`, `body.block.thickness`).
@@ -63,7 +73,12 @@ pub(crate) fn apply_override(root: &mut toml::Value, assignment: &str) -> Result
         let table = node.as_table_mut().ok_or_else(|| err(format!("\"{}\" is not a table", parts[..i].join("."))))?;
         if i + 1 == parts.len() {
             // A key the file leaves at its default may be set; whether it exists at all is
-            // decided when the scene is checked (unknown keys are errors there).
+            // decided when the scene is checked (unknown keys are errors there). Keys that
+            // exclude each other replace each other: `--set loading.schedule=[…]` on a scene
+            // with `steps` means the schedule.
+            if let Some(other) = excluded_by(&parts[..i], part) {
+                table.remove(other);
+            }
             table.insert((*part).to_string(), parsed);
             return Ok(());
         }

@@ -37,6 +37,14 @@ pub(crate) fn map_status(status: SolverStatus) -> ContactStatus {
     }
 }
 
+/// The displacement the load alone produces, `max |K⁻¹ w r|`: the scale of the variables where
+/// every gap and prescribed value is zero (bodies touching and pressed by forces), so that the
+/// interior point's tolerances act on O(1) numbers there too.
+pub(crate) fn displacement_scale(problem: &ContactProblem, w: f64) -> f64 {
+    let rhs: Vec<f64> = problem.pattern_rhs.iter().map(|r| w * r).collect();
+    problem.solver.solve(&rhs).iter().fold(0.0f64, |a, v| if v.is_finite() { a.max(v.abs()) } else { a })
+}
+
 /// Solves the frictionless problem at load factor `w` with Clarabel.
 pub fn solve_frictionless_qp(problem: &ContactProblem, w: f64) -> ContactSolution {
     let start = Instant::now();
@@ -61,6 +69,7 @@ pub fn solve_frictionless_qp(problem: &ContactProblem, w: f64) -> ContactSolutio
         .map(|(row, g0)| g0 + row.constrained.iter().map(|(j, v)| v * prescribed[*j]).sum::<f64>())
         .collect();
     let s = b.iter().chain(&prescribed).fold(0.0f64, |a, v| a.max(v.abs()));
+    let s = s.max(displacement_scale(problem, w));
     let s = if s > 0.0 { s } else { 1.0 };
     let b: Vec<f64> = b.iter().map(|v| v / s).collect();
     let q: Vec<f64> = problem.pattern_rhs.iter().map(|r| -w * r / s).collect();

@@ -25,7 +25,7 @@ use clarabel::algebra::CscMatrix;
 use clarabel::solver::{DefaultSettingsBuilder, DefaultSolver, IPSolver, NonnegativeConeT};
 
 use crate::algorithms::augmented_lagrangian::polish_state;
-use crate::algorithms::clarabel_qp::{map_status, solve_frictionless_qp};
+use crate::algorithms::clarabel_qp::{displacement_scale, map_status, solve_frictionless_qp};
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_displacement, force_scale};
 use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
@@ -157,6 +157,7 @@ fn solve_tresca(problem: &ContactProblem, w: f64, start: &StepStart, bound: &[f6
     let c_t: Vec<f64> =
         friction_pairs.iter().map(|&k| constrained_part(&problem.tangent_rows[k]) - start.slip[k]).collect();
     let s = b_normal.iter().chain(&prescribed).chain(&c_t).fold(0.0f64, |a, v| a.max(v.abs()));
+    let s = s.max(displacement_scale(problem, w));
     let s = if s > 0.0 { s } else { 1.0 };
 
     // P = [K 0; 0 0] (upper triangle of K from its stored lower triangle).
