@@ -345,7 +345,10 @@ pub fn contact_result(
     let gap: Vec<f64> = order.iter().map(|&k| s.gap[k].max(0.0)).collect();
     let slip: Vec<f64> = order.iter().map(|&k| s.slip_increment[k].abs()).collect();
     let contact_length = zone_length(&arc, &in_contact, &gap, &in_contact);
-    let stick_length = if iface.friction > 0.0 { zone_length(&arc, &sticks, &slip, &in_contact) } else { 0.0 };
+    // The stick zone lies inside the contact zone; their ends are interpolated from different
+    // profiles (slip against gap), which must not make the part longer than the whole.
+    let stick_length =
+        if iface.friction > 0.0 { zone_length(&arc, &sticks, &slip, &in_contact).min(contact_length) } else { 0.0 };
     let profile = with_profile.then(|| Profile {
         s: arc.clone(),
         x: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][0]).collect(),

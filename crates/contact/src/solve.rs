@@ -315,11 +315,17 @@ fn scale_steps(
             let mut solution = unit.solution.clone();
             let before = if i == 0 { 0.0 } else { multipliers[i - 1] };
             scale_solution(&mut solution, t, before);
+            // One solve did the work of every step: the counters report it once.
+            if i > 0 {
+                solution.iterations = 0;
+                solution.time = std::time::Duration::ZERO;
+                solution.trace.clear();
+            }
             let step = SolvedStep {
                 factors: unit.factors.iter().map(|f| f * t).collect(),
                 dissipated: unit.dissipated * t * t,
                 solution,
-                floating_iterations: unit.floating_iterations,
+                floating_iterations: if i == 0 { unit.floating_iterations } else { 0 },
                 floating_residual: unit.floating_residual * t,
             };
             on_step(i, &step);
