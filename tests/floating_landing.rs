@@ -27,7 +27,8 @@
 //!   reversal step of a ±F cycle, which crosses the 2c clearance, dissipates what loading from the
 //!   centre to −F does (same 5 %), not μ N × 2c more;
 //! - cumulative dissipation never exceeds the cumulative work of the loads (energy conservation
-//!   with a dissipative friction law), on every bundled generic scene.
+//!   with a dissipative friction law), and a stick zone is never longer than its contact zone
+//!   (it is part of it), on every bundled generic scene.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use std::path::{Path, PathBuf};
@@ -156,6 +157,10 @@ fn dissipation_never_exceeds_the_work_of_the_loads() {
         for (i, step) in out.report.steps.iter().enumerate() {
             // W = stored + Φ_f: the stored energy is ≥ 0, so Φ_f ≤ W up to the energy balance's
             // tolerance (1e-6 of the history's energy, crate certify).
+            // The stick zone is part of the contact zone.
+            for (name, c) in &step.contacts {
+                assert!(c.stick_length <= c.contact_length, "{} step {}: {name}", path.display(), i + 1);
+            }
             let stored: f64 = step.energies.values().sum();
             let scale = step.work.abs().max(stored).max(f64::MIN_POSITIVE);
             assert!(

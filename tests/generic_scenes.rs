@@ -196,3 +196,19 @@ fn a_schedule_set_on_the_command_line_replaces_the_files_steps() {
     assert_eq!(factors(&scheduled), vec![0.5, 1.0]);
     assert_eq!(factors(&scheduled), factors(&stepped), "two equal steps are that schedule");
 }
+
+#[test]
+fn a_proportional_run_solved_once_counts_its_iterations_once() {
+    // No gap and proportional loading: the schedule is solved once and scaled (exact), so five
+    // steps did the work of one: their iterations sum to the one-step run's.
+    let path = Path::new("scenes/generic/plate_insert_nogap_mu03.toml");
+    let run = |steps: usize| {
+        let scene = contact2d::generic::load_scene(path, &[format!("loading.steps={steps}")]).unwrap();
+        solve_generic(&scene, &mut |_, _| {}).unwrap()
+    };
+    let (one, five) = (run(1), run(5));
+    assert!(five.history.scaled, "no gap, proportional: solved once");
+    let total = |o: &contact2d::generic::GenericOutcome| o.report.steps.iter().map(|s| s.iterations).sum::<usize>();
+    assert_eq!(total(&five), total(&one));
+    assert_eq!(five.report.iterations, one.report.iterations);
+}

@@ -58,7 +58,11 @@ fn bad_values_name_their_key() {
     assert!(err("body.a.poissons_ratio=0.5").contains("body.0.poissons_ratio"));
     assert!(err("contact.7.friction=0").contains("past its end"));
     assert!(err("contact.nope.friction=0").contains("nope"));
-    assert!(err("loading.steps=3").contains("not both"));
+    // A file giving both is an error; a `--set` of one replaces the other (the user guide).
+    let both = SCENE.replace("[loading]", "[loading]\nsteps = 3");
+    assert!(GenericScene::from_toml_str(&both, path, &[]).unwrap_err().to_string().contains("not both"));
+    let stepped = GenericScene::from_toml_str(SCENE, path, &["loading.steps=3".into()]).unwrap();
+    assert_eq!(stepped.schedule().unwrap().steps().len(), 3);
     let text = SCENE.replace("pressure = 1.0", "pressure = 1.0\nforce = [1.0, 0.0]");
     assert!(GenericScene::from_toml_str(&text, path, &[]).unwrap_err().to_string().contains("exactly one"));
     let text = SCENE.replace("group = \"top\"\npressure = 1.0", "group = \"top\"\nbody_force = [0.0, -1.0]");
