@@ -14,7 +14,7 @@
 //!
 //! Floating bodies (held only by contact): assembly pins each floating piece at as many DOFs as
 //! it has free rigid modes, and each step finds the pieces' rigid motions `α` that leave the
-//! pins without force ([`crate::floating`]): exact equilibrium `K u = f + Bᵀλ`, any load lands
+//! pins without force (`crates/contact/src/floating.rs`): exact equilibrium `K u = f + Bᵀλ`, any load lands
 //! in one step, zero load leaves a body where it was, and a body that no contact holds along the
 //! direction its load pushes it fails with [`ContactError::BodyNotHeld`] naming the body and its
 //! free rigid motions.
@@ -376,7 +376,7 @@ struct StepContext<'a> {
 }
 
 /// One step at `factors`; with floating bodies their rigid motions `alpha` are unknowns
-/// ([`crate::floating`]). Returns the solution, the Newton iterations on `α` and the force
+/// (`floating.rs`). Returns the solution, the Newton iterations on `α` and the force
 /// the pins still carry.
 fn solve_floating_step(
     loaded: &mut ContactProblem,
