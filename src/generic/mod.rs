@@ -282,13 +282,21 @@ fn solve_generic_from(
     let mut results = results::StepResults::new(&built, &fixed);
     let mut summary_steps: Vec<StepResult> = Vec::with_capacity(total);
     let (mut failed, mut solve_time, mut post_time) = (None, 0.0, 0.0);
+    let mut first_non_finite: Option<String> = None;
     let Stream { retention, on_step, on_solved } = stream;
     let history = solve_keeping(&built.problem, &settings, &schedule, retention, &mut |i, step| {
         let post_clock = Instant::now();
         solve_time += step.solution.time.as_secs_f64();
         if failed.is_none() {
             match results.push(step, false) {
-                Ok(result) => summary_steps.push(result),
+                Ok(result) => {
+                    // Checked one row at a time: the whole summary as one JSON value grows with the steps.
+                    if first_non_finite.is_none() {
+                        let value = serde_json::to_value(&result).unwrap_or(serde_json::Value::Null);
+                        first_non_finite = non_finite(&value, &format!("steps.{}", summary_steps.len()));
+                    }
+                    summary_steps.push(result);
+                }
                 Err(e) => failed = Some(e),
             }
         }
@@ -375,7 +383,7 @@ fn solve_generic_from(
         time_s: times,
         notes,
     };
-    if let Some(path) = non_finite(&serde_json::to_value(&report).unwrap_or(serde_json::Value::Null), "") {
+    if let Some(path) = non_finite_report(&report, first_non_finite) {
         return Err(contact_error(ContactError::NotFinite(format!("{path} of the summary"))));
     }
     Ok(GenericOutcome { scene: scene.clone(), built, history, report })
@@ -393,6 +401,23 @@ fn fixed_groups(scene: &GenericScene) -> Vec<FixedGroup> {
         }
     }
     out
+}
+
+/// The dotted path of the first non-finite number of `report` (as [`non_finite`] of the whole
+/// summary), its step rows already checked one by one (`in_steps`: the first path found there),
+/// so that the summary is never one JSON value with every step.
+fn non_finite_report(report: &GenericReport, in_steps: Option<String>) -> Option<String> {
+    let head = GenericReport { steps: vec![], ..report.clone() };
+    let serde_json::Value::Object(map) = serde_json::to_value(&head).unwrap_or(serde_json::Value::Null) else {
+        return Some("the summary".into());
+    };
+    let mut in_steps = in_steps;
+    map.into_iter().find_map(|(k, v)| {
+        if k == "steps" {
+            return in_steps.take();
+        }
+        non_finite(&serde_json::Value::Object(std::iter::once((k, v)).collect()), "")
+    })
 }
 
 /// The dotted path of the first non-finite number in a serialised summary (serde_json writes
