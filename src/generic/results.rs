@@ -72,9 +72,10 @@ pub struct ContactResult {
     /// slave have none: their pair forces are internal).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rigid_resultant: Option<[f64; 2]>,
-    /// The profile (top level only; omitted in the per-step entries).
+    /// The profile (top level only; omitted in the per-step entries). Boxed: every step's row
+    /// holds this field, and a profile's room in each would grow a long history's memory.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub profile: Option<Profile>,
+    pub profile: Option<Box<Profile>>,
 }
 
 /// KKT residuals of a step.
@@ -399,15 +400,17 @@ pub fn contact_result(
     // profiles (slip against gap), which must not make the part longer than the whole.
     let stick_length =
         if iface.friction > 0.0 { zone_length(&arc, &sticks, &slip, &in_contact).min(contact_length) } else { 0.0 };
-    let profile = with_profile.then(|| Profile {
-        s: arc.clone(),
-        x: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][0]).collect(),
-        y: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][1]).collect(),
-        pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).collect(),
-        shear: order.iter().map(|&k| s.tangential_force[k] / area(k)).collect(),
-        gap: order.iter().map(|&k| s.gap[k]).collect(),
-        slip: order.iter().map(|&k| s.slip[k]).collect(),
-        state: order.iter().map(|&k| state_label(s.state[k], problem.friction[k])).collect(),
+    let profile = with_profile.then(|| {
+        Box::new(Profile {
+            s: arc.clone(),
+            x: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][0]).collect(),
+            y: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][1]).collect(),
+            pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).collect(),
+            shear: order.iter().map(|&k| s.tangential_force[k] / area(k)).collect(),
+            gap: order.iter().map(|&k| s.gap[k]).collect(),
+            slip: order.iter().map(|&k| s.slip[k]).collect(),
+            state: order.iter().map(|&k| state_label(s.state[k], problem.friction[k])).collect(),
+        })
     });
     ContactResult {
         normal_force: order.iter().map(|&k| s.normal_force[k]).sum(),
