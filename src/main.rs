@@ -296,7 +296,9 @@ fn run_generic(
     let report = &outcome.report;
     let mut stdout = std::io::stdout().lock();
     if json {
-        writeln!(stdout, "{}", serde_json::to_string_pretty(report)?)?;
+        // Written as it is serialised: no whole copy of the summary, which grows with the steps.
+        serde_json::to_writer_pretty(&mut stdout, report).map_err(std::io::Error::from)?;
+        writeln!(stdout)?;
     } else {
         print_generic(&mut stdout, report)?;
     }

@@ -16,7 +16,9 @@ use std::path::{Path, PathBuf};
 
 use contact2d_contact::{BuiltProblem, ContactSolution};
 
-use super::GenericOutcome;
+use serde::ser::{Serialize, SerializeMap, SerializeSeq, Serializer};
+
+use super::{GenericOutcome, GenericReport, StepResult};
 use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::step_view::{NodeValues, StepView, state_code};
 use crate::output::{
@@ -103,11 +105,52 @@ pub fn finish_generic_outputs(mut out: OutputDir, outcome: &GenericOutcome) -> R
     let summary_path = out.path().join(SUMMARY_FILE);
     let is_step = |f: &str| step_files.iter().any(|s| s == f);
     let written = out.finish(|files| {
-        let value = serde_json::to_value(&report)
+        // The summary without its step rows as one JSON value (keys sorted at every level, as
+        // a manifest prints them); the rows become values one at a time while printed.
+        let head = GenericReport { steps: vec![], ..report.clone() };
+        let value = serde_json::to_value(&head)
             .map_err(|e| OutputError::Serialize { path: summary_path.clone(), reason: e.to_string() })?;
-        atomic::manifest_json(value, &steps_before_pvd(files.to_vec(), |f| f.as_str(), is_step), &summary_path)
+        let files = steps_before_pvd(files.to_vec(), |f| f.as_str(), is_step);
+        let head = atomic::manifest_object(value, &files);
+        atomic::pretty_json(&SortedSummary { head: &head, steps: &report.steps }, &summary_path)
     })?;
     Ok(steps_before_pvd(written, |p| p.file_name().and_then(|f| f.to_str()).unwrap_or(""), is_step))
+}
+
+/// A summary printed as its whole JSON value would be (keys sorted at every level), with the
+/// step rows, which grow with the number of steps, made JSON values one at a time.
+struct SortedSummary<'a> {
+    /// The summary as a manifest object, `steps` empty.
+    head: &'a serde_json::Map<String, serde_json::Value>,
+    /// The step rows.
+    steps: &'a [StepResult],
+}
+
+impl Serialize for SortedSummary<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(self.head.len()))?;
+        for (k, v) in self.head {
+            if k == "steps" {
+                map.serialize_entry(k, &RowValues(self.steps))?;
+            } else {
+                map.serialize_entry(k, v)?;
+            }
+        }
+        map.end()
+    }
+}
+
+/// Step rows printed as their JSON values, each made only while it is printed.
+struct RowValues<'a>(&'a [StepResult]);
+
+impl Serialize for RowValues<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut seq = serializer.serialize_seq(Some(self.0.len()))?;
+        for row in self.0 {
+            seq.serialize_element(&serde_json::to_value(row).map_err(serde::ser::Error::custom)?)?;
+        }
+        seq.end()
+    }
 }
 
 /// The collection of the step files.

@@ -339,13 +339,26 @@ impl StreamedFile {
 /// # Errors
 /// [`OutputError::Serialize`] if serde_json fails.
 pub fn manifest_json(value: serde_json::Value, files: &[String], path: &Path) -> Result<Vec<u8>, OutputError> {
+    pretty_json(&manifest_object(value, files), path)
+}
+
+/// The object of [`manifest_json`], before it is printed.
+pub fn manifest_object(value: serde_json::Value, files: &[String]) -> serde_json::Map<String, serde_json::Value> {
     let mut object = match value {
         serde_json::Value::Object(o) => o,
         other => std::iter::once(("value".to_string(), other)).collect(),
     };
     object.insert("written_by".into(), format!("contact2d {}", env!("CARGO_PKG_VERSION")).into());
     object.insert("files".into(), files.iter().map(|f| serde_json::Value::from(f.as_str())).collect());
-    let text = serde_json::to_string_pretty(&object)
+    object
+}
+
+/// `value` pretty-printed with a final newline, as [`manifest_json`] prints a manifest.
+///
+/// # Errors
+/// [`OutputError::Serialize`] naming `path` if serde_json fails.
+pub fn pretty_json(value: &impl serde::Serialize, path: &Path) -> Result<Vec<u8>, OutputError> {
+    let text = serde_json::to_string_pretty(value)
         .map_err(|e| OutputError::Serialize { path: path.to_path_buf(), reason: e.to_string() })?;
     Ok((text + "\n").into_bytes())
 }
