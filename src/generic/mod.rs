@@ -153,6 +153,33 @@ pub struct GenericReport {
     pub notes: Vec<String>,
 }
 
+impl GenericReport {
+    /// A copy of the summary without its step rows (`steps` empty), which grow with the
+    /// number of steps.
+    pub fn without_steps(&self) -> GenericReport {
+        GenericReport {
+            scene: self.scene.clone(),
+            status: self.status,
+            failed_check: self.failed_check.clone(),
+            algorithm: self.algorithm,
+            dofs: self.dofs,
+            pairs: self.pairs,
+            iterations: self.iterations,
+            scaled: self.scaled,
+            steps: vec![],
+            contacts: self.contacts.clone(),
+            reactions: self.reactions.clone(),
+            reactions_total: self.reactions_total,
+            energies: self.energies.clone(),
+            kkt: self.kkt,
+            floating_bodies: self.floating_bodies.clone(),
+            groups: self.groups.clone(),
+            time_s: self.time_s,
+            notes: self.notes.clone(),
+        }
+    }
+}
+
 /// A solved generic scene: the summary and what the outputs need.
 #[derive(Debug, Clone)]
 pub struct GenericOutcome {
@@ -407,7 +434,7 @@ fn fixed_groups(scene: &GenericScene) -> Vec<FixedGroup> {
 /// summary), its step rows already checked one by one (`in_steps`: the first path found there),
 /// so that the summary is never one JSON value with every step.
 fn non_finite_report(report: &GenericReport, in_steps: Option<String>) -> Option<String> {
-    let head = GenericReport { steps: vec![], ..report.clone() };
+    let head = report.without_steps();
     let serde_json::Value::Object(map) = serde_json::to_value(&head).unwrap_or(serde_json::Value::Null) else {
         return Some("the summary".into());
     };

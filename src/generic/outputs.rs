@@ -18,7 +18,7 @@ use contact2d_contact::{BuiltProblem, ContactSolution};
 
 use serde::ser::{Serialize, SerializeMap, SerializeSeq, Serializer};
 
-use super::{GenericOutcome, GenericReport, StepResult};
+use super::{GenericOutcome, StepResult};
 use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::step_view::{NodeValues, StepView, state_code};
 use crate::output::{
@@ -100,19 +100,19 @@ pub fn finish_generic_outputs(mut out: OutputDir, outcome: &GenericOutcome) -> R
     let collection: Vec<(f64, String)> =
         step_files.iter().enumerate().map(|(k, f)| ((k + 1) as f64, f.clone())).collect();
     out.write_with(PVD_FILE, |p| vtu::write_pvd(p, &collection))?;
-    let mut report = outcome.report.clone();
-    report.notes.extend(skipped);
+    // The summary but its step rows, which are printed from the outcome (no copy of them).
+    let mut head = outcome.report.without_steps();
+    head.notes.extend(skipped);
     let summary_path = out.path().join(SUMMARY_FILE);
     let is_step = |f: &str| step_files.iter().any(|s| s == f);
     let written = out.finish(|files| {
         // The summary without its step rows as one JSON value (keys sorted at every level, as
         // a manifest prints them); the rows become values one at a time while printed.
-        let head = GenericReport { steps: vec![], ..report.clone() };
         let value = serde_json::to_value(&head)
             .map_err(|e| OutputError::Serialize { path: summary_path.clone(), reason: e.to_string() })?;
         let files = steps_before_pvd(files.to_vec(), |f| f.as_str(), is_step);
         let head = atomic::manifest_object(value, &files);
-        atomic::pretty_json(&SortedSummary { head: &head, steps: &report.steps }, &summary_path)
+        atomic::pretty_json(&SortedSummary { head: &head, steps: &outcome.report.steps }, &summary_path)
     })?;
     Ok(steps_before_pvd(written, |p| p.file_name().and_then(|f| f.to_str()).unwrap_or(""), is_step))
 }
