@@ -105,14 +105,18 @@ pub fn finish_generic_outputs(mut out: OutputDir, outcome: &GenericOutcome) -> R
     head.notes.extend(skipped);
     let summary_path = out.path().join(SUMMARY_FILE);
     let is_step = |f: &str| step_files.iter().any(|s| s == f);
-    let written = out.finish(|files| {
+    let written = out.finish_with(|files, file| {
         // The summary without its step rows as one JSON value (keys sorted at every level, as
-        // a manifest prints them); the rows become values one at a time while printed.
-        let value = serde_json::to_value(&head)
-            .map_err(|e| OutputError::Serialize { path: summary_path.clone(), reason: e.to_string() })?;
+        // a manifest prints them); the rows become values one at a time while printed, straight
+        // into the file.
+        let serialize =
+            |e: serde_json::Error| OutputError::Serialize { path: summary_path.clone(), reason: e.to_string() };
+        let value = serde_json::to_value(&head).map_err(serialize)?;
         let files = steps_before_pvd(files.to_vec(), |f| f.as_str(), is_step);
         let head = atomic::manifest_object(value, &files);
-        atomic::pretty_json(&SortedSummary { head: &head, steps: &outcome.report.steps }, &summary_path)
+        serde_json::to_writer_pretty(&mut *file, &SortedSummary { head: &head, steps: &outcome.report.steps })
+            .map_err(serialize)?;
+        file.write_all(b"\n").map_err(|e| OutputError::io(&summary_path, e))
     })?;
     Ok(steps_before_pvd(written, |p| p.file_name().and_then(|f| f.to_str()).unwrap_or(""), is_step))
 }
