@@ -255,35 +255,55 @@ fn run_generic(
 ) -> anyhow::Result<()> {
     let scene = contact2d::generic::load_scene(path, set)?;
     // The output folder is checked and locked before the work.
-    let folder =
+    let mut folder =
         out.map(|dir| contact2d::output::OutputDir::prepare(dir, Some(contact2d::output::SUMMARY_FILE))).transpose()?;
     let mut bar = StepBar::new(quiet || json);
-    let outcome = contact2d::generic::solve_generic(&scene, &mut |done, total| {
-        use contact2d::run::Progress;
-        bar.step_done(done, total, done as f64);
-    })?;
+    // Each step goes to the outputs as it is solved (its VTU file, its line with --verbose) and
+    // only the last step's solution is kept: memory stays flat in the number of steps.
+    let (mut lines, mut write_error) = (vec![], None);
+    let outcome = contact2d::generic::solve_generic_streaming(
+        &scene,
+        &mut |done, total| {
+            use contact2d::run::Progress;
+            bar.step_done(done, total, done as f64);
+        },
+        &mut |built, i, step| {
+            if let Some(folder) = folder.as_mut().filter(|_| write_error.is_none())
+                && let Err(e) = contact2d::generic::outputs::write_step_vtu(folder, built, i, &step.solution)
+            {
+                write_error = Some(e);
+            }
+            if verbose {
+                let s = &step.solution;
+                let line = format!(
+                    "step {}: factors {:?}, {:?} after {} iterations",
+                    i + 1,
+                    step.factors,
+                    s.status,
+                    s.iterations
+                );
+                lines.push(line);
+            }
+        },
+    )?;
     bar.finish();
-    if verbose {
-        for (i, step) in outcome.history.steps.iter().enumerate() {
-            let s = &step.solution;
-            print_stderr(&format!(
-                "step {}: factors {:?}, {:?} after {} iterations",
-                i + 1,
-                step.factors,
-                s.status,
-                s.iterations
-            ));
-        }
+    if let Some(e) = write_error {
+        return Err(e.into());
+    }
+    for line in lines {
+        print_stderr(&line);
     }
     let report = &outcome.report;
     let mut stdout = std::io::stdout().lock();
     if json {
-        writeln!(stdout, "{}", serde_json::to_string_pretty(report)?)?;
+        // Written as it is serialised: no whole copy of the summary, which grows with the steps.
+        serde_json::to_writer_pretty(&mut stdout, report).map_err(std::io::Error::from)?;
+        writeln!(stdout)?;
     } else {
         print_generic(&mut stdout, report)?;
     }
     if let Some(folder) = folder {
-        let written = contact2d::generic::outputs::write_generic_outputs_into(folder, &outcome)?;
+        let written = contact2d::generic::outputs::finish_generic_outputs(folder, &outcome)?;
         let lines: Vec<String> = written.iter().map(|p| format!("  {}", p.display())).collect();
         let text = format!("wrote {} files:\n{}", written.len(), lines.join("\n"));
         if json {

@@ -21,8 +21,8 @@ use web_time::Instant;
 use serde::Serialize;
 
 use contact2d_contact::{
-    BuiltProblem, ContactError, ContactStatus, History, builder::group_length, check_energy_balance, energy_scale,
-    solve_with,
+    BuiltProblem, ContactError, History, Retention, SolvedStep, builder::group_length, check_energy_balance,
+    energy_scale, solve_keeping,
 };
 use contact2d_mesh::read_msh;
 
@@ -153,6 +153,33 @@ pub struct GenericReport {
     pub notes: Vec<String>,
 }
 
+impl GenericReport {
+    /// A copy of the summary without its step rows (`steps` empty), which grow with the
+    /// number of steps.
+    pub fn without_steps(&self) -> GenericReport {
+        GenericReport {
+            scene: self.scene.clone(),
+            status: self.status,
+            failed_check: self.failed_check.clone(),
+            algorithm: self.algorithm,
+            dofs: self.dofs,
+            pairs: self.pairs,
+            iterations: self.iterations,
+            scaled: self.scaled,
+            steps: vec![],
+            contacts: self.contacts.clone(),
+            reactions: self.reactions.clone(),
+            reactions_total: self.reactions_total,
+            energies: self.energies.clone(),
+            kkt: self.kkt,
+            floating_bodies: self.floating_bodies.clone(),
+            groups: self.groups.clone(),
+            time_s: self.time_s,
+            notes: self.notes.clone(),
+        }
+    }
+}
+
 /// A solved generic scene: the summary and what the outputs need.
 #[derive(Debug, Clone)]
 pub struct GenericOutcome {
@@ -160,7 +187,8 @@ pub struct GenericOutcome {
     pub scene: GenericScene,
     /// The built problem.
     pub built: BuiltProblem,
-    /// The solved steps.
+    /// The solved steps: every one after [`solve_generic`], only the last after
+    /// [`solve_generic_streaming`] (whose caller saw each step as it was solved).
     pub history: History,
     /// The summary.
     pub report: GenericReport,
@@ -185,6 +213,23 @@ pub fn solve_generic(
     solve_generic_until(scene, None, on_step)
 }
 
+/// [`solve_generic`] that streams: `on_solved(built, i, step)` is called with each step `i` (from
+/// 0) as it is solved, and the outcome's history keeps only the last step's solution (the report
+/// still has every step's summary row), so that memory stays flat in the number of steps. Same
+/// report as [`solve_generic`].
+///
+/// # Errors
+/// As [`solve_generic`].
+pub fn solve_generic_streaming(
+    scene: &GenericScene,
+    on_step: &mut dyn FnMut(usize, usize),
+    on_solved: &mut dyn FnMut(&BuiltProblem, usize, &SolvedStep),
+) -> Result<GenericOutcome, GenericError> {
+    let clock = Instant::now();
+    let mesh = read_scene_mesh(scene)?;
+    solve_generic_from(scene, mesh, clock, None, Stream { retention: Retention::Last, on_step, on_solved })
+}
+
 /// [`solve_generic`] with a wall-clock deadline checked before each load step
 /// ([`contact2d_contact::SolverSettings::with_deadline`]).
 ///
@@ -197,6 +242,13 @@ pub fn solve_generic_until(
     on_step: &mut dyn FnMut(usize, usize),
 ) -> Result<GenericOutcome, GenericError> {
     let clock = Instant::now();
+    let mesh = read_scene_mesh(scene)?;
+    let stream = Stream { retention: Retention::All, on_step, on_solved: &mut |_, _, _| {} };
+    solve_generic_from(scene, mesh, clock, deadline, stream)
+}
+
+/// The scene's mesh file, checked and read.
+fn read_scene_mesh(scene: &GenericScene) -> Result<contact2d_mesh::Mesh, GenericError> {
     let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
     // A FIFO or an endless device is refused before reading; the reader reports the rest.
     if let Err(e) = check_input_file(&scene.mesh_path(), MAX_MESH_BYTES)
@@ -205,12 +257,7 @@ pub fn solve_generic_until(
         let reason = format!("cannot read {mesh_name}: {}", e.reason());
         return Err(SceneError::Value { path: scene_name.clone(), key: "mesh".into(), reason }.into());
     }
-    let mesh = read_msh(scene.mesh_path()).map_err(|source| GenericError::Mesh {
-        scene: scene_name.clone(),
-        mesh: mesh_name.clone(),
-        source,
-    })?;
-    solve_generic_from(scene, mesh, clock, deadline, on_step)
+    read_msh(scene.mesh_path()).map_err(|source| GenericError::Mesh { scene: scene_name, mesh: mesh_name, source })
 }
 
 /// [`solve_generic`] on a mesh already read instead of the scene's mesh file (which is neither
@@ -224,7 +271,15 @@ pub fn solve_generic_on_mesh(
     mesh: contact2d_mesh::Mesh,
     on_step: &mut dyn FnMut(usize, usize),
 ) -> Result<GenericOutcome, GenericError> {
-    solve_generic_from(scene, mesh, Instant::now(), None, on_step)
+    let stream = Stream { retention: Retention::All, on_step, on_solved: &mut |_, _, _| {} };
+    solve_generic_from(scene, mesh, Instant::now(), None, stream)
+}
+
+/// What a solve does with each step as it is solved, and which steps its history keeps.
+struct Stream<'a> {
+    retention: Retention,
+    on_step: &'a mut dyn FnMut(usize, usize),
+    on_solved: &'a mut dyn FnMut(&BuiltProblem, usize, &SolvedStep),
 }
 
 /// The solve of [`solve_generic`] once the mesh is read (`clock` started before reading).
@@ -233,7 +288,7 @@ fn solve_generic_from(
     mesh: contact2d_mesh::Mesh,
     clock: Instant,
     deadline: Option<Instant>,
-    on_step: &mut dyn FnMut(usize, usize),
+    stream: Stream<'_>,
 ) -> Result<GenericOutcome, GenericError> {
     let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
     let contact_error =
@@ -248,14 +303,43 @@ fn solve_generic_from(
         None => settings,
     };
     let total = schedule.steps().len();
-    let history =
-        solve_with(&built.problem, &settings, &schedule, &mut |i, _| on_step(i + 1, total)).map_err(contact_error)?;
-    let post_clock = Instant::now();
     let fixed = fixed_groups(scene);
-    let mut steps = results::step_results(&built, &history, &fixed).map_err(contact_error)?;
-    let last = steps.pop().ok_or_else(|| contact_error(ContactError::InvalidInput("no load step solved".into())))?;
-    let mut summary_steps: Vec<StepResult> = steps;
-    summary_steps.push(without_profiles(&last));
+    // Each step's summary row is made as the step is solved; of the steps before, the results
+    // keep only what the next step needs.
+    let mut results = results::StepResults::new(&built, &fixed);
+    let mut summary_steps: Vec<StepResult> = Vec::with_capacity(total);
+    let (mut failed, mut solve_time, mut post_time) = (None, 0.0, 0.0);
+    let mut first_non_finite: Option<String> = None;
+    let Stream { retention, on_step, on_solved } = stream;
+    let history = solve_keeping(&built.problem, &settings, &schedule, retention, &mut |i, step| {
+        let post_clock = Instant::now();
+        solve_time += step.solution.time.as_secs_f64();
+        if failed.is_none() {
+            match results.push(step, false) {
+                Ok(result) => {
+                    // Checked one row at a time: the whole summary as one JSON value grows with the steps.
+                    if first_non_finite.is_none() {
+                        let value = serde_json::to_value(&result).unwrap_or(serde_json::Value::Null);
+                        first_non_finite = non_finite(&value, &format!("steps.{}", summary_steps.len()));
+                    }
+                    summary_steps.push(result);
+                }
+                Err(e) => failed = Some(e),
+            }
+        }
+        on_solved(&built, i, step);
+        post_time += post_clock.elapsed().as_secs_f64();
+        on_step(i + 1, total);
+    })
+    .map_err(contact_error)?;
+    if let Some(e) = failed {
+        return Err(contact_error(e));
+    }
+    let post_clock = Instant::now();
+    let (Some(last), Some(last_step)) = (summary_steps.last(), history.steps.last()) else {
+        return Err(contact_error(ContactError::InvalidInput("no load step solved".into())));
+    };
+    let last = StepResult { contacts: results.contacts_with_profiles(&last_step.solution), ..last.clone() };
     // A body held only by contact that crosses a gap under a force moves rigidly first: the work
     // of the force on that travel is stored nowhere in a quasi-static model (there is no kinetic
     // energy), so the energy balance is no check of the numbers there.
@@ -267,7 +351,7 @@ fn solve_generic_from(
     // rigid travel worth counting.
     let touching = built.problem.gap.iter().all(|g| g.abs() <= 1e-9 * extent);
     let balance_checked = !interference && (history.scaled || built.problem.system.floating.is_empty() || touching);
-    let (status, failed_check) = certified_status(&history, &summary_steps, balance_checked);
+    let (status, failed_check) = certified_status(history.scaled, &summary_steps, balance_checked);
     let floating_bodies = built
         .problem
         .system
@@ -280,8 +364,8 @@ fn solve_generic_from(
         assemble: built.problem.build_times.assemble.as_secs_f64(),
         factor: built.problem.build_times.factor.as_secs_f64(),
         condense: history.condense_time.as_secs_f64(),
-        solve: history.steps.iter().map(|s| s.solution.time.as_secs_f64()).sum(),
-        post: post_clock.elapsed().as_secs_f64(),
+        solve: solve_time,
+        post: post_time + post_clock.elapsed().as_secs_f64(),
         total: clock.elapsed().as_secs_f64(),
     };
     let mut notes = scene.element_warnings();
@@ -300,10 +384,10 @@ fn solve_generic_from(
                 .into(),
         );
     }
-    if history.steps.len() < total {
+    if summary_steps.len() < total {
         notes.push(format!(
             "the history stopped after step {} of {total}: it did not converge ({status})",
-            history.steps.len()
+            summary_steps.len()
         ));
     }
     let report = GenericReport {
@@ -313,7 +397,7 @@ fn solve_generic_from(
         algorithm: scene.solver.algorithm,
         dofs: built.problem.system.dofs.num_free(),
         pairs: built.problem.num_pairs(),
-        iterations: history.steps.iter().map(|s| s.solution.iterations).sum(),
+        iterations: summary_steps.iter().map(|s| s.iterations).sum(),
         scaled: history.scaled,
         steps: summary_steps,
         contacts: last.contacts,
@@ -326,7 +410,7 @@ fn solve_generic_from(
         time_s: times,
         notes,
     };
-    if let Some(path) = non_finite(&serde_json::to_value(&report).unwrap_or(serde_json::Value::Null), "") {
+    if let Some(path) = non_finite_report(&report, first_non_finite) {
         return Err(contact_error(ContactError::NotFinite(format!("{path} of the summary"))));
     }
     Ok(GenericOutcome { scene: scene.clone(), built, history, report })
@@ -344,6 +428,23 @@ fn fixed_groups(scene: &GenericScene) -> Vec<FixedGroup> {
         }
     }
     out
+}
+
+/// The dotted path of the first non-finite number of `report` (as [`non_finite`] of the whole
+/// summary), its step rows already checked one by one (`in_steps`: the first path found there),
+/// so that the summary is never one JSON value with every step.
+fn non_finite_report(report: &GenericReport, in_steps: Option<String>) -> Option<String> {
+    let head = report.without_steps();
+    let serde_json::Value::Object(map) = serde_json::to_value(&head).unwrap_or(serde_json::Value::Null) else {
+        return Some("the summary".into());
+    };
+    let mut in_steps = in_steps;
+    map.into_iter().find_map(|(k, v)| {
+        if k == "steps" {
+            return in_steps.take();
+        }
+        non_finite(&serde_json::Value::Object(std::iter::once((k, v)).collect()), "")
+    })
 }
 
 /// The dotted path of the first non-finite number in a serialised summary (serde_json writes
@@ -371,27 +472,20 @@ fn non_finite(value: &serde_json::Value, at: &str) -> Option<String> {
 /// The status of a history — its worst step's; `numerical` (with the check) when a step's
 /// solution fails [`contact2d_contact::certify`] or the history breaks its energy balance `W = Φ_E + Φ_f`
 /// ([`check_energy_balance`]: tight when solved once and scaled, where W is exact; the
-/// trapezoid rule's tolerance otherwise).
-fn certified_status(history: &History, steps: &[StepResult], balance: bool) -> (&'static str, Option<String>) {
-    if let Some(s) = history.steps.iter().map(|s| s.solution.status).find(|s| *s != ContactStatus::Converged) {
-        return (results::status_name(s), None);
+/// trapezoid rule's tolerance otherwise; `scaled`: whether the history was).
+fn certified_status(scaled: bool, steps: &[StepResult], balance: bool) -> (&'static str, Option<String>) {
+    let converged = results::status_name(contact2d_contact::ContactStatus::Converged);
+    if let Some(s) = steps.iter().map(|s| s.status).find(|s| *s != converged) {
+        return (s, None);
     }
     let stored = |step: &StepResult| step.energies.values().sum::<f64>();
     let scale = energy_scale(steps.iter().map(|s| (s.work, stored(s), s.dissipated)));
     for (i, step) in steps.iter().enumerate().filter(|_| balance) {
-        if let Err(f) = check_energy_balance(step.work, stored(step), step.dissipated, history.scaled, scale) {
+        if let Err(f) = check_energy_balance(step.work, stored(step), step.dissipated, scaled, scale) {
             return ("numerical", Some(format!("step {}: {f}", i + 1)));
         }
     }
     ("converged", None)
-}
-
-fn without_profiles(step: &StepResult) -> StepResult {
-    let mut s = step.clone();
-    for c in s.contacts.values_mut() {
-        c.profile = None;
-    }
-    s
 }
 
 fn unique(items: impl Iterator<Item = String>) -> Vec<String> {

@@ -14,9 +14,11 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use contact2d_contact::ContactSolution;
+use contact2d_contact::{BuiltProblem, ContactSolution};
 
-use super::GenericOutcome;
+use serde::ser::{Serialize, SerializeMap, SerializeSeq, Serializer};
+
+use super::{GenericOutcome, StepResult};
 use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::step_view::{NodeValues, StepView, state_code};
 use crate::output::{
@@ -25,17 +27,51 @@ use crate::output::{
 
 /// Writes every output of `outcome` into the prepared folder `out` (each file atomically, stale
 /// files of an earlier run removed, `summary.json` with the manifest last) and returns the paths
-/// written. A figure that cannot be drawn is skipped with a note in the summary.
+/// written. A figure that cannot be drawn is skipped with a note in the summary. The history
+/// must hold every step ([`super::solve_generic`]); a streamed run writes each step's file with
+/// [`write_step_vtu`] as it is solved and the rest with [`finish_generic_outputs`].
 ///
 /// # Errors
 /// [`OutputError`] naming the first file that could not be written; the folder then holds no
 /// summary.
 pub fn write_generic_outputs_into(mut out: OutputDir, outcome: &GenericOutcome) -> Result<Vec<PathBuf>, OutputError> {
+    if outcome.history.steps.len() != outcome.report.steps.len() {
+        let reason = "the history does not hold every step (a streamed run writes them as they are solved)".into();
+        return Err(OutputError::MissingData { path: out.path().to_path_buf(), reason });
+    }
+    for (k, step) in outcome.history.steps.iter().enumerate() {
+        write_step_vtu(&mut out, &outcome.built, k, &step.solution)?;
+    }
+    finish_generic_outputs(out, outcome)
+}
+
+/// Writes step `k`'s VTU file (`step_<k>.vtu`) into `out`: called for each step as it is solved,
+/// before [`finish_generic_outputs`].
+///
+/// # Errors
+/// [`OutputError`] naming the file.
+pub fn write_step_vtu(
+    out: &mut OutputDir,
+    built: &BuiltProblem,
+    k: usize,
+    solution: &ContactSolution,
+) -> Result<PathBuf, OutputError> {
+    out.write_with(&step_file_name(k), |tmp| vtu::write_step_vtu(tmp, &built_step_view(built, solution)))
+}
+
+/// Writes the outputs of `outcome` other than the step files, which [`write_step_vtu`] wrote for
+/// each of the report's steps: figures and profiles of the last step, `steps.csv`, `steps.pvd`
+/// and `summary.json` last. The manifest and the returned paths list the step files before
+/// `steps.pvd`, whenever they were written.
+///
+/// # Errors
+/// As [`write_generic_outputs_into`].
+pub fn finish_generic_outputs(mut out: OutputDir, outcome: &GenericOutcome) -> Result<Vec<PathBuf>, OutputError> {
     let name = &outcome.scene.name;
     let Some(last) = outcome.history.steps.last() else {
         return Err(OutputError::MissingData { path: out.path().to_path_buf(), reason: "no solved step".into() });
     };
-    let n = outcome.history.steps.len();
+    let n = outcome.report.steps.len();
     let view = step_view(outcome, &last.solution);
     let mut skipped = vec![];
     for ext in FIGURE_EXTENSIONS {
@@ -60,21 +96,85 @@ pub fn write_generic_outputs_into(mut out: OutputDir, outcome: &GenericOutcome) 
         out.write_bytes(&format!("contact_{}.csv", file_safe(iface)), profile_csv(result).as_bytes())?;
     }
     out.write_bytes("steps.csv", steps_csv(outcome).as_bytes())?;
-    let mut collection = vec![];
-    for (k, step) in outcome.history.steps.iter().enumerate() {
-        let file = step_file_name(k);
-        out.write_with(&file, |tmp| vtu::write_step_vtu(tmp, &step_view(outcome, &step.solution)))?;
-        collection.push(((k + 1) as f64, file));
-    }
-    out.write_with("steps.pvd", |p| vtu::write_pvd(p, &collection))?;
-    let mut report = outcome.report.clone();
-    report.notes.extend(skipped);
+    let step_files: Vec<String> = (0..n).map(step_file_name).collect();
+    let collection: Vec<(f64, String)> =
+        step_files.iter().enumerate().map(|(k, f)| ((k + 1) as f64, f.clone())).collect();
+    out.write_with(PVD_FILE, |p| vtu::write_pvd(p, &collection))?;
+    // The summary but its step rows, which are printed from the outcome (no copy of them).
+    let mut head = outcome.report.without_steps();
+    head.notes.extend(skipped);
     let summary_path = out.path().join(SUMMARY_FILE);
-    out.finish(|files| {
-        let value = serde_json::to_value(&report)
-            .map_err(|e| OutputError::Serialize { path: summary_path.clone(), reason: e.to_string() })?;
-        atomic::manifest_json(value, files, &summary_path)
-    })
+    let is_step = |f: &str| step_files.iter().any(|s| s == f);
+    let written = out.finish_with(|files, file| {
+        // The summary without its step rows as one JSON value (keys sorted at every level, as
+        // a manifest prints them); the rows become values one at a time while printed, straight
+        // into the file.
+        let serialize =
+            |e: serde_json::Error| OutputError::Serialize { path: summary_path.clone(), reason: e.to_string() };
+        let value = serde_json::to_value(&head).map_err(serialize)?;
+        let files = steps_before_pvd(files.to_vec(), |f| f.as_str(), is_step);
+        let head = atomic::manifest_object(value, &files);
+        serde_json::to_writer_pretty(&mut *file, &SortedSummary { head: &head, steps: &outcome.report.steps })
+            .map_err(serialize)?;
+        file.write_all(b"\n").map_err(|e| OutputError::io(&summary_path, e))
+    })?;
+    Ok(steps_before_pvd(written, |p| p.file_name().and_then(|f| f.to_str()).unwrap_or(""), is_step))
+}
+
+/// A summary printed as its whole JSON value would be (keys sorted at every level), with the
+/// step rows, which grow with the number of steps, made JSON values one at a time.
+struct SortedSummary<'a> {
+    /// The summary as a manifest object, `steps` empty.
+    head: &'a serde_json::Map<String, serde_json::Value>,
+    /// The step rows.
+    steps: &'a [StepResult],
+}
+
+impl Serialize for SortedSummary<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(self.head.len()))?;
+        for (k, v) in self.head {
+            if k == "steps" {
+                map.serialize_entry(k, &RowValues(self.steps))?;
+            } else {
+                map.serialize_entry(k, v)?;
+            }
+        }
+        map.end()
+    }
+}
+
+/// Step rows printed as their JSON values, each made only while it is printed.
+struct RowValues<'a>(&'a [StepResult]);
+
+impl Serialize for RowValues<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut seq = serializer.serialize_seq(Some(self.0.len()))?;
+        for row in self.0 {
+            seq.serialize_element(&serde_json::to_value(row).map_err(serde::ser::Error::custom)?)?;
+        }
+        seq.end()
+    }
+}
+
+/// The collection of the step files.
+const PVD_FILE: &str = "steps.pvd";
+
+/// `files` with the step files (those `is_step` names) moved, in their order, to just before
+/// `steps.pvd`: the order of a run that writes them after the figures and tables, whenever they
+/// were written.
+fn steps_before_pvd<T>(files: Vec<T>, name: impl Fn(&T) -> &str, is_step: impl Fn(&str) -> bool) -> Vec<T> {
+    let (steps, others): (Vec<T>, Vec<T>) = files.into_iter().partition(|f| is_step(name(f)));
+    let mut steps = Some(steps);
+    let mut out = Vec::with_capacity(others.len() + steps.as_ref().map_or(0, Vec::len));
+    for f in others {
+        if name(&f) == PVD_FILE {
+            out.extend(steps.take().unwrap_or_default());
+        }
+        out.push(f);
+    }
+    out.extend(steps.take().unwrap_or_default());
+    out
 }
 
 /// A name usable in a file name: letters, digits, `-` and `_` kept, anything else `_`.
@@ -84,9 +184,14 @@ fn file_safe(name: &str) -> String {
 
 /// The writers' view of one step: master-side pressures on the master nodes.
 pub fn step_view<'a>(outcome: &'a GenericOutcome, solution: &'a ContactSolution) -> StepView<'a> {
-    let problem = &outcome.built.problem;
+    built_step_view(&outcome.built, solution)
+}
+
+/// [`step_view`] from the built problem alone.
+pub fn built_step_view<'a>(built: &'a BuiltProblem, solution: &'a ContactSolution) -> StepView<'a> {
+    let problem = &built.problem;
     let mut node_contact = vec![None; problem.model.mesh.num_nodes()];
-    for iface in &outcome.built.interfaces {
+    for iface in &built.interfaces {
         let thickness = problem.model.body(&iface.master_region).map_or(1.0, |(_, b)| b.thickness);
         for k in iface.pairs.clone() {
             let pair = &problem.pairs[k];
@@ -101,7 +206,7 @@ pub fn step_view<'a>(outcome: &'a GenericOutcome, solution: &'a ContactSolution)
     StepView {
         problem,
         solution,
-        obstacles: outcome.built.interfaces.iter().filter(|i| i.rigid_slave).map(|i| &i.slave_contour).collect(),
+        obstacles: built.interfaces.iter().filter(|i| i.rigid_slave).map(|i| &i.slave_contour).collect(),
         node_contact,
         axes: ["x1".into(), "x2".into()],
         stress_label: "σ_vM".into(),

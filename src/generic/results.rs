@@ -28,7 +28,7 @@ use std::collections::BTreeMap;
 
 use serde::Serialize;
 
-use contact2d_contact::{BuiltProblem, ContactError, ContactSolution, History, InterfaceInfo, PairState};
+use contact2d_contact::{BuiltProblem, ContactError, ContactSolution, History, InterfaceInfo, PairState, SolvedStep};
 
 use crate::output::step_view::state_label;
 
@@ -72,9 +72,10 @@ pub struct ContactResult {
     /// slave have none: their pair forces are internal).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rigid_resultant: Option<[f64; 2]>,
-    /// The profile (top level only; omitted in the per-step entries).
+    /// The profile (top level only; omitted in the per-step entries). Boxed: every step's row
+    /// holds this field, and a profile's room in each would grow a long history's memory.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub profile: Option<Profile>,
+    pub profile: Option<Box<Profile>>,
 }
 
 /// KKT residuals of a step.
@@ -156,43 +157,81 @@ pub fn step_results(
     history: &History,
     fixed_groups: &[FixedGroup],
 ) -> Result<Vec<StepResult>, ContactError> {
-    let problem = &built.problem;
-    let names: Vec<String> = problem.patterns().iter().map(|p| p.name.clone()).collect();
-    let mut dissipated = vec![0.0; built.interfaces.len()];
-    let mut previous: Option<&ContactSolution> = None;
-    let (mut work, mut previous_force) = (0.0, vec![0.0; problem.system.dofs.num_global()]);
-    let mut out = Vec::with_capacity(history.steps.len());
-    let owner = dof_owners(problem);
-    for (i, step) in history.steps.iter().enumerate() {
+    let mut results = StepResults::new(built, fixed_groups);
+    let n = history.steps.len();
+    history.steps.iter().enumerate().map(|(i, step)| results.push(step, i + 1 == n)).collect()
+}
+
+/// The results of a history computed one step at a time, as each step is solved: it keeps of
+/// the steps before only what the next one needs (the previous displacement, tangential forces
+/// and external force, and the dissipation and work accumulated), so that its memory does not
+/// grow with the number of steps.
+#[derive(Debug, Clone)]
+pub struct StepResults<'a> {
+    built: &'a BuiltProblem,
+    fixed_groups: &'a [FixedGroup],
+    names: Vec<String>,
+    owner: Vec<usize>,
+    dissipated: Vec<f64>,
+    work: f64,
+    previous_force: Vec<f64>,
+    previous: Option<(Vec<f64>, Vec<f64>)>,
+}
+
+impl<'a> StepResults<'a> {
+    /// Before the first step of a history of `built`.
+    pub fn new(built: &'a BuiltProblem, fixed_groups: &'a [FixedGroup]) -> Self {
+        let problem = &built.problem;
+        StepResults {
+            built,
+            fixed_groups,
+            names: problem.patterns().iter().map(|p| p.name.clone()).collect(),
+            owner: dof_owners(problem),
+            dissipated: vec![0.0; built.interfaces.len()],
+            work: 0.0,
+            previous_force: vec![0.0; problem.system.dofs.num_global()],
+            previous: None,
+        }
+    }
+
+    /// The results of the next step of the history (with the interfaces' profiles if
+    /// `with_profile`).
+    ///
+    /// # Errors
+    /// [`ContactError::InvalidInput`] when the step's solution does not fit the problem
+    /// (reactions).
+    pub fn push(&mut self, step: &SolvedStep, with_profile: bool) -> Result<StepResult, ContactError> {
+        let (built, problem) = (self.built, &self.built.problem);
         let s = &step.solution;
-        let last = i + 1 == history.steps.len();
+        let before_tangential = self.previous.as_ref().map(|(_, t)| t.as_slice());
         let mut contacts = BTreeMap::new();
         for (k, iface) in built.interfaces.iter().enumerate() {
-            dissipated[k] += interface_dissipation(iface, s, previous);
-            contacts.insert(iface.name.clone(), contact_result(built, iface, s, dissipated[k], last));
+            self.dissipated[k] += interface_dissipation(iface, s, before_tangential);
+            contacts.insert(iface.name.clone(), contact_result(built, iface, s, self.dissipated[k], with_profile));
         }
         let reactions = reactions_at_dofs(built, s, &step.factors)?;
         let force = external_force(built, &reactions, &step.factors);
-        let before = previous.map(|p| p.displacement.as_slice());
-        work += s
+        let before = self.previous.as_ref().map(|(u, _)| u.as_slice());
+        let previous_force = &self.previous_force;
+        self.work += s
             .displacement
             .iter()
             .enumerate()
             .map(|(d, u)| 0.5 * (previous_force[d] + force[d]) * (u - before.map_or(0.0, |b| b[d])))
             .sum::<f64>();
-        previous_force = force;
-        let per_body = body_energies(problem, &owner, &s.displacement);
+        self.previous_force = force;
+        let per_body = body_energies(problem, &self.owner, &s.displacement);
         let energies: BTreeMap<String, f64> =
             problem.model.bodies.iter().zip(per_body).map(|(body, e)| (body.name.clone(), e)).collect();
-        out.push(StepResult {
-            factors: names.iter().cloned().zip(step.factors.iter().copied()).collect(),
+        let result = StepResult {
+            factors: self.names.iter().cloned().zip(step.factors.iter().copied()).collect(),
             status: status_name(s.status),
             iterations: s.iterations,
             contacts,
-            reactions: group_reactions(built, &reactions, fixed_groups),
+            reactions: group_reactions(built, &reactions, self.fixed_groups),
             reactions_total: reactions_total(built, &reactions),
             energies,
-            work,
+            work: self.work,
             dissipated: step.dissipated,
             kkt: Kkt {
                 max_penetration: s.kkt.max_penetration,
@@ -203,10 +242,22 @@ pub fn step_results(
                 floating_residual: step.floating_residual,
                 floating_iterations: step.floating_iterations,
             },
-        });
-        previous = Some(s);
+        };
+        self.previous = Some((s.displacement.clone(), s.tangential_force.clone()));
+        Ok(result)
     }
-    Ok(out)
+
+    /// The interfaces' results, with profiles, at `solution`, the last step pushed (the
+    /// dissipation accumulated up to it).
+    pub fn contacts_with_profiles(&self, solution: &ContactSolution) -> BTreeMap<String, ContactResult> {
+        let built = self.built;
+        built
+            .interfaces
+            .iter()
+            .zip(&self.dissipated)
+            .map(|(iface, d)| (iface.name.clone(), contact_result(built, iface, solution, *d, true)))
+            .collect()
+    }
 }
 
 /// The body owning each global DOF (`usize::MAX`: none, e.g. a rigid obstacle's node).
@@ -349,15 +400,17 @@ pub fn contact_result(
     // profiles (slip against gap), which must not make the part longer than the whole.
     let stick_length =
         if iface.friction > 0.0 { zone_length(&arc, &sticks, &slip, &in_contact).min(contact_length) } else { 0.0 };
-    let profile = with_profile.then(|| Profile {
-        s: arc.clone(),
-        x: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][0]).collect(),
-        y: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][1]).collect(),
-        pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).collect(),
-        shear: order.iter().map(|&k| s.tangential_force[k] / area(k)).collect(),
-        gap: order.iter().map(|&k| s.gap[k]).collect(),
-        slip: order.iter().map(|&k| s.slip[k]).collect(),
-        state: order.iter().map(|&k| state_label(s.state[k], problem.friction[k])).collect(),
+    let profile = with_profile.then(|| {
+        Box::new(Profile {
+            s: arc.clone(),
+            x: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][0]).collect(),
+            y: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][1]).collect(),
+            pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).collect(),
+            shear: order.iter().map(|&k| s.tangential_force[k] / area(k)).collect(),
+            gap: order.iter().map(|&k| s.gap[k]).collect(),
+            slip: order.iter().map(|&k| s.slip[k]).collect(),
+            state: order.iter().map(|&k| state_label(s.state[k], problem.friction[k])).collect(),
+        })
     });
     ContactResult {
         normal_force: order.iter().map(|&k| s.normal_force[k]).sum(),
@@ -411,14 +464,15 @@ fn opening_is_slip(in_contact: &[bool], inside: &[bool]) -> bool {
     inside != in_contact
 }
 
-/// The friction work of the interface's slipping pairs in one step (trapezoid rule).
-fn interface_dissipation(iface: &InterfaceInfo, s: &ContactSolution, previous: Option<&ContactSolution>) -> f64 {
+/// The friction work of the interface's slipping pairs in one step (trapezoid rule; `previous`:
+/// the tangential forces the step started from).
+fn interface_dissipation(iface: &InterfaceInfo, s: &ContactSolution, previous: Option<&[f64]>) -> f64 {
     iface
         .pairs
         .clone()
         .filter(|&k| matches!(s.state[k], PairState::SlipPositive | PairState::SlipNegative))
         .map(|k| {
-            let start = previous.map_or(0.0, |p| p.tangential_force[k]);
+            let start = previous.map_or(0.0, |p| p[k]);
             -0.5 * (start + s.tangential_force[k]) * s.slip_increment[k]
         })
         .sum()

@@ -185,6 +185,33 @@ impl OutputDir {
         Ok(self.written.iter().map(|n| self.dir.join(n)).filter(|p| !p.ends_with(RECORD_FILE)).collect())
     }
 
+    /// [`OutputDir::finish`] with the manifest printed by `write(files, out)` straight into its
+    /// temporary file instead of made in memory first: for a manifest that grows with the run
+    /// (a summary with a row per load step). For a folder prepared with a manifest name of its
+    /// own (the hidden record is written by [`OutputDir::finish`] only).
+    ///
+    /// # Errors
+    /// As [`OutputDir::finish`]; `write`'s error; [`OutputError::MissingData`] for a folder
+    /// without a manifest name.
+    pub fn finish_with(
+        mut self,
+        write: impl FnOnce(&[String], &mut dyn std::io::Write) -> Result<(), OutputError>,
+    ) -> Result<Vec<PathBuf>, OutputError> {
+        self.remove_stale()?;
+        let name = self.manifest.clone();
+        let mut files = self.written.clone();
+        files.push(name.clone());
+        self.write_with(&name, |tmp| {
+            let file = open_no_follow(tmp).map_err(|e| OutputError::io(tmp, e))?;
+            let mut out = std::io::BufWriter::new(file);
+            write(&files, &mut out)?;
+            out.flush().map_err(|e| OutputError::io(tmp, e))
+        })?;
+        self.finished = true;
+        let _ = std::fs::remove_file(&self.lock);
+        Ok(self.written.iter().map(|n| self.dir.join(n)).collect())
+    }
+
     /// [`OutputDir::finish`] for a folder without a manifest of its own: the record is
     /// [`RECORD_FILE`], a [`manifest_json`] of the run's files. Returns the paths of the run's
     /// files (the hidden record not among them).
@@ -339,13 +366,26 @@ impl StreamedFile {
 /// # Errors
 /// [`OutputError::Serialize`] if serde_json fails.
 pub fn manifest_json(value: serde_json::Value, files: &[String], path: &Path) -> Result<Vec<u8>, OutputError> {
+    pretty_json(&manifest_object(value, files), path)
+}
+
+/// The object of [`manifest_json`], before it is printed.
+pub fn manifest_object(value: serde_json::Value, files: &[String]) -> serde_json::Map<String, serde_json::Value> {
     let mut object = match value {
         serde_json::Value::Object(o) => o,
         other => std::iter::once(("value".to_string(), other)).collect(),
     };
     object.insert("written_by".into(), format!("contact2d {}", env!("CARGO_PKG_VERSION")).into());
     object.insert("files".into(), files.iter().map(|f| serde_json::Value::from(f.as_str())).collect());
-    let text = serde_json::to_string_pretty(&object)
+    object
+}
+
+/// `value` pretty-printed with a final newline, as [`manifest_json`] prints a manifest.
+///
+/// # Errors
+/// [`OutputError::Serialize`] naming `path` if serde_json fails.
+pub fn pretty_json(value: &impl serde::Serialize, path: &Path) -> Result<Vec<u8>, OutputError> {
+    let text = serde_json::to_string_pretty(value)
         .map_err(|e| OutputError::Serialize { path: path.to_path_buf(), reason: e.to_string() })?;
     Ok((text + "\n").into_bytes())
 }

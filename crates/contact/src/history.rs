@@ -83,13 +83,42 @@ pub fn solve_history_with(
 pub fn march<L, E>(
     loadings: &[L],
     pairs: usize,
+    solve_step: impl FnMut(&L, &StepStart, Option<&[PairState]>) -> Result<ContactSolution, E>,
+    on_step: &mut dyn FnMut(&HistoryStep),
+) -> Result<Vec<HistoryStep>, E> {
+    march_keeping(loadings, pairs, Retention::All, solve_step, on_step)
+}
+
+/// Which solved steps a history keeps once `on_step` has seen them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum Retention {
+    /// Every step (memory grows with the number of steps).
+    #[default]
+    All,
+    /// Only the last step: the others are seen by `on_step` alone, so that memory stays flat in
+    /// the number of steps (a caller that streams each step's results as it is solved).
+    Last,
+}
+
+/// [`march`], keeping the steps `retention` asks for (each one is given to `on_step` either
+/// way; [`Retention::Last`] returns one step, the last solved, or none).
+///
+/// # Errors
+/// The first error of `solve_step`.
+pub fn march_keeping<L, E>(
+    loadings: &[L],
+    pairs: usize,
+    retention: Retention,
     mut solve_step: impl FnMut(&L, &StepStart, Option<&[PairState]>) -> Result<ContactSolution, E>,
     on_step: &mut dyn FnMut(&HistoryStep),
 ) -> Result<Vec<HistoryStep>, E> {
     let mut start = StepStart::initial(pairs);
     let mut guess: Option<Vec<PairState>> = None;
     let mut dissipated = 0.0;
-    let mut steps = Vec::with_capacity(loadings.len());
+    let mut steps = Vec::with_capacity(match retention {
+        Retention::All => loadings.len(),
+        Retention::Last => 1,
+    });
     for loading in loadings {
         let solution = solve_step(loading, &start, guess.as_deref())?;
         dissipated += solution.dissipation;
@@ -98,6 +127,9 @@ pub fn march<L, E>(
         let converged = solution.status.is_solved();
         let step = HistoryStep { solution, dissipated };
         on_step(&step);
+        if retention == Retention::Last {
+            steps.clear();
+        }
         steps.push(step);
         if !converged {
             break;

@@ -49,7 +49,7 @@ pub use clarabel_tresca::solve_frictional_qp;
 pub use error::ContactError;
 pub use frictional_active_set::solve_frictional_active_set;
 pub use frictionless_active_set::solve_frictionless_active_set;
-pub use history::{HistoryStep, StepAlgorithm, equal_steps, solve_history, solve_history_with};
+pub use history::{HistoryStep, Retention, StepAlgorithm, equal_steps, solve_history, solve_history_with};
 pub use interface::Interface;
 pub use loading::LoadSchedule;
 pub use pairing::{ContactPair, node_to_node_targets, nodes_face_each_other, pair_contours, tributary_weights};
@@ -58,4 +58,4 @@ pub use problem::{BuildTimes, ContactProblem, LoadPattern, PairRow, SparseRow, c
 pub use report::{RawSolution, fem_solution, finish_from_displacement, finish_from_forces};
 pub use segment_to_segment::{IntegratedRows, RowCoefficient, pair_segments};
 pub use solution::{ContactSolution, ContactStatus, IterationRecord, KktResiduals, PairState, StepStart, Violation};
-pub use solve::{ContactAlgorithm, History, SolvedStep, SolverSettings, solve, solve_with};
+pub use solve::{ContactAlgorithm, History, SolvedStep, SolverSettings, solve, solve_keeping, solve_with};

@@ -26,7 +26,7 @@ use crate::algorithms::frictional_active_set::solve_frictional_active_set;
 use crate::algorithms::penalty::{PenaltyParameters, solve_penalty};
 use crate::error::ContactError;
 use crate::floating::{FloatingStep, RigidModes, solve_floating_step as solve_floating_step_with};
-use crate::history::{HistoryStep, march};
+use crate::history::{HistoryStep, Retention, march_keeping};
 use crate::interface::Interface;
 use crate::loading::LoadSchedule;
 use crate::problem::ContactProblem;
@@ -204,7 +204,8 @@ pub struct SolvedStep {
 /// A solved schedule.
 #[derive(Debug, Clone, PartialEq)]
 pub struct History {
-    /// The steps in order; the history stops after the first step that does not converge.
+    /// The steps in order; the history stops after the first step that does not converge. Only
+    /// the last one after [`solve_keeping`] with [`Retention::Last`].
     pub steps: Vec<SolvedStep>,
     /// Whether the schedule was solved once and scaled (no gap, proportional growing loads).
     pub scaled: bool,
@@ -233,6 +234,23 @@ pub fn solve_with(
     problem: &ContactProblem,
     settings: &SolverSettings,
     schedule: &LoadSchedule,
+    on_step: &mut dyn FnMut(usize, &SolvedStep),
+) -> Result<History, ContactError> {
+    solve_keeping(problem, settings, schedule, Retention::All, on_step)
+}
+
+/// [`solve_with`], the history keeping the steps `retention` asks for: with
+/// [`Retention::Last`] every step is given to `on_step` as it is solved and only the last stays
+/// in [`History::steps`], so that memory stays flat in the number of steps (a caller that
+/// streams each step's results).
+///
+/// # Errors
+/// As [`solve_with`].
+pub fn solve_keeping(
+    problem: &ContactProblem,
+    settings: &SolverSettings,
+    schedule: &LoadSchedule,
+    retention: Retention,
     on_step: &mut dyn FnMut(usize, &SolvedStep),
 ) -> Result<History, ContactError> {
     let names: Vec<&str> = problem.patterns().iter().map(|p| p.name.as_str()).collect();
@@ -269,9 +287,10 @@ pub fn solve_with(
         floating_iterations: floating.borrow().get(i).map_or(0, |f: &(usize, f64)| f.0),
         floating_residual: floating.borrow().get(i).map_or(0.0, |f: &(usize, f64)| f.1),
     };
-    let history = march(
+    let history = march_keeping(
         &targets,
         problem.num_pairs(),
+        retention,
         |target, start, guess| {
             let step = floating.borrow().len() + 1;
             if settings.deadline.is_some_and(|d| web_time::Instant::now() >= d) {
@@ -292,46 +311,51 @@ pub fn solve_with(
             }
         },
     )?;
-    let solved: Vec<SolvedStep> = history.iter().enumerate().map(|(i, h)| step_of(i, h)).collect();
+    // The index of the first step kept (all but the last dropped under `Retention::Last`).
+    let first = floating.borrow().len() - history.len();
+    let solved: Vec<SolvedStep> = history.iter().enumerate().map(|(i, h)| step_of(first + i, h)).collect();
     let is_scaled = scaled.is_some();
     let steps = match scaled {
-        Some((_, multipliers)) => scale_steps(&solved, &multipliers, on_step),
+        Some((_, multipliers)) => scale_steps(&solved, &multipliers, retention, on_step),
         None => solved,
     };
     Ok(History { steps, scaled: is_scaled, condense_time })
 }
 
-/// The one solution at the direction, scaled to every multiplier.
+/// The one solution at the direction, scaled to every multiplier (each given to `on_step`, the
+/// ones `retention` asks for kept).
 fn scale_steps(
     solved: &[SolvedStep],
     multipliers: &[f64],
+    retention: Retention,
     on_step: &mut dyn FnMut(usize, &SolvedStep),
 ) -> Vec<SolvedStep> {
     let Some(unit) = solved.first() else { return vec![] };
-    multipliers
-        .iter()
-        .enumerate()
-        .map(|(i, &t)| {
-            let mut solution = unit.solution.clone();
-            let before = if i == 0 { 0.0 } else { multipliers[i - 1] };
-            scale_solution(&mut solution, t, before);
-            // One solve did the work of every step: the counters report it once.
-            if i > 0 {
-                solution.iterations = 0;
-                solution.time = std::time::Duration::ZERO;
-                solution.trace.clear();
-            }
-            let step = SolvedStep {
-                factors: unit.factors.iter().map(|f| f * t).collect(),
-                dissipated: unit.dissipated * t * t,
-                solution,
-                floating_iterations: if i == 0 { unit.floating_iterations } else { 0 },
-                floating_residual: unit.floating_residual * t,
-            };
-            on_step(i, &step);
-            step
-        })
-        .collect()
+    let mut kept = vec![];
+    for (i, &t) in multipliers.iter().enumerate() {
+        let mut solution = unit.solution.clone();
+        let before = if i == 0 { 0.0 } else { multipliers[i - 1] };
+        scale_solution(&mut solution, t, before);
+        // One solve did the work of every step: the counters report it once.
+        if i > 0 {
+            solution.iterations = 0;
+            solution.time = std::time::Duration::ZERO;
+            solution.trace.clear();
+        }
+        let step = SolvedStep {
+            factors: unit.factors.iter().map(|f| f * t).collect(),
+            dissipated: unit.dissipated * t * t,
+            solution,
+            floating_iterations: if i == 0 { unit.floating_iterations } else { 0 },
+            floating_residual: unit.floating_residual * t,
+        };
+        on_step(i, &step);
+        if retention == Retention::Last {
+            kept.clear();
+        }
+        kept.push(step);
+    }
+    kept
 }
 
 /// Scales a solution of a problem that is linear in the load (no gap, proportional loading) to
