@@ -31,7 +31,10 @@
 //!   (it is part of it), on every bundled generic scene.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use std::path::{Path, PathBuf};
+mod common;
+use common::bundled_scenes;
+
+use std::path::Path;
 
 use contact2d::generic::{GenericOutcome, GenericScene, load_scene, solve_generic};
 
@@ -137,16 +140,6 @@ fn a_reversal_across_the_clearance_adds_no_friction_work_for_the_crossing() {
     );
     assert!((n_cycle - n_direct).abs() <= 1e-6 * n_direct, "{n_cycle} against {n_direct}");
     assert!((reversal - direct).abs() <= 0.05 * direct, "reversal step {reversal} against from the centre {direct}");
-}
-
-fn bundled_scenes() -> Vec<PathBuf> {
-    let mut out: Vec<PathBuf> = std::fs::read_dir("scenes/generic")
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    out.sort();
-    out
 }
 
 #[test]

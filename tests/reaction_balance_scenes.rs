@@ -39,21 +39,13 @@
 //! floating block's equilibrium is iterated to 1e-10 of the force scale.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use std::path::{Path, PathBuf};
+mod common;
+use common::bundled_scenes;
+
+use std::path::Path;
 use std::process::Command;
 
 use contact2d::generic::{GenericOutcome, load_scene, solve_generic};
-
-/// Every bundled generic scene, sorted.
-fn bundled_scenes() -> Vec<PathBuf> {
-    let mut out: Vec<PathBuf> = std::fs::read_dir("scenes/generic")
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    out.sort();
-    out
-}
 
 fn solve(path: &Path, overrides: &[String]) -> GenericOutcome {
     let scene = load_scene(path, overrides).unwrap();

@@ -1,0 +1,98 @@
+//! The text summaries `run` prints: a generic scene's and a flagship scene's.
+
+use std::io::Write;
+
+/// The first line of a run's text report.
+fn heading(
+    out: &mut impl Write,
+    scene: &str,
+    (dofs, pairs): (usize, usize),
+    algorithm: &str,
+    status: &str,
+    (iterations, steps): (usize, usize),
+) -> std::io::Result<()> {
+    writeln!(
+        out,
+        "scene {scene}  ({dofs} DOFs, {pairs} pairs, {algorithm}, {status} after {iterations} iterations in {steps} step(s))"
+    )
+}
+
+/// A generic scene's text report.
+pub(crate) fn print_generic(out: &mut impl Write, r: &contact2d::generic::GenericReport) -> std::io::Result<()> {
+    heading(out, &r.scene, (r.dofs, r.pairs), &format!("{:?}", r.algorithm), r.status, (r.iterations, r.steps.len()))?;
+    for (name, c) in &r.contacts {
+        writeln!(
+            out,
+            "  contact {name}: normal force {:.6e}, tangential force {:.6e}, contact length {:.6e}, stick length {:.6e}, \
+             max pressure {:.6e}, dissipation {:.3e}",
+            c.normal_force, c.tangential_force, c.contact_length, c.stick_length, c.max_pressure, c.dissipation
+        )?;
+        if let Some([f1, f2]) = c.rigid_resultant {
+            writeln!(out, "  contact {name}: rigid obstacle's resultant [{f1:.6e}, {f2:.6e}]")?;
+        }
+    }
+    // A component the group's own fixes do not prescribe is "none" (JSON null).
+    let component = |f: Option<f64>| f.map_or_else(|| "none".to_string(), |v| format!("{v:.6e}"));
+    for (group, f) in &r.reactions {
+        writeln!(out, "  reaction {group}: [{}, {}]", component(f[0]), component(f[1]))?;
+    }
+    let [t1, t2] = r.reactions_total;
+    writeln!(out, "  reactions total (every constrained DOF once): [{t1:.6e}, {t2:.6e}]")?;
+    for (body, e) in &r.energies {
+        writeln!(out, "  energy {body}: {e:.6e}")?;
+    }
+    for f in &r.floating_bodies {
+        writeln!(out, "  body {} held by contact only (free: {})", f.body, f.free_modes.join(", "))?;
+    }
+    let k = &r.kkt;
+    writeln!(
+        out,
+        "  KKT: penetration {:.1e}, complementarity {:.1e}, cone {:.1e}, floating residual {:.1e}",
+        k.max_penetration, k.max_complementarity, k.max_cone_violation, k.floating_residual
+    )?;
+    let t = &r.time_s;
+    writeln!(
+        out,
+        "  time {:.3} s (read {:.3}, assemble {:.3}, factor {:.3}, condense {:.3}, solve {:.3}, post {:.3})",
+        t.total, t.read, t.assemble, t.factor, t.condense, t.solve, t.post
+    )?;
+    for note in &r.notes {
+        writeln!(out, "  note: {note}")?;
+    }
+    Ok(())
+}
+
+/// A flagship scene's text report.
+pub(crate) fn print_report(out: &mut impl Write, r: &contact2d::run::RunReport) -> std::io::Result<()> {
+    let opt = |v: Option<f64>| v.map_or("-".to_string(), |x| format!("{x:.4}"));
+    heading(out, &r.scene, (r.dofs, r.pairs), &format!("{:?}", r.algorithm), &r.status, (r.iterations, r.steps.len()))?;
+    writeln!(out, "  w      = {}   mu = {}", r.w, r.mu)?;
+    // Where a zone end sits: a node placed there, or between two nodes (then interpolated).
+    let bracket = |b: Option<[f64; 2]>| match b {
+        Some([lo, hi]) if lo == hi => "node placed there".to_string(),
+        Some([lo, hi]) => format!("between nodes at {lo:.5} and {hi:.5}"),
+        None => "no transition".to_string(),
+    };
+    writeln!(out, "  l      = {}   ({}; master's own {})", opt(r.l), bracket(r.l_bracket), opt(r.l_master))?;
+    writeln!(out, "  b      = {}   ({})", opt(r.b), bracket(r.b_bracket))?;
+    writeln!(out, "  P      = {:.5}   W = {:.6}", r.P, r.W)?;
+    writeln!(out, "  Phi_E1 = {:.6}   Phi_E2 = {:.6}   Phi_f = {:.6}", r.Phi_E1, r.Phi_E2, r.Phi_f)?;
+    writeln!(out, "  sigma* = {:.4}   K = {:.3}", r.sigma_star, r.K)?;
+    writeln!(
+        out,
+        "  KKT: penetration {:.1e}, complementarity {:.1e}, cone {:.1e}, slip inside cone {:.1e}, min dissipation {:.1e}",
+        r.kkt.max_penetration,
+        r.kkt.max_complementarity,
+        r.kkt.max_cone_violation,
+        r.kkt.max_slip_inside_cone,
+        r.kkt.min_dissipation
+    )?;
+    writeln!(out, "  time {:.3} s (contact solve {:.4} s)", r.time_s, r.solve_time_s)?;
+    for note in &r.notes {
+        writeln!(out, "  note: {note}")?;
+    }
+    for v in &r.violations {
+        writeln!(out, "  violated at step {}, pair {} (η = {:.4}): {}", v.step, v.pair, v.eta, v.condition)?;
+    }
+    Ok(())
+}
