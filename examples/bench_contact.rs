@@ -20,8 +20,8 @@ use std::time::Instant;
 
 use contact2d::contact::condensed_rows;
 use contact2d::contact::{
-    ContactProblem, Interface, RawSolution, StepAlgorithm, StepStart, equal_steps, finish_from_forces,
-    solve_frictional_active_set, solve_history,
+    ContactProblem, Interface, RawSolution, StepStart, equal_steps, finish_from_forces, history::march,
+    solve_frictional_active_set,
 };
 use contact2d::fem::{CholeskySolver, Component, Dof, DofKind, Ordering, assemble, fill_reducing_permutation};
 use contact2d::plate_insert::PlateInsert;
@@ -201,8 +201,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         rebuilt?;
         let (t_new, _) = best(repeat, || ContactProblem::new(model.clone(), pairs.clone()));
         // No gap: one solve at w = 1 scaled, against a ten-step history.
-        let (t_history, _) =
-            best(repeat, || solve_history(problem, &interface, StepAlgorithm::ActiveSet, &equal_steps(1.0, 10), 100));
+        let (t_history, _) = best(repeat, || {
+            march::<f64, std::convert::Infallible>(
+                &equal_steps(1.0, 10),
+                problem.num_pairs(),
+                |&w, start, guess| Ok(solve_frictional_active_set(problem, &interface, w, start, guess, 100)),
+                &mut |_| {},
+            )
+        });
         // Condensed once against re-solving the bodies in every active-set iteration.
         let (t_refactor_solve, _) = best(repeat, || {
             let mut s = solver.clone();

@@ -10,7 +10,7 @@
 
 use std::fmt::Write;
 
-use contact2d::contact::{Interface, StepAlgorithm, equal_steps, solve_history};
+use contact2d::contact::{ContactAlgorithm, SolverSettings, equal_steps};
 use contact2d::doc_sections::publish_section;
 use contact2d::plate_insert::{PairingVariant, PlateInsert};
 
@@ -42,15 +42,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 ))
             }
             .build()?;
-            let interface = Interface::new(&case.problem);
             for steps in STEPS {
-                let h = solve_history(
-                    &case.problem,
-                    &interface,
-                    StepAlgorithm::ActiveSet,
-                    &equal_steps(0.3838, steps),
-                    100,
-                );
+                let settings = SolverSettings::new(ContactAlgorithm::ActiveSet);
+                let h = case.solve_loads(&settings, &equal_steps(0.3838, steps), &mut |_| {})?;
                 let Some(last) = h.last() else { continue };
                 let q = case.results(&last.solution)?;
                 let f = |v: Option<f64>| v.map_or("-".to_string(), |x| format!("{x:.4}"));

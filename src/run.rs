@@ -7,14 +7,14 @@ use web_time::Instant;
 use serde::Serialize;
 
 use contact2d_contact::{
-    BoussinesqLoading, ContactError, ContactSolution, ContactStatus, HistoryStep, Interface, StepAlgorithm, certify,
-    check_energy_balance, energy_scale, equal_steps, solve_boussinesq_history, solve_history_with,
+    BoussinesqLoading, ContactAlgorithm, ContactError, ContactSolution, ContactStatus, HistoryStep, Interface, certify,
+    check_energy_balance, energy_scale, equal_steps, solve_boussinesq_history,
 };
 
 use crate::plate_insert::{
     PlacedLoading, PlacedStep, PlateInsertProblem, PlateInsertResults, ZoneEndSearch, solve_placed_history,
 };
-use crate::scene::{ContactAlgorithm, Scene};
+use crate::scene::Scene;
 
 /// A solved scene: the JSON summary plus everything the outputs (figures, CSV, VTU) need.
 #[derive(Debug, Clone)]
@@ -94,7 +94,8 @@ pub struct RunReport {
     pub dofs: usize,
     /// Contact pairs.
     pub pairs: usize,
-    /// Algorithm.
+    /// Algorithm (its scene key).
+    #[serde(serialize_with = "crate::scene::serialize_algorithm")]
     pub algorithm: ContactAlgorithm,
     /// Outcome: the first step's that did not converge, else `converged`; `numerical` also
     /// when a step's answer fails [`contact2d_contact::certify()`] or the history's energy
@@ -232,7 +233,7 @@ fn solve_scene_from(
     if p.steps == 0 {
         return Err(ContactError::InvalidInput("steps must be at least 1".into()));
     }
-    let placed = scene.solver.algorithm == ContactAlgorithm::Boussinesq && scene.solver.place_zone_ends;
+    let placed = scene.solver.places_zone_ends();
     if mesh.is_none() {
         scene.check_mesh_file().map_err(|e| ContactError::InvalidInput(e.to_string()))?;
         check_history_memory(scene)?;
@@ -281,32 +282,11 @@ fn solve_scene_from(
         Some(mesh) => scene.plate_insert().build_on(mesh)?,
         None => scene.plate_insert().build()?,
     });
-    let problem = &case.problem;
-    let interface = Interface::new(problem);
-    let max_iterations = scene.solver.max_iterations;
-    let mut on_step = |s: &HistoryStep| report_step(s.solution.load_factor);
-    let mut history = match scene.solver.algorithm {
-        ContactAlgorithm::ActiveSet => {
-            solve_history_with(problem, &interface, StepAlgorithm::ActiveSet, &loads, max_iterations, &mut on_step)
-        }
-        ContactAlgorithm::Clarabel => {
-            solve_history_with(problem, &interface, StepAlgorithm::Clarabel, &loads, max_iterations, &mut on_step)
-        }
-        ContactAlgorithm::Boussinesq => {
-            let eta = case.eta_master();
-            let mut order: Vec<usize> = (0..eta.len()).collect();
-            order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
-            let loadings: Vec<BoussinesqLoading> = if p.l_steps.is_empty() {
-                loads.iter().map(|w| BoussinesqLoading::Load(*w)).collect()
-            } else {
-                p.l_steps.iter().map(|l| BoussinesqLoading::ContactEnd(nearest_position(&order, &eta, *l))).collect()
-            };
-            // The contact-end search of a given load moves one pair per iteration.
-            let history =
-                solve_boussinesq_history(problem, &interface, &order, &loadings, max_iterations.max(2 * order.len()))?;
-            history.iter().for_each(&mut on_step);
-            history
-        }
+    let mut history = if p.l_steps.is_empty() {
+        let settings = scene.settings().map_err(|e| ContactError::InvalidInput(e.to_string()))?;
+        case.solve_loads(&settings, &loads, &mut report_step)?
+    } else {
+        contact_end_steps(&case, &p.l_steps, scene.solver.max_iterations, &mut report_step)?
     };
     if scaled {
         for step in &mut history {
@@ -360,7 +340,7 @@ pub const PLACED_STEP_BYTES_PER_MESH_BYTE: u64 = 40;
 /// solution vector per step, which [`crate::scene::MAX_STEPS`] bounds.
 fn check_history_memory(scene: &Scene) -> Result<(), ContactError> {
     let p = &scene.plate_insert;
-    if scene.solver.algorithm != ContactAlgorithm::Boussinesq || !scene.solver.place_zone_ends {
+    if !scene.solver.places_zone_ends() {
         return Ok(());
     }
     let steps = if p.l_steps.is_empty() { p.steps } else { p.l_steps.len() } as u64;
@@ -521,6 +501,32 @@ fn violations(solved: &[SolvedStep]) -> Vec<ViolationReport> {
         }));
     }
     all
+}
+
+/// The Boussinesq algorithm stepping in the contact end (`l_steps`, the paper's loading): each
+/// l is resolved to the pair nearest to it in the zone's order along the master (η ascending),
+/// and each step's load w follows from it.
+///
+/// # Errors
+/// Those of [`solve_boussinesq_history`].
+fn contact_end_steps(
+    case: &PlateInsertProblem,
+    l_steps: &[f64],
+    max_iterations: usize,
+    report_step: &mut dyn FnMut(f64),
+) -> Result<Vec<HistoryStep>, ContactError> {
+    let problem = &case.problem;
+    let interface = Interface::new(problem);
+    let eta = case.eta_master();
+    let mut order: Vec<usize> = (0..eta.len()).collect();
+    order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
+    let loadings: Vec<BoussinesqLoading> =
+        l_steps.iter().map(|l| BoussinesqLoading::ContactEnd(nearest_position(&order, &eta, *l))).collect();
+    // The contact-end search of a given load moves one pair per iteration.
+    let history =
+        solve_boussinesq_history(problem, &interface, &order, &loadings, max_iterations.max(2 * order.len()))?;
+    history.iter().for_each(|s| report_step(s.solution.load_factor));
+    Ok(history)
 }
 
 /// The position in `order` of the pair whose η is nearest to `l`.

@@ -22,7 +22,7 @@
 //! pairs = "node_to_node"        # or "node_to_segment" (the mesh as given)
 //!
 //! [solver]
-//! algorithm = "active_set"      # or "clarabel", "boussinesq"
+//! algorithm = "active_set"      # or "clarabel", "boussinesq", "penalty", "augmented_lagrangian"
 //! max_iterations = 100
 //! place_zone_ends = true        # Boussinesq: nodes placed at l* and b* (the paper's way)
 //! ```
@@ -40,16 +40,20 @@ use serde::Deserialize;
 
 use contact2d_element::{Formulation, PlaneCondition};
 
+use contact2d_contact::{ContactAlgorithm, SolverSettings};
+
 use crate::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateInsert};
 
 mod limits;
 mod overrides;
 mod parse;
+mod solver;
 
 pub use limits::{MAGNITUDE_RANGE, MAX_FRICTION, MAX_ITERATIONS, MAX_STEPS, SCENE_KEYS, STIFFNESS_RATIO_RANGE};
 pub(crate) use overrides::apply_override;
 pub(crate) use parse::parse_scene_toml;
 pub use parse::read_scene_text;
+pub use solver::{SolverEntry, algorithm_from_key, deserialize_algorithm, serialize_algorithm};
 
 /// Errors reading a scene.
 #[derive(Debug, thiserror::Error)]
@@ -110,43 +114,6 @@ pub enum SceneError {
         /// What is wrong.
         reason: String,
     },
-}
-
-/// Which contact algorithm a scene runs.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum ContactAlgorithm {
-    /// Primal-dual active set on the condensed interface.
-    ActiveSet,
-    /// The QP of (5.3) solved by Clarabel in the full displacement space (Tresca fixed point
-    /// with friction).
-    Clarabel,
-    /// The paper's paired-node Boussinesq algorithm (section 6).
-    Boussinesq,
-}
-
-/// The solver section.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SolverSection {
-    /// Algorithm.
-    pub algorithm: ContactAlgorithm,
-    /// Iteration limit of the active set.
-    #[serde(default = "default_max_iterations")]
-    pub max_iterations: usize,
-    /// Boussinesq only: place master nodes exactly at the zone ends l* and b* by root finding
-    /// (the paper's mesh adjustment, default); `false` keeps the generated mesh and resolves
-    /// the zone ends to its nodes.
-    #[serde(default = "yes")]
-    pub place_zone_ends: bool,
-}
-
-fn yes() -> bool {
-    true
-}
-
-fn default_max_iterations() -> usize {
-    100
 }
 
 /// The `[plate_insert]` section: the flagship problem's parameters.
@@ -283,8 +250,9 @@ pub struct Scene {
     pub description: String,
     /// The flagship problem.
     pub plate_insert: PlateInsertSection,
-    /// The solver.
-    pub solver: SolverSection,
+    /// The solver (the section every scene shares).
+    #[serde(default)]
+    pub solver: SolverEntry,
     /// Directory of the scene file (mesh paths are relative to it).
     #[serde(skip)]
     pub base_dir: PathBuf,
@@ -380,6 +348,7 @@ impl Scene {
                 format!("{} must lie in 1 ..= {MAX_ITERATIONS}", self.solver.max_iterations),
             ));
         }
+        self.settings()?;
         if p.clearance > 0.0 && p.eps == 0.0 {
             return Err(fail(
                 "plate_insert.clearance",
@@ -443,6 +412,18 @@ impl Scene {
             previous = l;
         }
         Ok(())
+    }
+
+    /// The library's solver settings of the `[solver]` section.
+    ///
+    /// # Errors
+    /// [`SceneError::Value`] naming the solver key at fault.
+    pub fn settings(&self) -> Result<SolverSettings, SceneError> {
+        self.solver.settings(|key, reason| SceneError::Value {
+            path: self.file.display().to_string(),
+            key: key.to_string(),
+            reason,
+        })
     }
 
     /// The flagship parameters with the mesh path resolved.
@@ -523,7 +504,10 @@ algorithm = "active_set"
     fn write(text: &str) -> PathBuf {
         let dir = std::env::temp_dir().join(format!("contact2d-scene-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join(format!("{}.toml", text.len()));
+        // One file per call: tests run in parallel and two may write the same text.
+        static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+        let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        let path = dir.join(format!("{call}.toml"));
         std::fs::write(&path, text).unwrap();
         path
     }

@@ -25,8 +25,8 @@
 
 use std::path::Path;
 
+use contact2d::contact::ContactAlgorithm;
 use contact2d::element::PlaneCondition;
-use contact2d::scene::ContactAlgorithm;
 use contact2d::stress::{StressCell, run_stress_cell};
 
 fn scenes() -> &'static Path {

@@ -27,7 +27,7 @@
 //! Clarabel: displacements within 1e-6 relative at every step (issue 4), identical zones.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use contact2d::contact::{ContactStatus, HistoryStep, Interface, PairState, StepAlgorithm, equal_steps, solve_history};
+use contact2d::contact::{ContactAlgorithm, ContactStatus, HistoryStep, PairState, SolverSettings, equal_steps};
 use contact2d::plate_insert::{PairingVariant, PlateInsert, PlateInsertProblem, PlateInsertResults};
 
 const W: f64 = 0.3838;
@@ -81,9 +81,13 @@ fn within(measured: f64, published: f64, rel: f64, what: &str) {
     assert!(err <= rel, "{what}: measured {measured:.5}, published {published}, relative error {err:.2e} > {rel}");
 }
 
-fn history(case: &PlateInsertProblem, steps: usize, algorithm: StepAlgorithm) -> Vec<HistoryStep> {
-    let interface = Interface::new(&case.problem);
-    let h = solve_history(&case.problem, &interface, algorithm, &equal_steps(W, steps), 100);
+/// The loads solved in order through the library's one entry.
+fn solve_loads(case: &PlateInsertProblem, algorithm: ContactAlgorithm, loads: &[f64]) -> Vec<HistoryStep> {
+    case.solve_loads(&SolverSettings::new(algorithm), loads, &mut |_| {}).unwrap()
+}
+
+fn history(case: &PlateInsertProblem, steps: usize, algorithm: ContactAlgorithm) -> Vec<HistoryStep> {
+    let h = solve_loads(case, algorithm, &equal_steps(W, steps));
     assert_eq!(h.len(), steps);
     assert!(h.iter().all(|s| s.solution.status == ContactStatus::Converged));
     h
@@ -106,7 +110,7 @@ fn table2_u1_u2_three_steps_match_the_paper() {
     let mut results = vec![];
     for row in [&U1, &U2] {
         let case = case(row.variant, 64);
-        let h = history(&case, 3, StepAlgorithm::ActiveSet);
+        let h = history(&case, 3, ContactAlgorithm::ActiveSet);
         let last = &h[h.len() - 1].solution;
         let q = case.results(last).unwrap();
         let what = format!("{:?} three steps", row.variant);
@@ -136,8 +140,8 @@ fn table2_u1_u2_three_steps_match_the_paper() {
 #[test]
 fn table2_u1_converged_history_sticks_everywhere_and_keeps_the_forces() {
     let case = case(PairingVariant::HoleMaster, 32);
-    let three = case.results(&history(&case, 3, StepAlgorithm::ActiveSet)[2].solution).unwrap();
-    let h = history(&case, 20, StepAlgorithm::ActiveSet);
+    let three = case.results(&history(&case, 3, ContactAlgorithm::ActiveSet)[2].solution).unwrap();
+    let h = history(&case, 20, ContactAlgorithm::ActiveSet);
     let q = case.results(&h[19].solution).unwrap();
     let bracket = q.contact_bracket.unwrap();
     assert!(
@@ -168,10 +172,9 @@ fn table2_u1_converged_history_sticks_everywhere_and_keeps_the_forces() {
 #[test]
 fn active_set_and_clarabel_agree_through_loading_and_unloading() {
     let case = case(PairingVariant::HoleMaster, 16);
-    let interface = Interface::new(&case.problem);
     let loads = [0.5 * W, W, 0.5 * W, 0.0];
-    let a = solve_history(&case.problem, &interface, StepAlgorithm::ActiveSet, &loads, 100);
-    let c = solve_history(&case.problem, &interface, StepAlgorithm::Clarabel, &loads, 100);
+    let a = solve_loads(&case, ContactAlgorithm::ActiveSet, &loads);
+    let c = solve_loads(&case, ContactAlgorithm::Clarabel, &loads);
     assert_eq!((a.len(), c.len()), (4, 4));
     let peak = a[1].solution.displacement.iter().fold(0.0f64, |m, u| m.max(u.abs()));
     for (i, (x, y)) in a.iter().zip(&c).enumerate() {

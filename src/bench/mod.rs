@@ -27,7 +27,9 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use crate::output::OutputDir;
 use crate::run::run_scene;
-use crate::scene::{ContactAlgorithm, Scene, SceneError};
+use contact2d_contact::ContactAlgorithm;
+
+use crate::scene::{Scene, SceneError};
 
 pub use reference::{Quantity, Reference, ReferenceMethod, richardson};
 
@@ -170,7 +172,10 @@ impl BenchConfig {
         let algorithms = args
             .algorithms
             .iter()
-            .map(|s| parse_algorithm(s).ok_or_else(|| flag("--algorithms", format!("unknown algorithm {s:?}"))))
+            .map(|s| {
+                crate::scene::algorithm_from_key(s)
+                    .ok_or_else(|| flag("--algorithms", format!("unknown algorithm {s:?}")))
+            })
             .collect::<Result<Vec<_>, _>>()?;
         let mut levels = args.levels.clone();
         levels.sort_unstable();
@@ -200,24 +205,6 @@ impl BenchConfig {
     /// Number of (case, level, algorithm) combinations.
     pub fn combinations(&self) -> usize {
         self.cases.len() * self.levels.len() * self.algorithms.len()
-    }
-}
-
-fn parse_algorithm(s: &str) -> Option<ContactAlgorithm> {
-    match s.trim() {
-        "boussinesq" => Some(ContactAlgorithm::Boussinesq),
-        "active_set" => Some(ContactAlgorithm::ActiveSet),
-        "clarabel" => Some(ContactAlgorithm::Clarabel),
-        _ => None,
-    }
-}
-
-/// The scene name of an algorithm.
-pub fn algorithm_name(a: ContactAlgorithm) -> &'static str {
-    match a {
-        ContactAlgorithm::Boussinesq => "boussinesq",
-        ContactAlgorithm::ActiveSet => "active_set",
-        ContactAlgorithm::Clarabel => "clarabel",
     }
 }
 
@@ -413,7 +400,7 @@ pub fn run_bench(config: &BenchConfig, bar: &ProgressBar) -> Result<Vec<Measurem
         for &algorithm in &config.algorithms {
             let mut previous: Option<f64> = None;
             for &level in &config.levels {
-                bar.set_message(format!("{} N = {level} {}", case.name(), algorithm_name(algorithm)));
+                bar.set_message(format!("{} N = {level} {}", case.name(), algorithm.key()));
                 let m = measure(config, case, &path, &base, level, algorithm, previous)?;
                 previous = m.median_time().or(previous.map(|t| 4.0 * t));
                 out.push(m);
@@ -458,8 +445,7 @@ fn measure(
         flag: "--levels",
         reason: format!("scene mesh {} has no _N<level>.msh name", base.plate_insert.mesh.display()),
     })?;
-    let overrides =
-        [format!("plate_insert.mesh={mesh:?}"), format!("solver.algorithm=\"{}\"", algorithm_name(algorithm))];
+    let overrides = [format!("plate_insert.mesh={mesh:?}"), format!("solver.algorithm=\"{}\"", algorithm.key())];
     let scene = Scene::load(path, &overrides)?;
     let budget = Instant::now();
     for _ in 0..config.repeats {

@@ -4,9 +4,9 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
-use crate::scene::ContactAlgorithm;
+use contact2d_contact::ContactAlgorithm;
 
-use super::{BenchCase, Measurement, Quantity, Reference, algorithm_name, median, richardson};
+use super::{BenchCase, Measurement, Quantity, Reference, median, richardson};
 
 /// The references of one case: the algorithm whose values gave them, and the reference per
 /// quantity (`None`: not defined, e.g. no contact end).
@@ -97,7 +97,7 @@ pub fn csv(measurements: &[Measurement], refs: &References) -> String {
             "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},\"{}\"",
             m.case.name(),
             m.level,
-            algorithm_name(m.algorithm),
+            m.algorithm.key(),
             m.dofs,
             m.pairs,
             m.status,
@@ -140,7 +140,7 @@ pub fn markdown(measurements: &[Measurement], refs: &References) -> String {
                 Some(r) => (
                     format!("{:.6}", r.value),
                     r.method.to_string(),
-                    format!("{}, N ≤ {}", algorithm_name(*algorithm), r.finest_level),
+                    format!("{}, N ≤ {}", algorithm.key(), r.finest_level),
                 ),
                 None => ("–".into(), "not defined".into(), String::new()),
             };
@@ -175,7 +175,7 @@ pub fn markdown(measurements: &[Measurement], refs: &References) -> String {
                 "| {} | {} | {} | {} | {} | {time} | {solve} |",
                 m.level,
                 m.dofs,
-                algorithm_name(m.algorithm),
+                m.algorithm.key(),
                 m.status,
                 m.iterations
             );
@@ -260,7 +260,7 @@ pub fn figure_specs(
             for (algorithm, points) in error_time_series(measurements, refs, *case, q) {
                 if !points.is_empty() {
                     series.push(Series {
-                        label: format!("{} {}", algorithm_name(algorithm), q.name()),
+                        label: format!("{} {}", algorithm.key(), q.name()),
                         points: points.iter().map(|(t, e)| (t.log10(), e.log10())).collect(),
                         markers: true,
                     });

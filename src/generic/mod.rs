@@ -120,8 +120,9 @@ pub struct GenericReport {
     /// For `numerical`: the check that failed, with its value and tolerance.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub failed_check: Option<String>,
-    /// The algorithm.
-    pub algorithm: scene::AlgorithmKey,
+    /// The algorithm (its scene key).
+    #[serde(serialize_with = "crate::scene::serialize_algorithm")]
+    pub algorithm: contact2d_contact::ContactAlgorithm,
     /// Free DOFs.
     pub dofs: usize,
     /// Contact pairs.

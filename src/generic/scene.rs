@@ -38,14 +38,14 @@ use serde::Deserialize;
 
 use contact2d_contact::{
     BodyDescription, ContactAlgorithm, ContactDescription, EdgeLoadKind, FixDescription, GapDescription,
-    LoadDescription, LoadSchedule, Pairing, PenaltyParameters, ProblemDescription, SolverSettings,
+    LoadDescription, LoadSchedule, Pairing, ProblemDescription, SolverSettings,
     builder::{DEFAULT_PATTERN, pattern_order},
 };
 use contact2d_element::{Formulation, PlaneCondition, locking_warning};
 use contact2d_fem::Component;
 use contact2d_mesh::Mesh;
 
-use crate::scene::{SceneError, parse_scene_toml};
+use crate::scene::{SceneError, SolverEntry, parse_scene_toml};
 
 /// The plane condition as spelled in scene files.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -204,47 +204,6 @@ pub struct LoadingSection {
     pub schedule: Option<Vec<BTreeMap<String, f64>>>,
 }
 
-/// Algorithm as spelled in scene files.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum AlgorithmKey {
-    /// Primal-dual active set.
-    ActiveSet,
-    /// Clarabel.
-    Clarabel,
-    /// The paper's Boussinesq algorithm.
-    Boussinesq,
-    /// The penalty method (regularised Coulomb law).
-    Penalty,
-    /// The augmented Lagrangian (Alart–Curnier, semi-smooth Newton on the full system).
-    AugmentedLagrangian,
-}
-
-/// The `[solver]` section.
-#[derive(Debug, Clone, PartialEq, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SolverEntry {
-    /// Algorithm (default `active_set`).
-    #[serde(default = "active_set")]
-    pub algorithm: AlgorithmKey,
-    /// Iteration limit per step (default 100).
-    #[serde(default = "hundred")]
-    pub max_iterations: usize,
-    /// The penalty method's normal penalty relative to the contact stiffness scale `k_c`
-    /// (default 1e3; `penalty` only).
-    #[serde(default)]
-    pub penalty: Option<f64>,
-    /// Its tangential (stick) penalty relative to `k_c` (default: `penalty`).
-    #[serde(default)]
-    pub tangential_penalty: Option<f64>,
-}
-
-impl Default for SolverEntry {
-    fn default() -> Self {
-        SolverEntry { algorithm: AlgorithmKey::ActiveSet, max_iterations: 100, penalty: None, tangential_penalty: None }
-    }
-}
-
 fn one() -> f64 {
     1.0
 }
@@ -256,12 +215,6 @@ fn automatic() -> PairingKey {
 }
 fn geometric() -> GapKey {
     GapKey::Named("geometric".into())
-}
-fn active_set() -> AlgorithmKey {
-    AlgorithmKey::ActiveSet
-}
-fn hundred() -> usize {
-    100
 }
 fn stress() -> PlaneKey {
     PlaneKey::Stress
@@ -414,7 +367,15 @@ impl GenericScene {
                 return Err(self.fail(&format!("contact.{i}.name"), format!("\"{}\" names two contacts", c.name)));
             }
         }
-        if self.solver.algorithm == AlgorithmKey::Boussinesq && self.contact.len() != 1 {
+        if self.solver.place_zone_ends == Some(true) {
+            return Err(self.fail(
+                "solver.place_zone_ends",
+                "placed zone ends move nodes along the plate-insert preset's circles only; a generic scene keeps \
+                 its mesh (leave the key out or set false)"
+                    .into(),
+            ));
+        }
+        if self.solver.algorithm == ContactAlgorithm::Boussinesq && self.contact.len() != 1 {
             return Err(self.fail(
                 "solver.algorithm",
                 format!("boussinesq solves exactly one contact interface; the scene has {}", self.contact.len()),
@@ -467,33 +428,7 @@ impl GenericScene {
     /// # Errors
     /// An iteration limit out of range.
     pub fn settings(&self) -> Result<SolverSettings, SceneError> {
-        let algorithm = match self.solver.algorithm {
-            AlgorithmKey::ActiveSet => ContactAlgorithm::ActiveSet,
-            AlgorithmKey::Clarabel => ContactAlgorithm::Clarabel,
-            AlgorithmKey::Boussinesq => ContactAlgorithm::Boussinesq,
-            AlgorithmKey::Penalty => ContactAlgorithm::Penalty,
-            AlgorithmKey::AugmentedLagrangian => ContactAlgorithm::AugmentedLagrangian,
-        };
-        let settings = SolverSettings::new(algorithm)
-            .with_max_iterations(self.solver.max_iterations)
-            .map_err(|e| self.fail("solver.max_iterations", e.to_string()))?;
-        let given =
-            [("solver.penalty", self.solver.penalty), ("solver.tangential_penalty", self.solver.tangential_penalty)];
-        if algorithm != ContactAlgorithm::Penalty {
-            if let Some((key, _)) = given.iter().find(|(_, v)| v.is_some()) {
-                return Err(self.fail(key, "a penalty applies to solver.algorithm = \"penalty\" only".into()));
-            }
-            return Ok(settings);
-        }
-        let defaults = PenaltyParameters::default();
-        let normal = self.solver.penalty.unwrap_or(defaults.normal);
-        let tangential = self.solver.tangential_penalty.unwrap_or(normal);
-        let key = if self.solver.penalty.is_some_and(|v| !(1e-3..=1e15).contains(&v)) {
-            "solver.penalty"
-        } else {
-            "solver.tangential_penalty"
-        };
-        settings.with_penalty(normal, tangential).map_err(|e| self.fail(key, e.to_string()))
+        self.solver.settings(|key, reason| self.fail(key, reason))
     }
 
     /// Warnings about the elements: standard elements of a nearly incompressible body in plane

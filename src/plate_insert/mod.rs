@@ -10,7 +10,10 @@
 //!
 //! Non-dimensional: E1 = 1, lengths by R, the load factor w multiplies the pulled-edge value 1.
 
-use contact2d_contact::{ContactError, ContactProblem, node_to_node_targets, pair_contours};
+use contact2d_contact::{
+    ContactError, ContactProblem, HistoryStep, LoadSchedule, SolverSettings, node_to_node_targets, pair_contours,
+    solve_with,
+};
 use contact2d_element::{Formulation, Material, PlaneCondition};
 use contact2d_fem::{Component, Model};
 use contact2d_mesh::morph::move_nodes;
@@ -408,6 +411,33 @@ impl PlateInsertProblem {
     pub fn eta_master(&self) -> Vec<f64> {
         let p = &self.problem;
         p.pairs.iter().map(|pair| self.eta_of_master_point(p.model.mesh.points[pair.master.0])).collect()
+    }
+
+    /// Solves the loads `w_1, w_2, …` (the factors of the pulled edge's unit pattern) in order
+    /// through the library's one entry [`contact2d_contact::solve_with`], with any algorithm;
+    /// `on_step(w)` after each step. Each solution's load factor is its w (the library's is 1,
+    /// the pattern factor carrying the load), as [`PlateInsertProblem::results`] expects.
+    ///
+    /// # Errors
+    /// Those of [`contact2d_contact::solve_with`].
+    pub fn solve_loads(
+        &self,
+        settings: &SolverSettings,
+        loads: &[f64],
+        on_step: &mut dyn FnMut(f64),
+    ) -> Result<Vec<HistoryStep>, ContactError> {
+        let pattern = self.problem.patterns()[0].name.clone();
+        let schedule = LoadSchedule::new(vec![pattern], loads.iter().map(|w| vec![*w]).collect())?;
+        let solved = solve_with(&self.problem, settings, &schedule, &mut |_, s| on_step(s.factors[0]))?;
+        Ok(solved
+            .steps
+            .into_iter()
+            .map(|s| {
+                let mut solution = s.solution;
+                solution.load_factor = s.factors[0];
+                HistoryStep { solution, dissipated: s.dissipated }
+            })
+            .collect())
     }
 }
 

@@ -40,7 +40,7 @@ pub const STIFFNESS_RATIO_RANGE: (f64, f64) = (1e-8, 1e8);
 pub const MAX_FRICTION: f64 = 1000.0;
 
 /// Every key a scene (and `--set`) accepts, as a dotted path.
-pub const SCENE_KEYS: [&str; 20] = [
+pub const SCENE_KEYS: [&str; 22] = [
     "name",
     "description",
     "plate_insert.mesh",
@@ -61,6 +61,8 @@ pub const SCENE_KEYS: [&str; 20] = [
     "solver.algorithm",
     "solver.max_iterations",
     "solver.place_zone_ends",
+    "solver.penalty",
+    "solver.tangential_penalty",
 ];
 
 /// Checks the magnitudes and the name (called by [`Scene::validate`] after the finiteness and

@@ -16,12 +16,12 @@
 
 use std::path::Path;
 
-use contact2d_contact::{ContactProblem, ContactSolution, Interface};
+use contact2d_contact::{ContactAlgorithm, ContactProblem, ContactSolution, Interface};
 use contact2d_element::PlaneCondition;
 
-use crate::bench::algorithm_name;
 use crate::run::{RunOutcome, solve_scene};
-use crate::scene::{ContactAlgorithm, Scene};
+
+use crate::scene::Scene;
 
 /// Agreement tolerance on P, Φ_E and σ* (relative): Clarabel's interior-point tolerance is
 /// 1e-8 on its residuals and the flagship runs agree to 1e-7 (docs/verification.md); 1e-5
@@ -117,7 +117,7 @@ pub fn overrides(cell: &StressCell, mesh: &str, algorithm: ContactAlgorithm) -> 
         // Table 2's load in three steps with a gap; without one the problem is linear in w.
         format!("plate_insert.load={}", if gap { 0.3838 } else { 1.0 }),
         format!("plate_insert.steps={}", if gap { 3 } else { 1 }),
-        format!("solver.algorithm=\"{}\"", algorithm_name(algorithm)),
+        format!("solver.algorithm=\"{}\"", algorithm.key()),
         "solver.max_iterations=200".into(),
         // The algorithms are compared on the same discrete problem: the Boussinesq algorithm on
         // the generated mesh (its zone ends at the nodes), not on a mesh adjusted to l* and b*.
@@ -298,7 +298,7 @@ fn verdict(results: &[AlgorithmResult], (rel, eta): (f64, f64), quality: Option<
         fails.push("inverted cell in the distorted mesh".to_string());
     }
     for r in results {
-        let name = algorithm_name(r.algorithm);
+        let name = r.algorithm.key();
         if r.non_finite {
             fails.push(format!("{name}: NaN or infinite value"));
         }
@@ -317,8 +317,8 @@ fn verdict(results: &[AlgorithmResult], (rel, eta): (f64, f64), quality: Option<
         .iter()
         .filter(|r| r.status != "converged")
         .map(|r| match &r.error {
-            Some(e) => format!("{}: error: {e}", algorithm_name(r.algorithm)),
-            None => format!("{}: {}", algorithm_name(r.algorithm), r.status),
+            Some(e) => format!("{}: error: {e}", r.algorithm.key()),
+            None => format!("{}: {}", r.algorithm.key(), r.status),
         })
         .collect();
     if other.is_empty() { "ok".into() } else { format!("not converged: {}", other.join("; ")) }

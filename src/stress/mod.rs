@@ -24,7 +24,7 @@ use contact2d_element::PlaneCondition;
 use contact2d_mesh::{MshFormat, read_msh, write_msh};
 
 use crate::bench::progress_bar;
-use crate::scene::ContactAlgorithm;
+use contact2d_contact::ContactAlgorithm;
 
 pub use cell::{CellResult, StressCell, run_cell};
 
@@ -144,15 +144,6 @@ pub fn mesh_name(eps: f64, level: usize) -> Option<String> {
     Some(format!("plate_insert_eps{tag}_N{level}.msh"))
 }
 
-fn parse_algorithm(s: &str) -> Option<ContactAlgorithm> {
-    match s.trim() {
-        "boussinesq" => Some(ContactAlgorithm::Boussinesq),
-        "active_set" => Some(ContactAlgorithm::ActiveSet),
-        "clarabel" => Some(ContactAlgorithm::Clarabel),
-        _ => None,
-    }
-}
-
 /// Runs one cell, distorting the mesh first when the cell asks for it (written into `tmp`).
 ///
 /// # Errors
@@ -240,7 +231,7 @@ pub fn run_command(args: &StressArgs) -> Result<String, StressError> {
         .algorithms
         .iter()
         .map(|s| {
-            parse_algorithm(s)
+            crate::scene::algorithm_from_key(s)
                 .ok_or_else(|| StressError::Flag { flag: "--algorithms", reason: format!("unknown algorithm {s:?}") })
         })
         .collect::<Result<Vec<_>, _>>()?;

@@ -4,8 +4,6 @@ use std::fmt::Write as _;
 
 use contact2d_element::PlaneCondition;
 
-use crate::bench::algorithm_name;
-
 use super::cell::{AGREE_ETA, AGREE_RELATIVE, CellResult, KKT_TOLERANCE, StressCell, difference, disagrees};
 
 fn plane(c: &StressCell) -> &'static str {
@@ -38,7 +36,7 @@ pub fn csv(results: &[CellResult]) -> String {
                 c.jacobian_quality.map_or_else(String::new, |q| format!("{q:.3}")),
                 c.cond_cnn.map_or_else(String::new, |q| format!("{q:e}")),
                 c.diag_ratio.map_or_else(String::new, |q| format!("{q:e}")),
-                algorithm_name(r.algorithm),
+                r.algorithm.key(),
                 r.status,
                 r.iterations,
                 r.time_s,
@@ -147,7 +145,7 @@ pub fn markdown(results: &[CellResult], level: usize) -> String {
         let algs: Vec<String> = c
             .results
             .iter()
-            .map(|r| format!("{} {} {} ({:.0e})", algorithm_name(r.algorithm), r.status, r.iterations, r.kkt))
+            .map(|r| format!("{} {} {} ({:.0e})", r.algorithm.key(), r.status, r.iterations, r.kkt))
             .collect();
         let _ = writeln!(
             s,
@@ -193,7 +191,7 @@ fn per_algorithm(results: &[CellResult]) -> String {
         let _ = writeln!(
             s,
             "| {} | {} | {} | {small} | {largest:.1e} | {other} | {errors} | {} ({}; {}; {}) |",
-            algorithm_name(r0.algorithm),
+            r0.algorithm.key(),
             runs.len(),
             converged.len(),
             both.iter().filter(|d| disagrees(**d)).count(),

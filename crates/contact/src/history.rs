@@ -8,20 +8,7 @@
 //! Decreasing loads (unloading) are allowed: the algorithms here do not assume a growing
 //! contact zone.
 
-use crate::algorithms::clarabel_tresca::solve_frictional_qp;
-use crate::algorithms::frictional_active_set::solve_frictional_active_set;
-use crate::interface::Interface;
-use crate::problem::ContactProblem;
 use crate::solution::{ContactSolution, PairState, StepStart};
-
-/// An algorithm that solves one step of a history.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum StepAlgorithm {
-    /// The primal-dual active set on the condensed interface (frictional or not).
-    ActiveSet,
-    /// Clarabel: frictionless QP, or Tresca QPs to the Coulomb fixed point.
-    Clarabel,
-}
 
 /// One solved step with the dissipation accumulated up to it.
 #[derive(Debug, Clone, PartialEq)]
@@ -32,48 +19,9 @@ pub struct HistoryStep {
     pub dissipated: f64,
 }
 
-/// Solves the loads in order from the virgin state. Stops early at the first step that does
-/// not converge (its solution is the last entry, with its status).
-pub fn solve_history(
-    problem: &ContactProblem,
-    interface: &Interface,
-    algorithm: StepAlgorithm,
-    loads: &[f64],
-    max_iterations: usize,
-) -> Vec<HistoryStep> {
-    solve_history_with(problem, interface, algorithm, loads, max_iterations, &mut |_| {})
-}
-
-/// [`solve_history`], calling `on_step` after each solved step (progress reporting).
-pub fn solve_history_with(
-    problem: &ContactProblem,
-    interface: &Interface,
-    algorithm: StepAlgorithm,
-    loads: &[f64],
-    max_iterations: usize,
-    on_step: &mut dyn FnMut(&HistoryStep),
-) -> Vec<HistoryStep> {
-    let solved = march::<f64, std::convert::Infallible>(
-        loads,
-        problem.num_pairs(),
-        |&w, start, guess| {
-            Ok(match algorithm {
-                StepAlgorithm::ActiveSet => {
-                    solve_frictional_active_set(problem, interface, w, start, guess, max_iterations)
-                }
-                StepAlgorithm::Clarabel => solve_frictional_qp(problem, w, start, max_iterations),
-            })
-        },
-        on_step,
-    );
-    match solved {
-        Ok(steps) => steps,
-        Err(never) => match never {},
-    }
-}
-
-/// The loop every loading history shares (the active set's and Clarabel's here, the Boussinesq
-/// algorithm's, and [`crate::solve()`]'s): each step solved by `solve_step(loading, start,
+/// The loop every loading history shares (the Boussinesq algorithm's stepping in the contact
+/// end, and [`crate::solve()`]'s for every algorithm): each step solved by
+/// `solve_step(loading, start,
 /// guess)` from the state the previous one ended in (`StepStart`: slips and tangential forces;
 /// `guess`: its pair states), Φ_f accumulated, `on_step` told, and the loop stopped after the
 /// first step that does not converge (which is returned last, with its status).

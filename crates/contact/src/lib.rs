@@ -49,7 +49,7 @@ pub use clarabel_tresca::solve_frictional_qp;
 pub use error::ContactError;
 pub use frictional_active_set::solve_frictional_active_set;
 pub use frictionless_active_set::solve_frictionless_active_set;
-pub use history::{HistoryStep, Retention, StepAlgorithm, equal_steps, solve_history, solve_history_with};
+pub use history::{HistoryStep, Retention, equal_steps};
 pub use interface::Interface;
 pub use loading::LoadSchedule;
 pub use pairing::{ContactPair, node_to_node_targets, nodes_face_each_other, pair_contours, tributary_weights};

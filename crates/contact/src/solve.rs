@@ -274,7 +274,7 @@ pub fn solve_keeping(
     let clock = web_time::Instant::now();
     let mut interface = Interface::new(&loaded);
     let condense_time = clock.elapsed();
-    let order = boussinesq_order(problem);
+    let order = boussinesq_order(&loaded, &interface);
     let modes = RigidModes::of(problem);
     let mut alpha = vec![0.0; modes.len()];
     let zeros = vec![0.0; problem.patterns().len()];
@@ -474,14 +474,18 @@ fn solve_step(
 }
 
 /// The pairs in the order the Boussinesq algorithm grows its zone: by arc length along the
-/// master curve, from the end whose initial gap is smaller.
-fn boussinesq_order(problem: &ContactProblem) -> Vec<usize> {
+/// master curve, from the end where the bodies meet first — the end whose gap under the first
+/// step's load without contact forces, `g + B_N u₀`, is smaller. (The initial gaps alone cannot
+/// tell the ends of a neat fit apart: they are all zero, and only the load says which end
+/// closes.)
+fn boussinesq_order(problem: &ContactProblem, interface: &Interface) -> Vec<usize> {
     let mut order: Vec<usize> = (0..problem.num_pairs()).collect();
     order.sort_by(|a, b| {
         problem.pairs[*a].master_arc_length.total_cmp(&problem.pairs[*b].master_arc_length).then(a.cmp(b))
     });
+    let loaded_gap = |k: usize| problem.gap[k] + interface.h_normal[k];
     if let (Some(&first), Some(&last)) = (order.first(), order.last())
-        && problem.gap[last] < problem.gap[first]
+        && loaded_gap(last) < loaded_gap(first)
     {
         order.reverse();
     }

@@ -1,0 +1,142 @@
+//! The `[solver]` section every scene shares, the paper's preset and generic scenes alike: the
+//! library's [`ContactAlgorithm`] by its scene key, the iteration limit, the penalty method's
+//! parameters and the Boussinesq algorithm's zone-end placement.
+//!
+//! ```toml
+//! [solver]
+//! algorithm = "active_set"   # clarabel, boussinesq, penalty, augmented_lagrangian
+//! max_iterations = 100       # per step
+//! penalty = 1e3              # penalty only: normal penalty / k_c
+//! tangential_penalty = 1e3   # penalty only: stick penalty / k_c (default: penalty)
+//! place_zone_ends = true     # boussinesq on the plate-insert preset: nodes at l* and b*
+//! ```
+
+use serde::de::Error as _;
+use serde::{Deserialize, Deserializer, Serializer};
+
+use contact2d_contact::{ContactAlgorithm, PenaltyParameters, SolverSettings};
+
+use super::SceneError;
+
+/// The scene keys of [`ContactAlgorithm::ALL`], in that order (serde needs them as a static
+/// list for its "expected one of" message).
+const ALGORITHM_KEYS: [&str; 5] = ["active_set", "clarabel", "boussinesq", "penalty", "augmented_lagrangian"];
+
+/// Reads an algorithm from its scene key ([`ContactAlgorithm::key`]).
+///
+/// # Errors
+/// An unknown key, naming the five that exist.
+pub fn deserialize_algorithm<'de, D: Deserializer<'de>>(d: D) -> Result<ContactAlgorithm, D::Error> {
+    let key = String::deserialize(d)?;
+    algorithm_from_key(&key).ok_or_else(|| D::Error::unknown_variant(&key, &ALGORITHM_KEYS))
+}
+
+/// The algorithm whose scene key ([`ContactAlgorithm::key`]) is `key` (surrounding blanks
+/// ignored), if any.
+pub fn algorithm_from_key(key: &str) -> Option<ContactAlgorithm> {
+    ContactAlgorithm::ALL.into_iter().find(|a| a.key() == key.trim())
+}
+
+/// Writes an algorithm as its scene key (the JSON summaries' `algorithm`).
+///
+/// # Errors
+/// Those of the serializer.
+pub fn serialize_algorithm<S: Serializer>(algorithm: &ContactAlgorithm, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(algorithm.key())
+}
+
+/// The `[solver]` section.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SolverEntry {
+    /// Algorithm (default `active_set`).
+    #[serde(default = "active_set", deserialize_with = "deserialize_algorithm")]
+    pub algorithm: ContactAlgorithm,
+    /// Iteration limit per step (default 100).
+    #[serde(default = "hundred")]
+    pub max_iterations: usize,
+    /// The penalty method's normal penalty relative to the contact stiffness scale `k_c`
+    /// (default 1e3; `penalty` only).
+    #[serde(default)]
+    pub penalty: Option<f64>,
+    /// Its tangential (stick) penalty relative to `k_c` (default: `penalty`).
+    #[serde(default)]
+    pub tangential_penalty: Option<f64>,
+    /// Boussinesq only: place master nodes exactly at the zone ends l* and b* by root finding
+    /// (the paper's mesh adjustment; default `true` on the plate-insert preset, the one geometry
+    /// whose contact circles it can morph); `false` keeps the mesh and resolves the zone ends to
+    /// its nodes.
+    #[serde(default)]
+    pub place_zone_ends: Option<bool>,
+}
+
+impl Default for SolverEntry {
+    fn default() -> Self {
+        SolverEntry {
+            algorithm: ContactAlgorithm::ActiveSet,
+            max_iterations: 100,
+            penalty: None,
+            tangential_penalty: None,
+            place_zone_ends: None,
+        }
+    }
+}
+
+fn active_set() -> ContactAlgorithm {
+    ContactAlgorithm::ActiveSet
+}
+
+fn hundred() -> usize {
+    100
+}
+
+impl SolverEntry {
+    /// Whether the Boussinesq algorithm places its zone ends (the default where it can).
+    pub fn places_zone_ends(&self) -> bool {
+        self.algorithm == ContactAlgorithm::Boussinesq && self.place_zone_ends.unwrap_or(true)
+    }
+
+    /// The library's settings. `fail(key, reason)` makes the scene's error.
+    ///
+    /// # Errors
+    /// An iteration limit out of range, a penalty given to another algorithm or out of range.
+    pub fn settings(&self, fail: impl Fn(&str, String) -> SceneError) -> Result<SolverSettings, SceneError> {
+        let algorithm = self.algorithm;
+        let settings = SolverSettings::new(algorithm)
+            .with_max_iterations(self.max_iterations)
+            .map_err(|e| fail("solver.max_iterations", e.to_string()))?;
+        let given = [("solver.penalty", self.penalty), ("solver.tangential_penalty", self.tangential_penalty)];
+        if algorithm != ContactAlgorithm::Penalty {
+            if let Some((key, _)) = given.iter().find(|(_, v)| v.is_some()) {
+                return Err(fail(key, "a penalty applies to solver.algorithm = \"penalty\" only".into()));
+            }
+            return Ok(settings);
+        }
+        let defaults = PenaltyParameters::default();
+        let normal = self.penalty.unwrap_or(defaults.normal);
+        let tangential = self.tangential_penalty.unwrap_or(normal);
+        let key = if self.penalty.is_some_and(|v| !(1e-3..=1e15).contains(&v)) {
+            "solver.penalty"
+        } else {
+            "solver.tangential_penalty"
+        };
+        settings.with_penalty(normal, tangential).map_err(|e| fail(key, e.to_string()))
+    }
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_algorithm_reads_and_writes_its_key() {
+        for (algorithm, key) in ContactAlgorithm::ALL.into_iter().zip(ALGORITHM_KEYS) {
+            assert_eq!(algorithm.key(), key);
+            let entry: SolverEntry = toml::from_str(&format!("algorithm = \"{key}\"")).unwrap();
+            assert_eq!(entry.algorithm, algorithm);
+        }
+        let wrong = toml::from_str::<SolverEntry>("algorithm = \"newton\"").unwrap_err().to_string();
+        assert!(wrong.contains("augmented_lagrangian"), "{wrong}");
+    }
+}
