@@ -11,8 +11,9 @@
 //! non-matching arcs; the issue's targets): a within 1 %, the centre pressure within 1.5 %
 //! (Code_Aster's published model is 1.2 % low), the profile's L2 error within 2 % of p0 (over
 //! [0, a], trapezoid rule on the pairs' nodal pressures); the block twice as large (same contact
-//! refinement, L2) changes a and p0 by less than 1 % (the closed form is for half-spaces); the
-//! paper's paired-node Boussinesq algorithm (its zone grows from the axis) meets the same targets.
+//! refinement, L2) changes a and p0 by less than 1 % (the closed form is for half-spaces). The
+//! paper's paired-node Boussinesq algorithm is refused here before solving: the roller is held
+//! only by contact (a note says so).
 //! Node-to-segment is reported beside it on every level (its profile oscillates on L3).
 
 use std::f64::consts::PI;
@@ -132,20 +133,14 @@ pub fn run(root: &Path, level: Level) -> Result<CaseReport, VerifyError> {
             }
         }
     }
-    // The paper's algorithm beyond the paper: the half model's zone grows from the axis, one
-    // zone from a known point, the structure the paired-node Boussinesq algorithm assumes.
-    let finest = levels.last().copied().unwrap_or("L1");
-    let boussinesq =
-        measure(root, &format!("cylinder_on_block_{finest}.msh"), &["solver.algorithm=\"boussinesq\"".into()])?;
-    for (q, m, r, t) in [("a (mm)", boussinesq.a, a, 0.01), ("p(0) (MPa)", boussinesq.p_centre, p0, 0.015)] {
-        report.checks.push(Check {
-            quantity: q.into(),
-            mesh: format!("{finest}, segment-to-segment, Boussinesq"),
-            measured: m,
-            reference: r,
-            tolerance: Tolerance::Relative(t),
-        });
-    }
+    // The paper's algorithm is refused here: the cylinder is held only by contact, and the
+    // Boussinesq algorithm's one zone growing from an end of the master curve has no rigid
+    // motion among its unknowns (contact2d_contact::ContactError::NotApplicable).
+    report.notes.push(
+        "the paired-node Boussinesq algorithm is refused on this scene before solving: the cylinder is held only \
+         by contact (its rigid motion is an unknown the algorithm does not have)"
+            .into(),
+    );
     let normal = measure(root, "cylinder_on_block_L2.msh", &[])?;
     let big = measure(root, "cylinder_on_block_big_L2.msh", &[])?;
     for (q, m, r) in

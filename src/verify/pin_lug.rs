@@ -77,7 +77,7 @@ pub fn run(root: &Path, level: Level) -> Result<CaseReport, VerifyError> {
         source: "no closed form: equilibrium, mesh convergence, and the elastic against the rigid pin".into(),
         notes: vec![
             "the paired-node Boussinesq algorithm does not apply (the pin first crosses the clearance as a rigid body; \
-             its zone cannot grow from a touching point): it ends inadmissible at the first step"
+             its zone cannot grow from a touching point): it is refused before solving"
                 .into(),
         ],
         ..CaseReport::default()

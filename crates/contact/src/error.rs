@@ -70,6 +70,16 @@ pub enum ContactError {
         /// The steps of the schedule.
         steps: usize,
     },
+    /// An algorithm asked for a problem outside its assumptions, refused before solving (e.g.
+    /// the Boussinesq algorithm, which grows one zone from an end of the master curve under
+    /// growing proportional loads, on a body that crosses a clearance as a rigid body first).
+    #[error("{algorithm} does not apply here: {reason}")]
+    NotApplicable {
+        /// The algorithm's scene key.
+        algorithm: &'static str,
+        /// Which of its assumptions the problem breaks, and what to use instead.
+        reason: String,
+    },
     /// A parameter outside its admissible range.
     #[error("invalid contact input: {0}")]
     InvalidInput(String),

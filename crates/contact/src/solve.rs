@@ -258,9 +258,9 @@ pub fn solve_keeping(
         (0..schedule.steps().len()).map(|i| schedule.factors_for(i, &names)).collect::<Result<_, _>>()?;
     let steady = LoadSchedule::new(names.iter().map(|n| n.to_string()).collect(), factors.clone())?;
     if settings.algorithm == ContactAlgorithm::Boussinesq && steady.proportional().is_none() {
-        return Err(ContactError::InvalidInput(
-            "the Boussinesq algorithm needs proportional loads that only grow (its contact zone grows from one \
-             point); use the active set or Clarabel for other schedules"
+        return Err(not_boussinesq(
+            "it needs proportional loads that only grow (its contact zone grows from one point); use the active \
+             set or Clarabel for other schedules"
                 .into(),
         ));
     }
@@ -274,8 +274,11 @@ pub fn solve_keeping(
     let clock = web_time::Instant::now();
     let mut interface = Interface::new(&loaded);
     let condense_time = clock.elapsed();
-    let order = boussinesq_order(&loaded, &interface);
     let modes = RigidModes::of(problem);
+    let order = boussinesq_order(&loaded, &interface);
+    if settings.algorithm == ContactAlgorithm::Boussinesq {
+        boussinesq_applies(&loaded, &interface, &order, &modes)?;
+    }
     let mut alpha = vec![0.0; modes.len()];
     let zeros = vec![0.0; problem.patterns().len()];
     // (iterations, residual) of the floating bodies' proximal iteration, per step.
@@ -471,6 +474,46 @@ fn solve_step(
             solve_augmented_lagrangian(problem, 1.0, context.start, context.guess, max)
         }
     }
+}
+
+/// The refusal of the Boussinesq algorithm for `reason`.
+fn not_boussinesq(reason: String) -> ContactError {
+    ContactError::NotApplicable { algorithm: ContactAlgorithm::Boussinesq.key(), reason }
+}
+
+/// Refuses, before solving, the problems the Boussinesq algorithm's one zone growing from an
+/// end of the master curve cannot describe: a body held only by contact (it crosses its
+/// clearance as a rigid body before any zone forms), and bodies that meet first inside the
+/// master curve (a Hertz contact: the zone grows both ways from the middle). The meeting point
+/// is where the gap under the first load without contact forces, `g + B_N u₀`, is least; an
+/// interior least value below the starting end's by more than 1e-9 of the gaps' spread (round-off)
+/// is inside.
+fn boussinesq_applies(
+    problem: &ContactProblem,
+    interface: &Interface,
+    order: &[usize],
+    modes: &RigidModes,
+) -> Result<(), ContactError> {
+    if !modes.is_empty() {
+        return Err(not_boussinesq(
+            "a body is held only by contact, so it moves as a rigid body until its contact closes; use the \
+             active set"
+                .into(),
+        ));
+    }
+    let loaded: Vec<f64> = order.iter().map(|&k| problem.gap[k] + interface.h_normal[k]).collect();
+    let (Some(&start), Some(&last)) = (loaded.first(), loaded.last()) else { return Ok(()) };
+    let spread = loaded.iter().fold(0.0f64, |m, g| m.max((g - start).abs()));
+    let (inside, least) = loaded.iter().enumerate().fold((0, start), |a, (i, &g)| if g < a.1 { (i, g) } else { a });
+    if inside > 0 && inside + 1 < loaded.len() && least < start.min(last) - 1e-9 * spread {
+        return Err(not_boussinesq(format!(
+            "the bodies meet first inside the master curve (pair {} of {} along it), not at an end, so the \
+             contact zone grows both ways; use the active set",
+            inside + 1,
+            loaded.len()
+        )));
+    }
+    Ok(())
 }
 
 /// The pairs in the order the Boussinesq algorithm grows its zone: by arc length along the
