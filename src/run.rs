@@ -7,8 +7,8 @@ use web_time::Instant;
 use serde::Serialize;
 
 use contact2d_contact::{
-    BoussinesqLoading, ContactAlgorithm, ContactError, ContactSolution, ContactStatus, HistoryStep, Interface, certify,
-    check_energy_balance, energy_scale, equal_steps, solve_boussinesq_history,
+    BoussinesqLoading, ContactAlgorithm, ContactError, ContactSolution, ContactStatus, HistoryStep, Interface,
+    check_energy_balance, energy_scale, equal_steps, solve_boussinesq_history, status_reason,
 };
 
 use crate::plate_insert::{
@@ -470,12 +470,9 @@ fn certified_status(scene: &Scene, solved: &[SolvedStep], steps: &[StepReport]) 
     let scale = energy_scale(steps.iter().map(|r| (r.W, r.Phi_E1 + r.Phi_E2, r.Phi_f)));
     for (i, (step, report)) in solved.iter().zip(steps).enumerate() {
         let status = step.solution.status;
-        if status == ContactStatus::Numerical {
-            let why = certify(&step.case.problem, &step.solution).err().map(|f| format!("step {}: {f}", i + 1));
-            return (status, why);
-        }
         if status != ContactStatus::Converged {
-            return (status, None);
+            let why = status_reason(&step.case.problem, &step.solution).map(|f| format!("step {}: {f}", i + 1));
+            return (status, why);
         }
         let balance = check_energy_balance(report.W, report.Phi_E1 + report.Phi_E2, report.Phi_f, exact, scale);
         if let Err(f) = balance {

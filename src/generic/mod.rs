@@ -373,6 +373,10 @@ fn solve_generic_from(
     let regions: Vec<String> = scene.body.iter().map(|b| b.region.clone()).collect();
     notes.extend(setup_notes::shared_node_notes(&built.problem.model.mesh, &regions));
     notes.extend(setup_notes::deep_interference_notes(&built));
+    notes.extend(setup_notes::held_pair_notes(&built, &last_step.solution.gap));
+    let node_to_segment: Vec<bool> =
+        scene.contact.iter().map(|c| c.pairing == scene::PairingKey::NodeToSegment).collect();
+    notes.extend(setup_notes::quadratic_node_to_segment_notes(&built, &node_to_segment));
     if interference {
         notes.push(
             "energy balance not checked: the initial interference (negative gaps) stores energy that no load put in"
@@ -476,8 +480,9 @@ fn non_finite(value: &serde_json::Value, at: &str) -> Option<String> {
 /// trapezoid rule's tolerance otherwise; `scaled`: whether the history was).
 fn certified_status(scaled: bool, steps: &[StepResult], balance: bool) -> (&'static str, Option<String>) {
     let converged = results::status_name(contact2d_contact::ContactStatus::Converged);
-    if let Some(s) = steps.iter().map(|s| s.status).find(|s| *s != converged) {
-        return (s, None);
+    if let Some((i, step)) = steps.iter().enumerate().find(|(_, s)| s.status != converged) {
+        let why = step.failed_check.as_deref().unwrap_or("no check named");
+        return (step.status, Some(format!("step {}: {why}", i + 1)));
     }
     let stored = |step: &StepResult| step.energies.values().sum::<f64>();
     let scale = energy_scale(steps.iter().map(|s| (s.work, stored(s), s.dissipated)));

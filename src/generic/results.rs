@@ -104,6 +104,9 @@ pub struct StepResult {
     pub factors: BTreeMap<String, f64>,
     /// The step's status.
     pub status: &'static str,
+    /// The check that failed, for every status but `converged` (none there).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub failed_check: Option<String>,
     /// Iterations of the algorithm (summed over a floating body's proximal iterations).
     pub iterations: usize,
     /// Per interface.
@@ -124,6 +127,20 @@ pub struct StepResult {
     pub dissipated: f64,
     /// KKT residuals.
     pub kkt: Kkt,
+}
+
+/// Why a step did not converge ([`contact2d_contact::status_reason`]), with the floating
+/// bodies' proximal iteration where it ran.
+fn failed_check(problem: &contact2d_contact::ContactProblem, step: &SolvedStep) -> Option<String> {
+    let reason = contact2d_contact::status_reason(problem, &step.solution)?;
+    Some(if step.floating_iterations > 0 {
+        format!(
+            "{reason}; floating bodies: {} proximal iterations, the pins still carry {:.3e}",
+            step.floating_iterations, step.floating_residual
+        )
+    } else {
+        reason
+    })
 }
 
 /// The name of a contact status.
@@ -226,6 +243,7 @@ impl<'a> StepResults<'a> {
         let result = StepResult {
             factors: self.names.iter().cloned().zip(step.factors.iter().copied()).collect(),
             status: status_name(s.status),
+            failed_check: failed_check(problem, step),
             iterations: s.iterations,
             contacts,
             reactions: group_reactions(built, &reactions, self.fixed_groups),

@@ -11,7 +11,7 @@
 //!                more than an element does not respect
 //! ```
 
-use contact2d_contact::BuiltProblem;
+use contact2d_contact::{BuiltProblem, nodes_face_each_other};
 
 /// A note per pair of bodies that share nodes, naming both and the number of nodes.
 /// `regions` are the scene's body regions in order; an unknown region is left to the build,
@@ -69,6 +69,63 @@ pub fn deep_interference_notes(built: &BuiltProblem) -> Vec<String> {
                 "contact \"{}\": the initial interference {depth:.4e} at ({x:.4e}, {y:.4e}) is deeper than the \
                  element size {size:.4e} there; the pairing assumes overlaps and slips small against the \
                  elements, so check the geometry or the contact's gap",
+                iface.name
+            ));
+        }
+    }
+    notes
+}
+
+/// A note per contact with master nodes that fixes hold along the contact normal (the pair's
+/// normal row has no free DOF, [`contact2d_contact::ContactProblem::normal`]): the fix holds
+/// them, their contact force is in the fix's reaction, and their gap at the end (`gap`, per
+/// pair) is the prescribed values', reported when they prescribe a penetration.
+pub fn held_pair_notes(built: &BuiltProblem, gap: &[f64]) -> Vec<String> {
+    let problem = &built.problem;
+    let points = &problem.model.mesh.points;
+    let mut notes = vec![];
+    for iface in &built.interfaces {
+        let held: Vec<usize> =
+            iface.pairs.clone().filter(|&k| !problem.normal.get(k).copied().unwrap_or(true)).collect();
+        let Some(&first) = held.first() else { continue };
+        let [x, y] = problem.pairs.get(first).and_then(|p| points.get(p.master.0)).copied().unwrap_or([f64::NAN; 2]);
+        let deepest = held.iter().filter_map(|&k| gap.get(k)).fold(0.0f64, |a, g| a.max(-g));
+        let penetration = if deepest > 0.0 {
+            format!("; the fixes prescribe a penetration of {deepest:.4e} there, which no contact force can change")
+        } else {
+            String::new()
+        };
+        notes.push(format!(
+            "contact \"{}\": {} master node{} (the first at ({x:.4e}, {y:.4e})) held along the contact normal by a \
+             fix: the fix, not the contact, holds {} (no contact force there; the force is in the fix's \
+             reaction){penetration}",
+            iface.name,
+            held.len(),
+            if held.len() == 1 { "" } else { "s" },
+            if held.len() == 1 { "it" } else { "them" },
+        ));
+    }
+    notes
+}
+
+/// A note per contact paired node to segment whose slave curve has quadratic (Line3) edges and
+/// whose two curves' nodes do not face each other (non-matching meshes): the master nodes'
+/// tributary lengths `∫ N_a ds` of Line3 edges put 1/6 of an edge on a corner node and 2/3 on a
+/// mid node, and a corner or mid master node that lands anywhere on a slave edge takes the
+/// force its weight says; on non-matching curved interfaces the pressure then alternates
+/// between corner and mid nodes, and its peak error grew under refinement (0.2 %, 0.4 %, 2.5 %,
+/// 7.5 % over four levels, issue 27 item 7). `node_to_segment` names the contacts whose scene
+/// asks for that pairing (in the order of the interfaces).
+pub fn quadratic_node_to_segment_notes(built: &BuiltProblem, node_to_segment: &[bool]) -> Vec<String> {
+    let points = &built.problem.model.mesh.points;
+    let mut notes = vec![];
+    for (iface, _) in built.interfaces.iter().zip(node_to_segment).filter(|(_, nts)| **nts) {
+        let quadratic = iface.slave_contour.edges.iter().any(|e| e.quadratic);
+        if quadratic && !nodes_face_each_other(points, &iface.master_contour, &iface.slave_contour) {
+            notes.push(format!(
+                "contact \"{}\": node-to-segment pairing on quadratic slave edges of a non-matching mesh: the \
+                 pressure alternates between corner and mid-side nodes and its peak does not converge under \
+                 refinement; use pairing = \"segment_to_segment\" (or \"automatic\")",
                 iface.name
             ));
         }

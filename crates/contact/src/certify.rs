@@ -32,7 +32,7 @@ use std::fmt;
 
 use crate::problem::ContactProblem;
 use crate::report::force_scale;
-use crate::solution::{ContactSolution, PairState};
+use crate::solution::{ContactSolution, ContactStatus, PairState};
 
 /// The tolerance of every dimensionless residual of [`certify`].
 pub const RESIDUAL_TOLERANCE: f64 = 1e-4;
@@ -123,7 +123,8 @@ pub fn certify(problem: &ContactProblem, solution: &ContactSolution) -> Result<(
     let fc = lambda.iter().fold(0.0f64, |a, l| a.max(*l));
     let fc = if fc > 0.0 { fc } else { f };
     let mut worst = [0.0f64; 6];
-    for k in 0..s.gap.len() {
+    // A pair without a normal unknown is held by fixes: its gap is theirs (the run notes it).
+    for k in (0..s.gap.len()).filter(|&k| problem.normal.get(k).copied().unwrap_or(true)) {
         let (g, l, t) = (s.gap[k], lambda[k], tau[k]);
         let mu = problem.friction.get(k).copied().unwrap_or(0.0);
         worst[0] = worst[0].max(-g / u);
@@ -154,6 +155,52 @@ pub fn certify(problem: &ContactProblem, solution: &ContactSolution) -> Result<(
         Some((check, value)) => Err(FailedCheck { check: *check, value, tolerance: RESIDUAL_TOLERANCE }),
         None => Ok(()),
     }
+}
+
+/// Why `solution`'s status is not [`ContactStatus::Converged`], naming the check that failed:
+/// `None` only for a converged solution, so that no other status goes without a reason.
+///
+/// ```text
+/// max_iterations  the iteration limit, and the first check of certify() the last iterate fails
+/// numerical       the first check of certify() that fails, or else the solver's breakdown
+///                 (a singular or non-finite system of the algorithm's last state)
+/// infeasible      feasibility (the solver's certificate that no point meets the inequalities)
+/// inadmissible    the first violated inequality the algorithm reported (pair and condition)
+/// penalised       the exact check the regularised answer fails
+/// ```
+pub fn status_reason(problem: &ContactProblem, solution: &ContactSolution) -> Option<String> {
+    let check = || certify(problem, solution).err();
+    Some(match solution.status {
+        ContactStatus::Converged => return None,
+        ContactStatus::MaxIterations => match check() {
+            Some(f) => format!("iteration limit: {} iterations; the last iterate fails {f}", solution.iterations),
+            None => format!(
+                "iteration limit: {} iterations without a repeated state (the last iterate passes the KKT checks)",
+                solution.iterations
+            ),
+        },
+        ContactStatus::Numerical => match check() {
+            Some(f) => f.to_string(),
+            None => {
+                "solver breakdown: the equations of the algorithm's last state are singular or not finite".to_string()
+            }
+        },
+        ContactStatus::Infeasible => "feasibility: no point satisfies every contact inequality".to_string(),
+        ContactStatus::Inadmissible => match solution.violations.first() {
+            Some(v) => format!(
+                "admissibility: pair {} violates {} ({} violation{} in all)",
+                v.pair,
+                v.condition,
+                solution.violations.len(),
+                if solution.violations.len() == 1 { "" } else { "s" }
+            ),
+            None => "admissibility: an inequality of the contact conditions is violated".to_string(),
+        },
+        ContactStatus::Penalised => match check() {
+            Some(f) => format!("penalty: {f}"),
+            None => "penalty: the regularised law's answer".to_string(),
+        },
+    })
 }
 
 /// The energy balance of one step of a loading history, `W = Φ_E + Φ_f`, with `W` the work of

@@ -43,7 +43,7 @@ pub use builder::{
     BodyDescription, BuiltProblem, ContactDescription, EdgeLoadKind, FixDescription, GapDescription, InterfaceInfo,
     LoadDescription, Pairing, ProblemDescription,
 };
-pub use certify::{Check, FailedCheck, certify, check_energy_balance, energy_scale};
+pub use certify::{Check, FailedCheck, certify, check_energy_balance, energy_scale, status_reason};
 pub use clarabel_qp::solve_frictionless_qp;
 pub use clarabel_tresca::solve_frictional_qp;
 pub use error::ContactError;

@@ -55,8 +55,19 @@ pub struct ContactProblem {
     pub friction: Vec<f64>,
     /// Whether a pair has a tangential unknown: false where its tangential row has no free DOF
     /// (e.g. at a symmetry end point, where the tangent lies along a Dirichlet direction and a
-    /// tangential condition would duplicate it; spec §8).
+    /// tangential condition would duplicate it; spec §8), and for a segment-to-segment pair also
+    /// where the master node's own tangential motion against its closest slave point is held by
+    /// fixes (the node-to-segment row of the node has no free DOF): its integrated row then
+    /// reaches free DOFs only through the neighbours' shape functions, nearly a copy of their
+    /// rows, and a multiplier there carries a shear that symmetry forbids (±25 MPa flipping
+    /// sign with the step count, issue 27 item 7).
     pub tangential: Vec<bool>,
+    /// Whether a pair has a normal unknown: false where its normal row has no free DOF (a
+    /// master node held along the normal by a fix, against a rigid or likewise held slave).
+    /// Its gap is then fixed by the prescribed values whatever λ is, a contact force could only
+    /// move load between the fix and the contact: the fix holds the node (λ = 0, the force is
+    /// in the reaction) and the pair takes no part in the contact conditions.
+    pub normal: Vec<bool>,
     /// Right-hand side of the load the algorithms scale by `w`, `r = f_f − K_fc u_c`: the
     /// model's own values, or the combination of [`ContactProblem::patterns`] set by
     /// [`ContactProblem::apply_load`].
@@ -194,7 +205,12 @@ impl ContactProblem {
         let gap = pairs.iter().map(|p| p.gap).collect();
         // A tangential row whose free part is negligible (the tangent lies along constrained
         // directions up to the edge geometry's error) has no unknown.
-        let tangential = tangent_rows.iter().map(has_free_part).collect();
+        let tangential = tangent_rows
+            .iter()
+            .zip(pairs.iter().zip(&slave))
+            .map(|(row, (pair, kind))| has_free_part(row) && point_tangent_moves(&system, pair, *kind))
+            .collect();
+        let normal = normal_rows.iter().map(has_free_part).collect();
         ContactProblem {
             model,
             system,
@@ -205,6 +221,7 @@ impl ContactProblem {
             gap,
             friction,
             tangential,
+            normal,
             patterns: vec![LoadPattern {
                 name: "main".into(),
                 rhs: pattern_rhs.clone(),
@@ -416,6 +433,15 @@ pub(crate) fn has_free_part(row: &PairRow) -> bool {
     let norm = |v: &[(usize, f64)]| v.iter().map(|(_, c)| c * c).sum::<f64>();
     let free = norm(&row.free);
     free > 0.0 && free > 1e-4 * (free + norm(&row.constrained))
+}
+
+/// Whether the master node of a segment-to-segment pair can move tangentially against its own
+/// closest slave point: its node-to-segment tangential row has a free part (always true for a
+/// node-to-segment pair, whose row is that one).
+fn point_tangent_moves(system: &LinearSystem, pair: &ContactPair, slave: SlaveKind) -> bool {
+    let Some(rows) = &pair.integrated else { return true };
+    let point = ContactPair { slave: rows.point_slave.clone(), integrated: None, ..pair.clone() };
+    pair_row(system, &point, rows.point_tangent, slave).is_ok_and(|row| has_free_part(&row))
 }
 
 /// Whether the slave side deforms or is a rigid obstacle.

@@ -92,6 +92,11 @@ pub fn finish_from_displacement(
         if slipping && in_contact {
             dissipation += -0.5 * (start.tangential_force[k] + tau[k]) * slip_increment[k];
         }
+        if !problem.normal[k] {
+            // Held along its normal by fixes: its gap is theirs, no contact condition (noted by
+            // the run).
+            continue;
+        }
         kkt.max_penetration = kkt.max_penetration.max(-gap[k]);
         kkt.max_complementarity = kkt.max_complementarity.max((lambda[k] * gap[k]).abs());
         kkt.max_tension = kkt.max_tension.max(-lambda[k]);

@@ -74,6 +74,13 @@ pub struct IntegratedRows {
     pub master: Vec<RowCoefficient>,
     /// Slave-side nodes, in order of first appearance.
     pub slave: Vec<RowCoefficient>,
+    /// The slave nodes and shape-function weights at the master node's own closest point (the
+    /// node-to-segment data the integrated weights replace): whether the node itself can move
+    /// tangentially against the slave is judged on them ([`crate::ContactProblem::tangential`]).
+    pub point_slave: Vec<(NodeId, f64)>,
+    /// The unit tangent of the slave curve at that point (the node-to-segment tangent the
+    /// integrated mean replaces).
+    pub point_tangent: [f64; 2],
 }
 
 /// The per-node sums of the integrals, before the division by `w_k`.
@@ -154,6 +161,7 @@ pub fn pair_segments(
             normal: [c.normal[0] / w, c.normal[1] / w],
             tangent: [c.tangent[0] / w, c.tangent[1] / w],
         };
+        let point_tangent = pair.tangent;
         let length = s.normal[0].hypot(s.normal[1]);
         if length > 0.0 {
             pair.normal = [s.normal[0] / length, s.normal[1] / length];
@@ -161,10 +169,13 @@ pub fn pair_segments(
         }
         pair.gap = s.gap / w;
         pair.weight = w;
+        let point_slave = std::mem::take(&mut pair.slave);
         pair.slave = s.slave_weights.into_iter().map(|(n, v)| (n, v / w)).filter(|(_, v)| v.abs() > 1e-14).collect();
         pair.integrated = Some(IntegratedRows {
             master: s.rows.master.into_iter().map(scale).collect(),
             slave: s.rows.slave.into_iter().map(scale).collect(),
+            point_slave,
+            point_tangent,
         });
     }
     Ok(pairs)

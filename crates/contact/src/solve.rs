@@ -178,6 +178,11 @@ impl SolverSettings {
         self.max_iterations
     }
 
+    /// The floating bodies' proximal iteration limit per step.
+    pub fn max_floating_iterations(&self) -> usize {
+        self.max_floating_iterations
+    }
+
     /// The floating bodies' relative equilibrium tolerance.
     pub fn floating_tolerance(&self) -> f64 {
         self.floating_tolerance

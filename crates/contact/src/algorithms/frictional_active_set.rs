@@ -48,6 +48,10 @@ pub fn solve_frictional_active_set(
         Some(g) if g.len() == m => g.to_vec(),
         _ => vec![PairState::Stick; m],
     };
+    // A pair without a normal unknown (held along its normal by fixes) is left to the fixes.
+    for (s, _) in state.iter_mut().zip(&problem.normal).filter(|(_, normal)| !**normal) {
+        *s = PairState::Free;
+    }
     let mean_diag = |c: &DMatrix<f64>| (0..c.nrows()).map(|k| c[(k, k)]).sum::<f64>() / c.nrows().max(1) as f64;
     let c_n = 1.0 / mean_diag(&interface.c_nn).max(f64::MIN_POSITIVE);
     let c_t = if frictional { 1.0 / mean_diag(&interface.c_tt).max(f64::MIN_POSITIVE) } else { 0.0 };
@@ -144,7 +148,7 @@ fn update_state(
     (0..lambda.len())
         .map(|k| {
             let normal = lambda[k] - c_n * gap[k];
-            if normal <= 0.0 {
+            if normal <= 0.0 || !problem.normal[k] {
                 return PairState::Free;
             }
             let mu = problem.friction[k];

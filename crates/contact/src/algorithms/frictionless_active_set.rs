@@ -34,7 +34,8 @@ pub fn solve_frictionless_active_set(
     let g_free: Vec<f64> = (0..m).map(|k| problem.gap[k] + w * interface.h_normal[k]).collect();
     let mean_diag = (0..m).map(|k| interface.c_nn[(k, k)]).sum::<f64>() / m.max(1) as f64;
     let c = if mean_diag > 0.0 { 1.0 / mean_diag } else { 1.0 };
-    let mut active: Vec<bool> = g_free.iter().map(|g| *g < 0.0).collect();
+    // A pair without a normal unknown (held along its normal by fixes) is left to the fixes.
+    let mut active: Vec<bool> = (0..m).map(|k| problem.normal[k] && g_free[k] < 0.0).collect();
     let mut lambda = vec![0.0; m];
     let mut status = ContactStatus::MaxIterations;
     let mut iterations = 0;
@@ -57,7 +58,7 @@ pub fn solve_frictionless_active_set(
         }
         let gap: Vec<f64> =
             (0..m).map(|k| g_free[k] + (0..m).map(|j| interface.c_nn[(k, j)] * lambda[j]).sum::<f64>()).collect();
-        let next: Vec<bool> = (0..m).map(|k| lambda[k] - c * gap[k] > 0.0).collect();
+        let next: Vec<bool> = (0..m).map(|k| problem.normal[k] && lambda[k] - c * gap[k] > 0.0).collect();
         trace.push(IterationRecord {
             iteration: it,
             changed: next.iter().zip(&active).filter(|(a, b)| a != b).count(),
