@@ -8,7 +8,7 @@
 //! Decreasing loads (unloading) are allowed: the algorithms here do not assume a growing
 //! contact zone.
 
-use crate::algorithms::clarabel_tresca::solve_frictional_qp;
+use crate::algorithms::clarabel_tresca::solve_frictional_qp_on;
 use crate::algorithms::frictional_active_set::solve_frictional_active_set;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
@@ -61,7 +61,7 @@ pub fn solve_history_with(
                 StepAlgorithm::ActiveSet => {
                     solve_frictional_active_set(problem, interface, w, start, guess, max_iterations)
                 }
-                StepAlgorithm::Clarabel => solve_frictional_qp(problem, w, start, max_iterations),
+                StepAlgorithm::Clarabel => solve_frictional_qp_on(problem, interface, w, start, max_iterations),
             })
         },
         on_step,
