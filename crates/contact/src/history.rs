@@ -20,10 +20,9 @@ pub struct HistoryStep {
 }
 
 /// The loop every loading history shares (the Boussinesq algorithm's stepping in the contact
-/// end, and [`crate::solve()`]'s for every algorithm): each step solved by
-/// `solve_step(loading, start,
-/// guess)` from the state the previous one ended in (`StepStart`: slips and tangential forces;
-/// `guess`: its pair states), Φ_f accumulated, `on_step` told, and the loop stopped after the
+/// end, and [`crate::solve()`]'s for every algorithm): each step solved by `solve_step(loading,
+/// start, guess)` from the state the previous one ended in (`StepStart`: slips and tangential
+/// forces; `guess`: its pair states), Φ_f accumulated, `on_step` told, and the loop stopped after the
 /// first step that does not converge (which is returned last, with its status).
 ///
 /// # Errors

@@ -44,8 +44,8 @@ pub use builder::{
     LoadDescription, Pairing, ProblemDescription,
 };
 pub use certify::{Check, FailedCheck, certify, check_energy_balance, energy_scale, status_reason};
-pub use clarabel_qp::solve_frictionless_qp;
-pub use clarabel_tresca::solve_frictional_qp;
+pub use clarabel_qp::{solve_frictionless_qp, solve_frictionless_qp_on};
+pub use clarabel_tresca::{solve_frictional_qp, solve_frictional_qp_on};
 pub use error::ContactError;
 pub use frictional_active_set::solve_frictional_active_set;
 pub use frictionless_active_set::solve_frictionless_active_set;

@@ -21,7 +21,7 @@
 
 use crate::algorithms::augmented_lagrangian::solve_augmented_lagrangian;
 use crate::algorithms::boussinesq::{BoussinesqLoading, solve_boussinesq_step};
-use crate::algorithms::clarabel_tresca::solve_frictional_qp;
+use crate::algorithms::clarabel_tresca::solve_frictional_qp_on;
 use crate::algorithms::frictional_active_set::solve_frictional_active_set;
 use crate::algorithms::penalty::{PenaltyParameters, solve_penalty};
 use crate::error::ContactError;
@@ -467,7 +467,7 @@ fn solve_step(
         ContactAlgorithm::ActiveSet => {
             solve_frictional_active_set(problem, interface, 1.0, context.start, context.guess, max)
         }
-        ContactAlgorithm::Clarabel => solve_frictional_qp(problem, 1.0, context.start, max),
+        ContactAlgorithm::Clarabel => solve_frictional_qp_on(problem, interface, 1.0, context.start, max),
         ContactAlgorithm::Boussinesq => {
             // The contact-end search moves one pair per iteration.
             let max = max.max(2 * context.order.len());

@@ -108,24 +108,6 @@ pub fn solve_augmented_lagrangian(
     finish(problem, w, start, &x, status, iterations, clock, trace)
 }
 
-/// Polishes an answer whose pair states are known (e.g. an interior point's, accurate only to
-/// its tolerance): one Newton system of `state` solved exactly, the result evaluated and
-/// certified like any answer. `None` if the state's system is singular.
-pub(crate) fn polish_state(
-    problem: &ContactProblem,
-    w: f64,
-    start: &StepStart,
-    state: &[PairState],
-    iterations: usize,
-) -> Option<ContactSolution> {
-    let clock = Instant::now();
-    let equations = Equations::new(problem, w, start);
-    let mut lu = FixedPatternLu::new(equations.n + 2 * problem.num_pairs(), &equations.pattern)?;
-    let (values, rhs) = equations.newton_system(state);
-    let x = lu.factor(&values).then(|| lu.solve(&rhs)).flatten()?;
-    Some(finish(problem, w, start, &x, ContactStatus::Converged, iterations, clock, vec![]))
-}
-
 #[allow(clippy::too_many_arguments)]
 fn finish(
     problem: &ContactProblem,

@@ -6,7 +6,7 @@
 //! frictionless_active_set   primal-dual active set on the condensed interface, μ = 0
 //! frictional_active_set     the same with Coulomb friction (stick / slip± states)
 //! boussinesq                the paper's paired-node algorithm: zones assumed, (5.1) checked
-//! clarabel_qp               the frictionless QP in the full displacement space (Clarabel)
+//! clarabel_qp               the frictionless QP in the contact forces (dual, condensed; Clarabel)
 //! clarabel_tresca           Tresca QPs to the Coulomb fixed point (Clarabel)
 //! penalty                   normal penalty and regularised Coulomb law on the full system
 //! augmented_lagrangian      Alart–Curnier semi-smooth Newton on the full system (sparse LU)
