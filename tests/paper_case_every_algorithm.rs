@@ -26,8 +26,8 @@
 
 use std::path::Path;
 
-use contact2d::contact::ContactAlgorithm;
-use contact2d::generic::{load_scene, solve_generic};
+use contact2d::contact::{ContactAlgorithm, ContactError};
+use contact2d::generic::{GenericError, load_scene, solve_generic};
 use contact2d::run::{RunReport, run_scene};
 use contact2d::scene::Scene;
 
@@ -87,4 +87,24 @@ fn the_generic_twin_with_boussinesq_matches_the_preset() {
     assert!(relative(p, preset.P) <= 1e-6, "P: twin {p}, preset {}", preset.P);
     let preset_l = preset.l.unwrap();
     assert!(relative(l, preset_l) <= 1e-6, "l: twin {l}, preset {preset_l}");
+}
+
+/// Where the Boussinesq algorithm's assumptions fail it is refused before solving with a typed
+/// error, never run to a silent `inadmissible`: a pin that crosses its clearance as a rigid body
+/// (pin_lug) and a roller held only by contact (cylinder_on_block).
+#[test]
+fn boussinesq_is_refused_where_it_does_not_apply() {
+    for scene in ["scenes/generic/pin_lug.toml", "scenes/generic/cylinder_on_block.toml"] {
+        let s = load_scene(Path::new(scene), &["solver.algorithm=boussinesq".into()]).unwrap();
+        match solve_generic(&s, &mut |_, _| {}) {
+            Err(GenericError::Contact { source, .. }) => {
+                assert!(
+                    matches!(*source, ContactError::NotApplicable { algorithm: "boussinesq", .. }),
+                    "{scene}: {source}"
+                )
+            }
+            Err(other) => panic!("{scene}: another error: {other}"),
+            Ok(out) => panic!("{scene}: solved with status {}", out.report.status),
+        }
+    }
 }

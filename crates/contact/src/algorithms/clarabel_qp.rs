@@ -61,6 +61,10 @@ pub(crate) struct DualProblem<'a> {
     frictional: Vec<bool>,
     /// `U`: the length scale of the variables.
     length: f64,
+    /// Pairs with a normal unknown ([`ContactProblem::normal`]); the others are held along
+    /// their normal by fixes, never enter the working set and keep λ = 0 (the fix takes the
+    /// force), as in every algorithm.
+    normal: Vec<bool>,
 }
 
 /// What one dual solve found (forces over all pairs; zero outside the working set).
@@ -84,13 +88,13 @@ impl<'a> DualProblem<'a> {
         let u0 = interface.u0.iter().fold(0.0f64, |a, u| a.max((w * u).abs()));
         let length = open_gap.iter().chain(&open_slip).fold(u0, |a, v| a.max(v.abs()));
         let length = if length > 0.0 && length.is_finite() { length } else { 1.0 };
-        DualProblem { interface, open_gap, open_slip, frictional, length }
+        DualProblem { interface, open_gap, open_slip, frictional, length, normal: problem.normal.clone() }
     }
 
     /// The working set to start from: every pair the load alone closes or nearly closes
     /// (`d_N ≤ 1e-6 U`).
     pub(crate) fn initial_working_set(&self) -> Vec<bool> {
-        self.open_gap.iter().map(|d| *d <= 1e-6 * self.length).collect()
+        self.open_gap.iter().zip(&self.normal).map(|(d, has_normal)| *has_normal && *d <= 1e-6 * self.length).collect()
     }
 
     /// `U`, the length scale of the variables.
@@ -135,7 +139,7 @@ impl<'a> DualProblem<'a> {
             let gaps = self.gaps(&answer.lambda, &answer.tau);
             let mut grown = false;
             for (k, in_set) in working.iter_mut().enumerate() {
-                if !*in_set && gaps[k] < 0.0 {
+                if !*in_set && gaps[k] < 0.0 && self.normal[k] {
                     *in_set = true;
                     grown = true;
                 }

@@ -87,8 +87,10 @@ pub fn solve_frictional_qp_on(
         });
         in_contact = next;
         // The states of this iterate (free, stick, slip±, crate::report) and their exact
-        // equations (polishing): a certified answer ends the fixed point, whose iterate only
-        // has to find the states; otherwise it goes on.
+        // equations (polishing): a certified answer ends the fixed point once its thresholds
+        // have settled (λ moved by at most 1e-5 of its scale, the agreement the check promises);
+        // an earlier iterate's states can pass the certificate's 1e-4 and still be another
+        // Coulomb state than the fixed point's (pin_lug step 4: 3e-5 off in the normal force).
         let raw = RawSolution {
             load_factor: w,
             normal_force: lambda.clone(),
@@ -98,7 +100,8 @@ pub fn solve_frictional_qp_on(
             time: clock.elapsed(),
         };
         let states = finish_from_forces(problem, interface, raw, start).state;
-        if let Some(mut polished) = polish(problem, interface, w, start, &states, it)
+        if change <= 1e-5 * scale
+            && let Some(mut polished) = polish(problem, interface, w, start, &states, it)
             && polished.status == ContactStatus::Converged
         {
             polished.trace = trace;
