@@ -129,11 +129,12 @@ enum Command {
     ///   contact2d stress --ratios 1e-4,1e6 --frictions 0,1.5 --eps 0 --no-extra
     #[command(verbatim_doc_comment)]
     Stress(contact2d::stress::StressArgs),
-    /// Every algorithm × pairing on one generic scene over mesh levels: time, iterations, KKT
-    /// residuals and the error of the key outputs; writes compare.csv, compare.md and
-    /// work-precision figures.
+    /// Every algorithm × pairing on one scene (generic, or the paper's case) over mesh levels:
+    /// time, iterations, KKT residuals and the error of the key outputs; writes compare.csv,
+    /// compare.md and work-precision figures.
     ///
     /// Examples:
+    ///   contact2d compare scenes/plate_insert_nogap_mu03.toml --repeat 1
     ///   contact2d compare scenes/generic/cylinder_on_block.toml --mesh meshes/generic/cylinder_on_block_L1.msh --mesh meshes/generic/cylinder_on_block_L2.msh --reference contacts.hertz.max_pressure=3585 --reference contacts.hertz.contact_length=6.21
     ///   contact2d compare scenes/generic/two_blocks_press_slide.toml --repeat 1 --out compare-out
     ///   contact2d compare scenes/generic/pin_lug.toml --repeat 1 --time-limit 30

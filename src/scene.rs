@@ -259,6 +259,10 @@ pub struct Scene {
     /// The scene file as given (named in errors).
     #[serde(skip)]
     pub file: PathBuf,
+    /// A wall-clock deadline for the run, checked before each load step (not a scene key: set
+    /// by callers such as `compare --time-limit`).
+    #[serde(skip)]
+    pub deadline: Option<web_time::Instant>,
 }
 
 impl Scene {
@@ -419,10 +423,14 @@ impl Scene {
     /// # Errors
     /// [`SceneError::Value`] naming the solver key at fault.
     pub fn settings(&self) -> Result<SolverSettings, SceneError> {
-        self.solver.settings(|key, reason| SceneError::Value {
+        let settings = self.solver.settings(|key, reason| SceneError::Value {
             path: self.file.display().to_string(),
             key: key.to_string(),
             reason,
+        })?;
+        Ok(match self.deadline {
+            Some(deadline) => settings.with_deadline(deadline),
+            None => settings,
         })
     }
 

@@ -108,3 +108,37 @@ fn boussinesq_is_refused_where_it_does_not_apply() {
         }
     }
 }
+
+/// `contact2d compare` on the paper's scene: every algorithm × the paper's two pairings on the
+/// N = 16 and 32 meshes, each compared with the published value as well. The published P
+/// (0.195, three digits) bounds every converged run's P to half a unit of its last digit
+/// (2.6e-3 relative): the discretisation error of P is 5e-4 at N = 16 (the table in
+/// docs/algorithms.md), well inside it.
+#[test]
+fn compare_runs_every_algorithm_on_the_papers_scene() {
+    use contact2d::compare::{CompareArgs, compare};
+    let mesh = |n: u32| format!("meshes/plate_insert/plate_insert_eps0_N{n}.msh").into();
+    let args = CompareArgs {
+        scene: PRESET.into(),
+        meshes: vec![mesh(16), mesh(32)],
+        repeat: 1,
+        references: vec![],
+        sets: vec![],
+        out: std::env::temp_dir().join("contact2d-compare-paper-unused"),
+        time_limit: 120.0,
+    };
+    let comparison = compare(&args, &mut |_, _, _| {}).unwrap();
+    assert_eq!(comparison.rows.len(), ContactAlgorithm::ALL.len() * 2 * 2);
+    assert!(comparison.references["published:P"].kind.starts_with("published"));
+    for row in &comparison.rows {
+        assert_eq!(row.status, "converged", "{} × {} on {}: {:?}", row.algorithm, row.pairing, row.mesh, row.reason);
+        let error = row.errors["published:P"];
+        assert!(
+            error <= 0.0005 / 0.195,
+            "{} × {} on {}: P off the published 0.195 by {error:.1e}",
+            row.algorithm,
+            row.pairing,
+            row.mesh
+        );
+    }
+}

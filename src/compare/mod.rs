@@ -1,18 +1,23 @@
-//! `contact2d compare SCENE`: every algorithm × pairing on one generic scene over mesh levels,
-//! with run time, iterations, KKT residuals and the error of the scene's key outputs.
+//! `contact2d compare SCENE`: every algorithm × pairing on one scene — a generic one or the
+//! paper's case — over mesh levels, with run time, iterations, KKT residuals and the error of
+//! the scene's key outputs (`subject.rs` says what differs between the two kinds).
 //!
 //! ```text
-//! runs        ContactAlgorithm::ALL × Pairing::ALL × meshes (the scene's own mesh if none given);
+//! runs        ContactAlgorithm::ALL × the scene's pairings × meshes (if none given: the scene's
+//!             own, or for the paper's case its N = 16, 32, 64 meshes);
 //!             a combination the library refuses (Boussinesq on a schedule that is not
 //!             proportional, node-to-node with unequal node counts, …) is listed as skipped with
 //!             the library's reason
 //! time        median over --repeat runs of the whole run (reading to results) and of the
 //!             contact solve alone (the summary's time_s.total and time_s.solve)
-//! quantities  per contact c: contacts.c.max_pressure, contacts.c.contact_length, and with
-//!             friction contacts.c.tangential_force; the total strain energy `energy`; and every
-//!             path given with --reference (dotted keys into the JSON summary)
+//! quantities  generic: per contact c: contacts.c.max_pressure, contacts.c.contact_length, and
+//!             with friction contacts.c.tangential_force; the total strain energy `energy`;
+//!             the paper's case: P, l, b (with friction), Phi_E1, Phi_E2, sigma_star, and each
+//!             again as `published:<q>` against the published value; and every path given with
+//!             --reference (dotted keys into the JSON summary)
 //! reference   per quantity, stated in the table:
 //!             closed form   the value given with --reference path=value
+//!             published     Solodovnikov (1998), for the `published:` quantities
 //!             Richardson    three or more meshes: Aitken's Δ² extrapolation of the baseline
 //!                           (the first algorithm × pairing that runs) on the three finest,
 //!                           q∞ = q₃ − (q₃ − q₂)² / ((q₃ − q₂) − (q₂ − q₁)), when the differences
@@ -35,18 +40,24 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-use contact2d_contact::{ContactAlgorithm, Pairing};
+use contact2d_contact::ContactAlgorithm;
 use serde_json::Value;
 
-use crate::generic::{GenericError, load_scene, solve_generic_until};
 use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::{OutputDir, OutputError};
 use crate::scene::SceneError;
 
+mod subject;
+pub use subject::{RunFailure, RunSummary, Subject};
+
+/// The prefix of a quantity compared with its published value (the paper's case), e.g.
+/// `published:P`: the same value as `P`, against another reference.
+const PUBLISHED: &str = "published:";
+
 /// Command-line flags of `contact2d compare`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct CompareArgs {
-    /// The generic scene (TOML).
+    /// The scene (TOML): a generic scene, or one of the paper's case (`[plate_insert]`).
     pub scene: PathBuf,
     /// A mesh level (repeat for several, coarse to fine; default: the scene's own mesh).
     #[arg(long = "mesh")]
@@ -223,9 +234,9 @@ pub fn compare(
             Ok((path.trim().to_string(), value))
         })
         .collect::<Result<_, CompareError>>()?;
-    let base = load_scene(&args.scene, &args.sets)?;
+    let base = Subject::load(&args.scene, &args.sets)?;
     let meshes: Vec<Option<PathBuf>> = if args.meshes.is_empty() {
-        vec![None]
+        base.default_meshes()
     } else {
         args.meshes.iter().map(|m| Some(std::path::absolute(m).unwrap_or_else(|_| m.clone()))).collect()
     };
@@ -233,28 +244,29 @@ pub fn compare(
         let path = mesh.clone().unwrap_or_else(|| base.mesh_path());
         check_mesh(&path)?;
     }
-    let mut quantities: Vec<String> = vec![];
-    for c in &base.contact {
-        quantities.push(format!("contacts.{}.max_pressure", c.name));
-        quantities.push(format!("contacts.{}.contact_length", c.name));
-        if c.friction > 0.0 {
-            quantities.push(format!("contacts.{}.tangential_force", c.name));
-        }
-    }
-    quantities.push("energy".into());
+    let mut quantities = base.quantities();
     quantities.extend(closed.iter().map(|(p, _)| p.clone()).filter(|p| !quantities.contains(p)).collect::<Vec<_>>());
+    let mut fixed: Vec<(String, f64, String)> =
+        closed.into_iter().map(|(q, v)| (q, v, "closed form".to_string())).collect();
+    for (q, v) in base.published() {
+        let name = format!("{PUBLISHED}{q}");
+        quantities.push(name.clone());
+        fixed.push((name, v, "published (Solodovnikov 1998)".into()));
+    }
+    let pairings = base.pairings();
     let mut rows = vec![];
-    let total = ContactAlgorithm::ALL.len() * Pairing::ALL.len() * meshes.len();
+    let total = ContactAlgorithm::ALL.len() * pairings.len() * meshes.len();
     for &algorithm in &ContactAlgorithm::ALL {
-        for &pairing in Pairing::ALL {
+        for (pairing, pairing_sets) in &pairings {
             for (level, mesh) in meshes.iter().enumerate() {
-                let row = run_one(args, base.contact.len(), algorithm, pairing, level, mesh.as_deref(), &quantities);
+                let case = Case { algorithm, pairing, pairing_sets, level, mesh: mesh.as_deref() };
+                let row = run_one(args, &base, &case, &quantities);
                 on_row(rows.len() + 1, total, &row);
                 rows.push(row);
             }
         }
     }
-    let references = references(&quantities, &closed, &rows, meshes.len());
+    let references = references(&quantities, &fixed, &rows, meshes.len());
     for row in &mut rows {
         for (q, r) in &references {
             let reference = if r.values.len() == 1 { r.values[0] } else { r.values[row.level] };
@@ -273,26 +285,28 @@ fn check_mesh(path: &Path) -> Result<(), CompareError> {
     contact2d_mesh::read_msh(path).map(drop).map_err(|e| fail(e.to_string()))
 }
 
-fn run_one(
-    args: &CompareArgs,
-    contacts: usize,
+/// One algorithm × pairing × mesh level.
+struct Case<'a> {
     algorithm: ContactAlgorithm,
-    pairing: Pairing,
+    pairing: &'static str,
+    pairing_sets: &'a [String],
     level: usize,
-    mesh: Option<&Path>,
-    quantities: &[String],
-) -> CompareRow {
+    mesh: Option<&'a Path>,
+}
+
+fn run_one(args: &CompareArgs, base: &Subject, case: &Case, quantities: &[String]) -> CompareRow {
     let mut sets = args.sets.clone();
-    sets.push(format!("solver.algorithm={}", algorithm.key()));
-    sets.extend((0..contacts).map(|i| format!("contact.{i}.pairing={}", pairing.key())));
-    if let Some(m) = mesh {
-        sets.push(format!("mesh={}", toml::Value::String(m.display().to_string())));
+    sets.push(format!("solver.algorithm={}", case.algorithm.key()));
+    sets.extend_from_slice(case.pairing_sets);
+    if let Some(m) = case.mesh {
+        sets.push(base.mesh_override(m));
     }
     let mut row = CompareRow {
-        algorithm: algorithm.key(),
-        pairing: pairing.key(),
-        level,
-        mesh: mesh
+        algorithm: case.algorithm.key(),
+        pairing: case.pairing,
+        level: case.level,
+        mesh: case
+            .mesh
             .map_or_else(|| "(scene)".into(), |m| m.file_name().unwrap_or_default().to_string_lossy().into_owned()),
         status: "skipped".into(),
         reason: None,
@@ -304,7 +318,7 @@ fn run_one(
         values: BTreeMap::new(),
         errors: BTreeMap::new(),
     };
-    let scene = match load_scene(&args.scene, &sets) {
+    let subject = match Subject::load(&args.scene, &sets) {
         Ok(s) => s,
         Err(e) => {
             row.reason = Some(e.to_string());
@@ -315,34 +329,29 @@ fn run_one(
     let limit = std::time::Duration::from_secs_f64(args.time_limit);
     let deadline = web_time::Instant::now() + limit;
     for _ in 0..args.repeat.max(1) {
-        match solve_generic_until(&scene, Some(deadline), &mut |_, _| {}) {
-            Ok(outcome) => {
-                let report = &outcome.report;
-                times.push(report.time_s.total);
-                solve_times.push(report.time_s.solve);
-                row.status = report.status.to_string();
-                row.reason = report.failed_check.clone();
-                row.iterations = report.iterations;
-                row.pairs = report.pairs;
-                row.kkt = [report.kkt.max_penetration, report.kkt.max_complementarity, report.kkt.max_cone_violation];
-                let json = serde_json::to_value(report).unwrap_or(Value::Null);
+        match subject.run(deadline) {
+            Ok(run) => {
+                times.push(run.times.0);
+                solve_times.push(run.times.1);
+                (row.status, row.reason) = run.status;
+                row.iterations = run.iterations;
+                row.pairs = run.pairs;
+                row.kkt = run.kkt;
                 for q in quantities {
-                    if let Some(v) = quantity(&json, q) {
+                    if let Some(v) = quantity(&run.json, q) {
                         row.values.insert(q.clone(), v);
                     }
                 }
             }
-            Err(GenericError::Contact { source, .. })
-                if matches!(*source, contact2d_contact::ContactError::DeadlineExceeded { .. }) =>
-            {
+            Err(RunFailure::TimedOut(why)) => {
                 row.status = "timed_out".into();
-                row.reason = Some(format!("time limit of {} s: {source}", args.time_limit));
+                row.reason = Some(format!("time limit of {} s: {why}", args.time_limit));
                 row.values.clear();
                 return row;
             }
-            Err(e) => {
+            Err(RunFailure::Failed(why)) => {
                 row.status = "skipped".into();
-                row.reason = Some(e.to_string());
+                row.reason = Some(why);
                 row.values.clear();
                 return row;
             }
@@ -353,8 +362,10 @@ fn run_one(
     row
 }
 
-/// A dotted path into the summary, or `energy` (the sum of the bodies' strain energies).
+/// A dotted path into the summary, or `energy` (the sum of the bodies' strain energies); a
+/// `published:` quantity is the value of the path after the prefix.
 fn quantity(json: &Value, path: &str) -> Option<f64> {
+    let path = path.strip_prefix(PUBLISHED).unwrap_or(path);
     if path == "energy" {
         return json.get("energies")?.as_object().map(|m| m.values().filter_map(Value::as_f64).sum());
     }
@@ -369,7 +380,7 @@ fn median(mut v: Vec<f64>) -> f64 {
 /// The reference of each quantity (module docs).
 fn references(
     quantities: &[String],
-    closed: &[(String, f64)],
+    fixed: &[(String, f64, String)],
     rows: &[CompareRow],
     levels: usize,
 ) -> BTreeMap<String, Reference> {
@@ -380,8 +391,8 @@ fn references(
     let name = baseline.first().map_or_else(String::new, |r| format!("{} × {}", r.algorithm, r.pairing));
     let mut out = BTreeMap::new();
     for q in quantities {
-        if let Some((_, v)) = closed.iter().find(|(p, _)| p == q) {
-            out.insert(q.clone(), Reference { values: vec![*v], kind: "closed form".into() });
+        if let Some((_, v, kind)) = fixed.iter().find(|(p, _, _)| p == q) {
+            out.insert(q.clone(), Reference { values: vec![*v], kind: kind.clone() });
             continue;
         }
         let values: Vec<f64> = baseline.iter().filter_map(|r| r.values.get(q).copied()).collect();
@@ -546,7 +557,7 @@ mod tests {
         assert!((r["q"].values[0] - 2.0).abs() < 1e-13, "{:?}", r["q"]);
         assert!(r["q"].kind.starts_with("Richardson") && r["q"].kind.contains("second"));
         // A closed form takes precedence; differences that do not shrink are not extrapolated.
-        let r = references(&["q".to_string()], &[("q".to_string(), 2.5)], &rows, 3);
+        let r = references(&["q".to_string()], &[("q".to_string(), 2.5, "closed form".to_string())], &rows, 3);
         assert_eq!((r["q"].values[0], r["q"].kind.as_str()), (2.5, "closed form"));
         let rows: Vec<CompareRow> = [1.0, 2.0, 4.0].iter().enumerate().map(|(l, v)| row("a", l, Some(*v))).collect();
         let r = references(&["q".to_string()], &[], &rows, 3);

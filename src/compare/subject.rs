@@ -1,0 +1,210 @@
+//! What `compare` runs: a generic scene, or a scene of the paper's case (a `[plate_insert]`
+//! section), behind one interface — its pairings, its quantities, its mesh levels, its
+//! published references and one run as the JSON summary — so that the table, the references
+//! and the figures are the same code for both.
+//!
+//! ```text
+//!                 generic scene                        the paper's case
+//! pairings        contact.<i>.pairing = every Pairing  plate_insert.pairs = node_to_node, node_to_segment
+//! mesh key        mesh                                 plate_insert.mesh
+//! meshes          the scene's own                      its *_N16, *_N32, *_N64 siblings (those that exist)
+//! quantities      contacts.<c>.max_pressure,           P, l, b (with friction), Phi_E1, Phi_E2,
+//!                 contact_length, tangential_force      sigma_star
+//!                 (μ > 0), energy
+//! published       —                                    Solodovnikov (1998) for the bundled scenes
+//! ```
+
+use std::path::{Path, PathBuf};
+
+use contact2d_contact::{ContactError, Pairing};
+use serde_json::Value;
+
+use crate::generic::{GenericError, GenericScene, solve_generic_until};
+use crate::plate_insert::published::published_case;
+use crate::run::solve_scene;
+use crate::scene::{Scene, SceneError, read_scene_text};
+
+/// A scene `compare` can run.
+#[derive(Debug, Clone)]
+pub enum Subject {
+    /// A generic scene.
+    Generic(Box<GenericScene>),
+    /// A scene of the paper's case.
+    Paper(Box<Scene>),
+}
+
+/// One run as `compare` reads it.
+#[derive(Debug, Clone)]
+pub struct RunSummary {
+    /// The JSON summary (quantities are dotted paths into it).
+    pub json: Value,
+    /// Whole-run and contact-solve wall time, seconds.
+    pub times: (f64, f64),
+    /// The status and, for one that is not `converged`, its failed check.
+    pub status: (String, Option<String>),
+    /// Iterations summed over the steps.
+    pub iterations: usize,
+    /// Contact pairs.
+    pub pairs: usize,
+    /// Largest penetration, complementarity and cone violation.
+    pub kkt: [f64; 3],
+}
+
+/// Why a run gave no summary.
+#[derive(Debug)]
+pub enum RunFailure {
+    /// The deadline passed (the message says where).
+    TimedOut(String),
+    /// Refused or failed (the library's message).
+    Failed(String),
+}
+
+impl Subject {
+    /// Reads the scene at `path` with the overrides `sets`: the paper's case when it has a
+    /// `[plate_insert]` section, a generic scene otherwise.
+    ///
+    /// # Errors
+    /// The scene's [`SceneError`].
+    pub fn load(path: &Path, sets: &[String]) -> Result<Subject, SceneError> {
+        let text = read_scene_text(path)?;
+        let preset = toml::from_str::<toml::Table>(&text).is_ok_and(|t| t.contains_key("plate_insert"));
+        Ok(if preset {
+            Subject::Paper(Box::new(Scene::from_toml_str(&text, path, sets)?))
+        } else {
+            Subject::Generic(Box::new(GenericScene::from_toml_str(&text, path, sets)?))
+        })
+    }
+
+    /// The scene's own mesh.
+    pub fn mesh_path(&self) -> PathBuf {
+        match self {
+            Subject::Generic(s) => s.mesh_path(),
+            Subject::Paper(s) => s.mesh_path(),
+        }
+    }
+
+    /// The mesh levels to run when none are given: the scene's own mesh (`None`), or for the
+    /// paper's case the N = 16, 32, 64 meshes beside it that exist.
+    pub fn default_meshes(&self) -> Vec<Option<PathBuf>> {
+        let own = self.mesh_path();
+        let name = own.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        let levels: Vec<Option<PathBuf>> = match (self, name.rsplit_once("_N")) {
+            (Subject::Paper(_), Some((stem, _))) => ["16", "32", "64"]
+                .iter()
+                .map(|n| own.with_file_name(format!("{stem}_N{n}.msh")))
+                .filter(|p| p.is_file())
+                // Absolute: a mesh override is resolved against the scene's directory.
+                .map(|p| Some(std::path::absolute(&p).unwrap_or(p)))
+                .collect(),
+            _ => vec![],
+        };
+        if levels.is_empty() { vec![None] } else { levels }
+    }
+
+    /// The override that sets the mesh.
+    pub fn mesh_override(&self, mesh: &Path) -> String {
+        let key = match self {
+            Subject::Generic(_) => "mesh",
+            Subject::Paper(_) => "plate_insert.mesh",
+        };
+        format!("{key}={}", toml::Value::String(mesh.display().to_string()))
+    }
+
+    /// The pairings to run, each as its key and the overrides that select it.
+    pub fn pairings(&self) -> Vec<(&'static str, Vec<String>)> {
+        match self {
+            Subject::Generic(s) => Pairing::ALL
+                .iter()
+                .map(|p| (p.key(), (0..s.contact.len()).map(|i| format!("contact.{i}.pairing={}", p.key())).collect()))
+                .collect(),
+            Subject::Paper(_) => ["node_to_node", "node_to_segment"]
+                .into_iter()
+                .map(|p| (p, vec![format!("plate_insert.pairs={p}")]))
+                .collect(),
+        }
+    }
+
+    /// The quantities compared (dotted paths into the JSON summary, or `energy`).
+    pub fn quantities(&self) -> Vec<String> {
+        match self {
+            Subject::Generic(s) => {
+                let mut q = vec![];
+                for c in &s.contact {
+                    q.push(format!("contacts.{}.max_pressure", c.name));
+                    q.push(format!("contacts.{}.contact_length", c.name));
+                    if c.friction > 0.0 {
+                        q.push(format!("contacts.{}.tangential_force", c.name));
+                    }
+                }
+                q.push("energy".into());
+                q
+            }
+            Subject::Paper(s) => {
+                let mut q: Vec<String> = ["P", "l"].map(String::from).to_vec();
+                if s.plate_insert.friction > 0.0 {
+                    q.push("b".into());
+                }
+                q.extend(["Phi_E1", "Phi_E2", "sigma_star"].map(String::from));
+                q
+            }
+        }
+    }
+
+    /// The published values of the scene's quantities (the paper's bundled cases), as
+    /// `(quantity, value)`; empty for a generic scene or a case the paper does not give.
+    pub fn published(&self) -> Vec<(String, f64)> {
+        let Subject::Paper(s) = self else { return vec![] };
+        let Some(case) = published_case(&s.name) else { return vec![] };
+        let compared = self.quantities();
+        case.quantities()
+            .into_iter()
+            .filter(|(q, _)| compared.iter().any(|c| c == q))
+            .map(|(q, v)| (q.into(), v))
+            .collect()
+    }
+
+    /// One run with a wall-clock deadline checked before each load step.
+    ///
+    /// # Errors
+    /// [`RunFailure`] with the library's message.
+    pub fn run(&self, deadline: web_time::Instant) -> Result<RunSummary, RunFailure> {
+        let timed_out = |e: &ContactError| matches!(e, ContactError::DeadlineExceeded { .. });
+        match self {
+            Subject::Generic(scene) => match solve_generic_until(scene, Some(deadline), &mut |_, _| {}) {
+                Ok(outcome) => {
+                    let r = &outcome.report;
+                    Ok(RunSummary {
+                        json: serde_json::to_value(r).unwrap_or(Value::Null),
+                        times: (r.time_s.total, r.time_s.solve),
+                        status: (r.status.to_string(), r.failed_check.clone()),
+                        iterations: r.iterations,
+                        pairs: r.pairs,
+                        kkt: [r.kkt.max_penetration, r.kkt.max_complementarity, r.kkt.max_cone_violation],
+                    })
+                }
+                Err(GenericError::Contact { source, .. }) if timed_out(&source) => {
+                    Err(RunFailure::TimedOut(source.to_string()))
+                }
+                Err(e) => Err(RunFailure::Failed(e.to_string())),
+            },
+            Subject::Paper(scene) => {
+                let scene = Scene { deadline: Some(deadline), ..(**scene).clone() };
+                match solve_scene(&scene) {
+                    Ok(outcome) => {
+                        let r = &outcome.report;
+                        Ok(RunSummary {
+                            json: serde_json::to_value(r).unwrap_or(Value::Null),
+                            times: (r.time_s, r.solve_time_s),
+                            status: (r.status.clone(), r.failed_check.clone()),
+                            iterations: r.iterations,
+                            pairs: r.pairs,
+                            kkt: [r.kkt.max_penetration, r.kkt.max_complementarity, r.kkt.max_cone_violation],
+                        })
+                    }
+                    Err(e) if timed_out(&e) => Err(RunFailure::TimedOut(e.to_string())),
+                    Err(e) => Err(RunFailure::Failed(e.to_string())),
+                }
+            }
+        }
+    }
+}
