@@ -4,7 +4,7 @@
 //! ```text
 //! U  = max(|u|, |s_start|)           (displacement scale: the solution's displacements and the
 //!                                     relative slips the step started from; gaps excluded)
-//! F  = max(|λ|, |τ|, |w f|, k̄ U)     (force scale, crate::report::force_scale)
+//! F  = max(|λ|, |τ|, |w f|, k̄ U)     (force scale, force_scale)
 //! Fc = max λ  (F if no pair carries a load)        (contact-force scale)
 //!
 //! finite            every u, λ, τ, gap, slip and the dissipation finite
@@ -31,7 +31,6 @@
 use std::fmt;
 
 use crate::problem::ContactProblem;
-use crate::report::force_scale;
 use crate::solution::{ContactSolution, ContactStatus, PairState};
 
 /// The tolerance of every dimensionless residual of [`certify`].
@@ -251,3 +250,12 @@ pub fn energy_scale(steps: impl IntoIterator<Item = (f64, f64, f64)>) -> f64 {
 
 /// The energy-balance tolerance when the work is a trapezoid rule over the load steps.
 pub const TRAPEZOID_ENERGY_TOLERANCE: f64 = 0.3;
+
+/// The force scale `F`: the largest of the contact forces, the load's nodal forces, and the
+/// force `k̄ U` that the largest stiffness entry exerts over the displacement scale (so that an
+/// unloaded state's round-off forces are not mistaken for contact).
+pub(crate) fn force_scale(problem: &ContactProblem, w: f64, lambda: &[f64], tau: &[f64], length_scale: f64) -> f64 {
+    let k_max = problem.stiffness_scale;
+    let load_force = problem.pattern_rhs.iter().fold(0.0f64, |a, r| a.max((w * r).abs()));
+    lambda.iter().chain(tau).fold(load_force.max(k_max * length_scale), |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE)
+}

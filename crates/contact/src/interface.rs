@@ -56,7 +56,7 @@ pub struct Interface {
     /// The factored equations of the last contact state solved on this interface, reused when
     /// the next solve has the same state (a load step starting from the previous step's
     /// states).
-    pub(crate) last_state: crate::algorithms::state_equations::StateFactorCache,
+    pub(crate) last_state: crate::factor_cache::StateFactorCache,
 }
 
 /// `Bᵀ` restricted to free DOFs, as dense columns of length `n`.

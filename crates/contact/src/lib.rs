@@ -17,6 +17,7 @@ pub mod algorithms;
 pub mod builder;
 pub mod certify;
 pub mod error;
+mod factor_cache;
 mod floating;
 pub mod history;
 pub mod interface;
@@ -52,10 +53,13 @@ pub use frictionless_active_set::solve_frictionless_active_set;
 pub use history::{HistoryStep, Retention, equal_steps};
 pub use interface::Interface;
 pub use loading::LoadSchedule;
-pub use pairing::{ContactPair, node_to_node_targets, nodes_face_each_other, pair_contours, tributary_weights};
+pub use pairing::{
+    ContactPair, IntegratedRows, RowCoefficient, node_to_node_targets, nodes_face_each_other, pair_contours,
+    tributary_weights,
+};
 pub use post::{contact_end, contact_end_from_pressure, pair_tractions, stick_end};
 pub use problem::{BuildTimes, ContactProblem, LoadPattern, PairRow, SparseRow, condensed_rows};
 pub use report::{RawSolution, fem_solution, finish_from_displacement, finish_from_forces};
-pub use segment_to_segment::{IntegratedRows, RowCoefficient, pair_segments};
+pub use segment_to_segment::pair_segments;
 pub use solution::{ContactSolution, ContactStatus, IterationRecord, KktResiduals, PairState, StepStart, Violation};
 pub use solve::{ContactAlgorithm, History, SolvedStep, SolverSettings, solve, solve_keeping, solve_with};

@@ -24,7 +24,6 @@ use contact2d_fem::Model;
 use contact2d_mesh::{Contour, ContourEdge, NodeId};
 
 use crate::error::ContactError;
-use crate::segment_to_segment::IntegratedRows;
 use crate::side::{Projection, SlaveBody};
 
 /// One contact pair: a master node and its closest point on the slave curve.
@@ -54,6 +53,33 @@ pub struct ContactPair {
     /// [`crate::segment_to_segment`]); `None` for node-to-segment, whose rows are
     /// `n · (u_master − Σ_j N_j u_slave_j)`.
     pub integrated: Option<IntegratedRows>,
+}
+
+/// One node's coefficients in an integrated pair row: the row is `Σ_a c_a · u_a` over nodes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RowCoefficient {
+    /// The node.
+    pub node: NodeId,
+    /// Its coefficient vector in the normal row, `(1/w_k) ∫ φ_k N_a n ds` (negated on the slave).
+    pub normal: [f64; 2],
+    /// Its coefficient vector in the tangential row (with `t` for `n`).
+    pub tangent: [f64; 2],
+}
+
+/// The integrated rows of a segment-to-segment pair (`crate::segment_to_segment`).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct IntegratedRows {
+    /// Master-side nodes (the integration side), in order of first appearance.
+    pub master: Vec<RowCoefficient>,
+    /// Slave-side nodes, in order of first appearance.
+    pub slave: Vec<RowCoefficient>,
+    /// The slave nodes and shape-function weights at the master node's own closest point (the
+    /// node-to-segment data the integrated weights replace): whether the node itself can move
+    /// tangentially against the slave is judged on them ([`crate::ContactProblem::tangential`]).
+    pub point_slave: Vec<(NodeId, f64)>,
+    /// The unit tangent of the slave curve at that point (the node-to-segment tangent the
+    /// integrated mean replaces).
+    pub point_tangent: [f64; 2],
 }
 
 /// Builds the pairs of every node of `master` with the closest point of `slave`.

@@ -14,7 +14,7 @@ use contact2d_fem::{CholeskySolver, Component, Dof, DofKind, LinearSystem, Model
 
 use crate::error::ContactError;
 use crate::pairing::ContactPair;
-use crate::segment_to_segment::{IntegratedRows, RowCoefficient};
+use crate::pairing::{IntegratedRows, RowCoefficient};
 
 /// A sparse row over free DOFs plus its part over constrained DOFs.
 #[derive(Debug, Clone, PartialEq, Default)]

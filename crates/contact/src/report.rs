@@ -17,7 +17,7 @@ use std::time::Duration;
 
 use contact2d_fem::Solution;
 
-use crate::certify::certify;
+use crate::certify::{certify, force_scale};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::solution::{ContactSolution, ContactStatus, KktResiduals, PairState, StepStart};
@@ -134,15 +134,6 @@ pub fn finish_from_displacement(
         solution.status = ContactStatus::Numerical;
     }
     solution
-}
-
-/// The force scale `F`: the largest of the contact forces, the load's nodal forces, and the
-/// force `k̄ U` that the largest stiffness entry exerts over the displacement scale (so that an
-/// unloaded state's round-off forces are not mistaken for contact).
-pub(crate) fn force_scale(problem: &ContactProblem, w: f64, lambda: &[f64], tau: &[f64], length_scale: f64) -> f64 {
-    let k_max = problem.stiffness_scale;
-    let load_force = problem.pattern_rhs.iter().fold(0.0f64, |a, r| a.max((w * r).abs()));
-    lambda.iter().chain(tau).fold(load_force.max(k_max * length_scale), |a, l| a.max(l.abs())).max(f64::MIN_POSITIVE)
 }
 
 /// Reactions of a contact solution: `K u − f − B_Nᵀ λ − B_Tᵀ τ` at constrained DOFs (the contact

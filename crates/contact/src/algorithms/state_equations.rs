@@ -33,6 +33,7 @@ use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::lu::partial_pivoting::{factor, solve};
 use nalgebra::DMatrix;
 
+use crate::factor_cache::StateFactor;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::solution::{PairState, StepStart};
@@ -110,26 +111,6 @@ impl StateSystem {
         let x = self.matrix.lu().solve(&self.rhs)?;
         x.iter().all(|v| v.is_finite()).then_some(x)
     }
-}
-
-/// The last factored reduced system of an interface, keyed by what its matrix depends on
-/// besides the compliances: the states, the friction coefficients and the tangential flags.
-#[derive(Debug, Default)]
-pub(crate) struct StateFactorCache(std::sync::Mutex<Option<StateFactor>>);
-
-impl Clone for StateFactorCache {
-    /// A clone starts empty (the factor is a cache, not part of the value).
-    fn clone(&self) -> StateFactorCache {
-        StateFactorCache::default()
-    }
-}
-
-#[derive(Debug)]
-struct StateFactor {
-    key: (Vec<PairState>, Vec<f64>, Vec<bool>, bool),
-    lu: Mat<f64>,
-    forward: Vec<usize>,
-    inverse: Vec<usize>,
 }
 
 /// How pair `k`'s tangential force follows from its state.
