@@ -27,6 +27,8 @@ pub mod scene;
 #[cfg(feature = "native")]
 pub mod stress;
 #[cfg(feature = "native")]
+pub mod subject;
+#[cfg(feature = "native")]
 pub mod sweep;
 #[cfg(feature = "native")]
 pub mod verify;

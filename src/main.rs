@@ -102,10 +102,11 @@ enum Command {
         /// Override a scene value for every run, as in `run` (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
-        /// The outputs to plot, comma-separated: for the flagship's scenes l, b, P, Phi_E1, Phi_E2,
-        /// Phi_f, W, sigma_star, K, insert_hoop_max; for generic scenes any number of the JSON summary
-        /// by its dotted path (e.g. contacts.hertz.max_pressure, reactions.block_bottom.1; default:
-        /// each interface's normal force and contact length).
+        /// The outputs to plot, comma-separated: any number of the run's JSON summary by its
+        /// dotted path (the flagship's scenes: l, b, P, Phi_E1, Phi_E2, Phi_f, W, sigma_star, K,
+        /// insert_hoop_max; generic scenes e.g. contacts.hertz.max_pressure,
+        /// reactions.block_bottom.1). Default: l, b, P for the flagship's scenes, each
+        /// interface's normal force and contact length for generic ones.
         #[arg(long, value_name = "NAMES", default_value = DEFAULT_PLOT)]
         plot: String,
         /// The output directory (default: out/sweep_<scene file name>).
@@ -327,26 +328,26 @@ fn sweep(
     out: Option<std::path::PathBuf>,
     quiet: bool,
 ) -> anyhow::Result<()> {
-    use contact2d::sweep::{
-        Quantity, Variation, check_variations, run_sweep_with, sweep_csv_header, sweep_csv_row, sweep_markdown,
-        write_sweep_into,
-    };
+    use contact2d::sweep::{Variation, check_variations, csv_header, csv_row, markdown, run_sweep, write_sweep};
     use std::io::IsTerminal;
     let variations = vary.iter().map(|v| Variation::parse(v)).collect::<Result<Vec<_>, _>>()?;
-    if contact2d::generic::scene::is_generic(&contact2d::scene::read_scene_text(scene)?) {
-        return sweep_generic(scene, &variations, set, plot, out, quiet);
-    }
-    // Unknown or repeated keys and oversized grids fail before any run.
-    let runs = check_variations(&variations)?;
-    let plots = plot.split(',').filter(|p| !p.trim().is_empty()).map(Quantity::parse).collect::<Result<Vec<_>, _>>()?;
-    // Fail early on a scene that does not load at all (each combination is checked in its run).
-    let base = contact2d::scene::Scene::load(scene, set)?;
+    // Unknown or repeated keys and oversized grids fail before any run, and so does a scene that
+    // does not load at all (each combination is checked in its run).
+    let runs = check_variations(scene, &variations, set)?;
+    let base = contact2d::subject::Subject::load(scene, set)?;
+    let plots: Vec<String> = if plot == DEFAULT_PLOT {
+        base.sweep_plots()
+    } else {
+        plot.split(',').map(|p| p.trim().to_string()).filter(|p| !p.is_empty()).collect()
+    };
+    let mut columns = base.sweep_columns();
+    columns.extend(plots.iter().filter(|p| !columns.contains(p)).cloned().collect::<Vec<_>>());
     let stem = scene.file_stem().map_or("scene".into(), |s| s.to_string_lossy().into_owned());
     let dir = out.unwrap_or_else(|| std::path::PathBuf::from("out").join(format!("sweep_{stem}")));
     let mut folder = contact2d::output::OutputDir::prepare(&dir, None)?;
     // Rows go to sweep.csv.partial as they finish (flushed), so an interrupted sweep keeps them.
     let mut partial = folder.stream("sweep.csv")?;
-    partial.append(&sweep_csv_header(&variations))?;
+    partial.append(&csv_header(&variations, &columns))?;
     let partial = std::sync::Mutex::new(partial);
     let bar = if quiet || !std::io::stdout().is_terminal() {
         indicatif::ProgressBar::hidden()
@@ -358,9 +359,9 @@ fn sweep(
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
     let append_error = std::sync::Mutex::new(None);
-    let rows = run_sweep_with(scene, &variations, set, |row| {
+    let rows = run_sweep(scene, &variations, set, |row| {
         if let Ok(mut file) = partial.lock()
-            && let Err(e) = file.append(&sweep_csv_row(row))
+            && let Err(e) = file.append(&csv_row(row, &columns))
             && let Ok(mut slot) = append_error.lock()
         {
             slot.get_or_insert(e);
@@ -373,10 +374,10 @@ fn sweep(
     }
     // The final sweep.csv lists the rows in combination order; writing it removes the partial.
     drop(partial);
-    let written = write_sweep_into(folder, &base.name, &variations, &rows, &plots)?;
+    let written = write_sweep(folder, base.name(), &variations, &rows, &columns, &plots)?;
     let mut stdout = std::io::stdout().lock();
     if !quiet {
-        write!(stdout, "{}", sweep_markdown(&variations, &rows))?;
+        write!(stdout, "{}", markdown(&variations, &rows, &columns))?;
     }
     let failed: Vec<&String> = rows.iter().filter_map(|r| r.result.as_ref().err()).collect();
     writeln!(stdout, "{} runs ({} failed); wrote {} files:", rows.len(), failed.len(), written.len())?;
@@ -385,55 +386,6 @@ fn sweep(
     }
     if !rows.is_empty() && failed.len() == rows.len() {
         anyhow::bail!("every one of the {} runs failed; the first: {}", rows.len(), failed[0]);
-    }
-    Ok(())
-}
-
-/// `sweep` on a generic scene: any key varied, any JSON number plotted by its dotted path.
-fn sweep_generic(
-    scene: &std::path::Path,
-    variations: &[contact2d::sweep::Variation],
-    set: &[String],
-    plot: &str,
-    out: Option<std::path::PathBuf>,
-    quiet: bool,
-) -> anyhow::Result<()> {
-    use contact2d::generic::sweep::{
-        check_generic_variations, csv_header, csv_row, default_quantities, markdown, run_generic_sweep,
-        write_generic_sweep,
-    };
-    check_generic_variations(scene, variations, set)?;
-    let base = contact2d::generic::load_scene(scene, set)?;
-    // The flagship's default plot list means "the default" here: each interface's resultants.
-    let quantities: Vec<String> = if plot == DEFAULT_PLOT {
-        default_quantities(&base.contact.iter().map(|c| c.name.clone()).collect::<Vec<_>>())
-    } else {
-        plot.split(',').map(|p| p.trim().to_string()).filter(|p| !p.is_empty()).collect()
-    };
-    let stem = scene.file_stem().map_or("scene".into(), |s| s.to_string_lossy().into_owned());
-    let dir = out.unwrap_or_else(|| std::path::PathBuf::from("out").join(format!("sweep_{stem}")));
-    let mut folder = contact2d::output::OutputDir::prepare(&dir, None)?;
-    let mut partial = folder.stream("sweep.csv")?;
-    partial.append(&csv_header(variations, &quantities))?;
-    let partial = std::sync::Mutex::new(partial);
-    let rows = run_generic_sweep(scene, variations, set, |row| {
-        if let Ok(mut file) = partial.lock() {
-            let _ = file.append(&csv_row(row, &quantities));
-        }
-    });
-    drop(partial);
-    let written = write_generic_sweep(folder, &base.name, variations, &rows, &quantities)?;
-    let mut stdout = std::io::stdout().lock();
-    if !quiet {
-        write!(stdout, "{}", markdown(variations, &rows, &quantities))?;
-    }
-    let failed = rows.iter().filter(|r| r.result.is_err()).count();
-    writeln!(stdout, "{} runs ({failed} failed); wrote {} files:", rows.len(), written.len())?;
-    for p in &written {
-        writeln!(stdout, "  {}", p.display())?;
-    }
-    if failed == rows.len() {
-        anyhow::bail!("every run of the sweep failed");
     }
     Ok(())
 }

@@ -11,8 +11,6 @@ pub mod outputs;
 pub mod results;
 pub mod scene;
 pub mod setup_notes;
-#[cfg(feature = "native")]
-pub mod sweep;
 
 use std::collections::BTreeMap;
 use std::path::Path;

@@ -1,7 +1,7 @@
-//! What `compare` runs: a generic scene, or a scene of the paper's case (a `[plate_insert]`
-//! section), behind one interface — its pairings, its quantities, its mesh levels, its
-//! published references and one run as the JSON summary — so that the table, the references
-//! and the figures are the same code for both.
+//! What the studies (`compare`, `sweep`) run: a generic scene, or a scene of the paper's case (a
+//! `[plate_insert]` section), behind one interface — its pairings, its quantities, its mesh
+//! levels, its published references and one run as the JSON summary — so that the tables, the
+//! references and the figures are the same code for both.
 //!
 //! ```text
 //!                 generic scene                        the paper's case
@@ -9,8 +9,11 @@
 //! mesh key        mesh                                 plate_insert.mesh
 //! meshes          the scene's own                      its *_N16, *_N32, *_N64 siblings (those that exist)
 //! quantities      contacts.<c>.max_pressure,           P, l, b (with friction), Phi_E1, Phi_E2,
-//!                 contact_length, tangential_force      sigma_star
+//! (compare)       contact_length, tangential_force      sigma_star
 //!                 (μ > 0), energy
+//! sweep columns   contacts.<c>.normal_force,            l, b, P, Phi_E1, Phi_E2, Phi_f, W,
+//!                 contacts.<c>.contact_length           sigma_star, K, insert_hoop_max
+//! sweep plots     the sweep columns                     l, b, P
 //! published       —                                    Solodovnikov (1998) for the bundled scenes
 //! ```
 
@@ -51,11 +54,13 @@ pub struct RunSummary {
 }
 
 /// Why a run gave no summary.
-#[derive(Debug)]
+#[derive(Debug, thiserror::Error)]
 pub enum RunFailure {
     /// The deadline passed (the message says where).
+    #[error("{0}")]
     TimedOut(String),
     /// Refused or failed (the library's message).
+    #[error("{0}")]
     Failed(String),
 }
 
@@ -73,6 +78,14 @@ impl Subject {
         } else {
             Subject::Generic(Box::new(GenericScene::from_toml_str(&text, path, sets)?))
         })
+    }
+
+    /// The scene's name (titles of figures).
+    pub fn name(&self) -> &str {
+        match self {
+            Subject::Generic(s) => &s.name,
+            Subject::Paper(s) => &s.name,
+        }
     }
 
     /// The scene's own mesh.
@@ -150,6 +163,33 @@ impl Subject {
         }
     }
 
+    /// The columns a sweep tabulates: each interface's normal force and contact length, or the
+    /// paper's quantities.
+    pub fn sweep_columns(&self) -> Vec<String> {
+        match self {
+            Subject::Generic(s) => s
+                .contact
+                .iter()
+                .flat_map(|c| {
+                    [format!("contacts.{}.normal_force", c.name), format!("contacts.{}.contact_length", c.name)]
+                })
+                .collect(),
+            Subject::Paper(_) => {
+                ["l", "b", "P", "Phi_E1", "Phi_E2", "Phi_f", "W", "sigma_star", "K", "insert_hoop_max"]
+                    .map(String::from)
+                    .to_vec()
+            }
+        }
+    }
+
+    /// The quantities a sweep plots by default: its columns, or the paper's l, b and P.
+    pub fn sweep_plots(&self) -> Vec<String> {
+        match self {
+            Subject::Generic(_) => self.sweep_columns(),
+            Subject::Paper(_) => ["l", "b", "P"].map(String::from).to_vec(),
+        }
+    }
+
     /// The published values of the scene's quantities (the paper's bundled cases), as
     /// `(quantity, value)`; empty for a generic scene or a case the paper does not give.
     pub fn published(&self) -> Vec<(String, f64)> {
@@ -163,14 +203,14 @@ impl Subject {
             .collect()
     }
 
-    /// One run with a wall-clock deadline checked before each load step.
+    /// One run, with a wall-clock deadline checked before each load step if given.
     ///
     /// # Errors
     /// [`RunFailure`] with the library's message.
-    pub fn run(&self, deadline: web_time::Instant) -> Result<RunSummary, RunFailure> {
+    pub fn run(&self, deadline: Option<web_time::Instant>) -> Result<RunSummary, RunFailure> {
         let timed_out = |e: &ContactError| matches!(e, ContactError::DeadlineExceeded { .. });
         match self {
-            Subject::Generic(scene) => match solve_generic_until(scene, Some(deadline), &mut |_, _| {}) {
+            Subject::Generic(scene) => match solve_generic_until(scene, deadline, &mut |_, _| {}) {
                 Ok(outcome) => {
                     let r = &outcome.report;
                     Ok(RunSummary {
@@ -188,7 +228,7 @@ impl Subject {
                 Err(e) => Err(RunFailure::Failed(e.to_string())),
             },
             Subject::Paper(scene) => {
-                let scene = Scene { deadline: Some(deadline), ..(**scene).clone() };
+                let scene = Scene { deadline, ..(**scene).clone() };
                 match solve_scene(&scene) {
                     Ok(outcome) => {
                         let r = &outcome.report;
@@ -206,5 +246,39 @@ impl Subject {
                 }
             }
         }
+    }
+}
+
+/// The number at a dotted path of a JSON summary (`contacts.hertz.normal_force`,
+/// `reactions.block_bottom.1`, `P`), or `energy`: the sum of the bodies' strain energies; `None`
+/// if there is none.
+pub fn quantity(summary: &Value, path: &str) -> Option<f64> {
+    if path == "energy" {
+        return summary.get("energies")?.as_object().map(|m| m.values().filter_map(Value::as_f64).sum());
+    }
+    path.split('.')
+        .try_fold(summary, |v, part| match v {
+            Value::Array(items) => part.parse::<usize>().ok().and_then(|i| items.get(i)),
+            _ => v.get(part),
+        })
+        .and_then(Value::as_f64)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quantities_are_dotted_paths_and_energy_is_the_sum() {
+        let json: Value = serde_json::json!({
+            "contacts": {"c": {"max_pressure": 3.0}},
+            "energies": {"a": 1.0, "b": 2.5},
+            "reactions": {"b": [1.0, -3.0]}
+        });
+        assert_eq!(quantity(&json, "contacts.c.max_pressure"), Some(3.0));
+        assert_eq!(quantity(&json, "energy"), Some(3.5));
+        assert_eq!(quantity(&json, "reactions.b.1"), Some(-3.0));
+        assert_eq!(quantity(&json, "reactions.b.2"), None);
+        assert_eq!(quantity(&json, "contacts.nope"), None);
     }
 }
