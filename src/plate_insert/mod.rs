@@ -24,6 +24,7 @@ mod corners;
 mod generated_mesh;
 mod group_geometry;
 mod placed;
+pub mod preset;
 pub mod published;
 mod results;
 mod roots;
@@ -147,7 +148,8 @@ impl PlateInsert {
         }
     }
 
-    /// Builds the model, the pairs and the contact problem.
+    /// Builds the model, the pairs and the contact problem: through the generic description
+    /// ([`PlateInsert::description`], the library's one builder) unless nodes are placed.
     ///
     /// # Errors
     /// Mesh, model or pairing errors.
@@ -161,6 +163,10 @@ impl PlateInsert {
     /// # Errors
     /// Model or pairing errors, or a placement outside its corner's range.
     pub fn build_on(&self, mesh: contact2d_mesh::Mesh) -> Result<PlateInsertProblem, ContactError> {
+        if self.placed_nodes.is_empty() {
+            // The generic description, built by the library's one builder (preset.rs).
+            return self.build_preset(mesh);
+        }
         self.build_reusing(mesh, None)
     }
 

@@ -1,0 +1,141 @@
+//! The paper's case as a preset of the generic problem description: the `[plate_insert]` keys
+//! expand into bodies, fixes, the pulled edge's load pattern and one contact interface, built by
+//! the library's one builder ([`ProblemDescription::build`]) like any scene; only the paper's gap
+//! model is applied afterwards, pair by pair, since no scene key describes it.
+//!
+//! ```text
+//! bodies    plate (E1 = 1), insert (E2 = stiffness_ratio; none when rigid), ν, plane, formulation
+//! fixes     top, bottom_plate: u2 = 0;  right: u1 = 1 (pattern main, scaled by w), u2 = 0
+//!           insert_inner: u1 = u2 = 0;  insert_symmetry: u2 = 0   (elastic insert)
+//! contact   "hole": master hole_edge / slave insert_edge (variant 1) or the reverse (variant 2);
+//!           node-to-node (slave nodes slid onto the paired points) or node-to-segment; the
+//!           insert edge a rigid obstacle for a rigid insert; friction μ
+//! gaps      geometric × c/ε, or the paper's u_ρc / u_rc ([`GapModel`])
+//! ```
+
+use contact2d_contact::{
+    BodyDescription, ContactDescription, ContactError, FixDescription, GapDescription, Pairing, ProblemDescription,
+};
+use contact2d_fem::Component;
+use contact2d_mesh::{Contour, Mesh};
+
+use super::{PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem};
+
+/// The name of the preset's one contact interface.
+pub const INTERFACE: &str = "hole";
+
+impl PlateInsert {
+    /// The generic description of the case on `mesh` (see the module docs).
+    pub fn description(&self, mesh: Mesh) -> ProblemDescription {
+        let body = |region: &str, youngs_modulus: f64| BodyDescription {
+            region: region.into(),
+            youngs_modulus,
+            poissons_ratio: self.poissons_ratio,
+            plane: self.plane,
+            thickness: 1.0,
+            formulation: self.formulation,
+        };
+        let fix = |group: &str, component: Component, value: f64| FixDescription {
+            group: group.into(),
+            component,
+            value,
+            pattern: contact2d_contact::builder::DEFAULT_PATTERN.into(),
+        };
+        let mut bodies = vec![body("plate", 1.0)];
+        let mut fixes = vec![
+            fix("top", Component::Y, 0.0),
+            fix("bottom_plate", Component::Y, 0.0),
+            fix("right", Component::Y, 0.0),
+            fix("right", Component::X, 1.0),
+        ];
+        if !self.rigid_insert {
+            bodies.push(body("insert", self.stiffness_ratio));
+            fixes.extend([
+                fix("insert_inner", Component::X, 0.0),
+                fix("insert_inner", Component::Y, 0.0),
+                fix("insert_symmetry", Component::Y, 0.0),
+            ]);
+        }
+        let (master, slave) = match self.variant {
+            PairingVariant::HoleMaster => ("hole_edge", "insert_edge"),
+            PairingVariant::InsertMaster => ("insert_edge", "hole_edge"),
+        };
+        let contact = ContactDescription {
+            name: INTERFACE.into(),
+            master: master.into(),
+            slave: slave.into(),
+            rigid_slave: self.rigid_insert,
+            pairing: match self.pairs {
+                PairDiscretisation::NodeToNode => Pairing::NodeToNode,
+                PairDiscretisation::NodeToSegment => Pairing::NodeToSegment,
+            },
+            gap: GapDescription::Geometric,
+            friction: self.friction,
+            self_contact: false,
+        };
+        ProblemDescription { mesh, bodies, fixes, loads: vec![], contacts: vec![contact] }
+    }
+
+    /// The case built through the generic description ([`PlateInsert::description`]), the
+    /// paper's gaps set on its pairs.
+    ///
+    /// # Errors
+    /// Those of [`ProblemDescription::build`], and a clearance the mesh has no room for.
+    pub fn build_preset(&self, mesh: Mesh) -> Result<PlateInsertProblem, ContactError> {
+        let mut problem = self.description(mesh).build()?.problem;
+        problem.set_gaps(self.gaps(&problem)?)?;
+        let hole = Contour::from_group(&problem.model.mesh, "hole_edge")?;
+        let insert = Contour::from_group(&problem.model.mesh, "insert_edge")?;
+        Ok(PlateInsertProblem { problem, hole, insert, variant: self.variant, eps: self.eps })
+    }
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+    use contact2d_contact::{ContactAlgorithm, SolverSettings};
+
+    use crate::plate_insert::GapModel;
+
+    /// The preset built by the library's builder against the paper's own model and pairing code
+    /// (`build_reusing`, which the placed zone ends still use) on variants of the case: the same
+    /// pairs, gaps and friction, and the same answer. 1e-10 relative: the two paths assemble the
+    /// same matrices in the same order; only round-off of sums may differ.
+    #[test]
+    fn the_preset_builds_the_papers_own_problem() {
+        let mesh =
+            |eps: &str| format!("{}/meshes/plate_insert/plate_insert_eps{eps}_N16.msh", env!("CARGO_MANIFEST_DIR"));
+        let gap = |variant, gap_model| PlateInsert {
+            eps: 0.05,
+            clearance: 1.0,
+            friction: 0.3,
+            variant,
+            gap_model,
+            ..PlateInsert::paper(mesh("0.05"))
+        };
+        let cases = [
+            PlateInsert { friction: 0.3, ..PlateInsert::paper(mesh("0")) },
+            PlateInsert { rigid_insert: true, ..PlateInsert::paper(mesh("0")) },
+            PlateInsert { pairs: PairDiscretisation::NodeToSegment, ..PlateInsert::paper(mesh("0")) },
+            gap(PairingVariant::HoleMaster, GapModel::Paper),
+            gap(PairingVariant::InsertMaster, GapModel::Paper),
+            gap(PairingVariant::HoleMaster, GapModel::Geometric),
+        ];
+        let settings = SolverSettings::new(ContactAlgorithm::ActiveSet);
+        for case in cases {
+            let read = || contact2d_mesh::read_msh(&case.mesh).unwrap();
+            let (preset, own) = (case.build_preset(read()).unwrap(), case.build_reusing(read(), None).unwrap());
+            let (p, o) = (&preset.problem, &own.problem);
+            assert_eq!(p.num_pairs(), o.num_pairs(), "{case:?}");
+            assert_eq!((&p.gap, &p.friction), (&o.gap, &o.friction), "{case:?}");
+            let load = [0.3];
+            let a = preset.solve_loads(&settings, &load, &mut |_| {}).unwrap();
+            let b = own.solve_loads(&settings, &load, &mut |_| {}).unwrap();
+            let (u, v) = (&a[0].solution.displacement, &b[0].solution.displacement);
+            let scale = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            let diff = u.iter().zip(v).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+            assert!(diff <= 1e-10 * scale, "{case:?}: displacements differ by {diff:e} of {scale:e}");
+        }
+    }
+}
