@@ -244,23 +244,25 @@ fn solve_scene_from(
         ));
     }
     // Without clearance every gap is zero (both gap models scale with c), so the solution is
-    // linear in w (spec §5.2): solved once at w = 1 and scaled.
+    // linear in w (spec §5.2): the library's solve finds the proportional loads and solves once;
+    // the placed zone ends do the same here, at w = 1, scaled after.
     let scaled = p.clearance == 0.0 && p.l_steps.is_empty();
-    let loads = if scaled { vec![1.0] } else { equal_steps(p.load, p.steps) };
+    let loads = equal_steps(p.load, p.steps);
     let total = if p.l_steps.is_empty() { loads.len() } else { p.l_steps.len() };
     let mut done = 0;
     let mut report_step = |w: f64| {
         done += 1;
-        progress.step_done(done, total, if scaled { w * p.load } else { w });
+        progress.step_done(done, total, w);
     };
     if placed {
+        let (unit, scale) = if scaled { (vec![1.0], p.load) } else { (loads, 1.0) };
         let loadings: Vec<PlacedLoading> = if p.l_steps.is_empty() {
-            loads.iter().map(|w| PlacedLoading::Load(*w)).collect()
+            unit.iter().map(|w| PlacedLoading::Load(*w)).collect()
         } else {
             p.l_steps.iter().map(|l| PlacedLoading::ContactEnd(*l)).collect()
         };
         let placed = solve_placed_history(&scene.plate_insert(), &loadings, ZoneEndSearch::default(), &mut |s| {
-            report_step(s.load)
+            report_step(s.load * scale)
         })?;
         let notes: Vec<String> = placed
             .iter()
@@ -273,7 +275,7 @@ fn solve_scene_from(
                 )
             })
             .collect();
-        let steps = placed_steps(placed, if scaled { p.load } else { 1.0 })?;
+        let steps = placed_steps(placed, scale)?;
         let mut report = finite(summarise(scene, &steps, start)?)?;
         report.notes.extend(notes);
         return Ok(RunOutcome { report, steps });
@@ -282,18 +284,12 @@ fn solve_scene_from(
         Some(mesh) => scene.plate_insert().build_on(mesh)?,
         None => scene.plate_insert().build()?,
     });
-    let mut history = if p.l_steps.is_empty() {
+    let history = if p.l_steps.is_empty() {
         let settings = scene.settings().map_err(|e| ContactError::InvalidInput(e.to_string()))?;
         case.solve_loads(&settings, &loads, &mut report_step)?
     } else {
         contact_end_steps(&case, &p.l_steps, scene.solver.max_iterations, &mut report_step)?
     };
-    if scaled {
-        for step in &mut history {
-            scale_solution(&mut step.solution, p.load);
-            step.dissipated *= p.load * p.load;
-        }
-    }
     let steps = history
         .into_iter()
         .map(|step| {

@@ -49,7 +49,7 @@ mod overrides;
 mod parse;
 mod solver;
 
-pub use limits::{MAGNITUDE_RANGE, MAX_FRICTION, MAX_ITERATIONS, MAX_STEPS, SCENE_KEYS, STIFFNESS_RATIO_RANGE};
+pub use limits::{MAGNITUDE_RANGE, MAX_FRICTION, MAX_ITERATIONS, MAX_STEPS, STIFFNESS_RATIO_RANGE};
 pub(crate) use overrides::apply_override;
 pub(crate) use parse::parse_scene_toml;
 pub use parse::read_scene_text;

@@ -4,7 +4,7 @@
 //! ```text
 //! U  = max(|u|, |s_start|)           (displacement scale: the solution's displacements and the
 //!                                     relative slips the step started from; gaps excluded)
-//! F  = max(|λ|, |τ|, |w f|, k̄ U)     (force scale, force_scale)
+//! F  = max(|λ|, |τ|, |w f|, k̄ U)     (force scale, `force_scale` below)
 //! Fc = max λ  (F if no pair carries a load)        (contact-force scale)
 //!
 //! finite            every u, λ, τ, gap, slip and the dissipation finite

@@ -259,26 +259,21 @@ fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
 }
 
 #[cfg(test)]
+#[allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, dead_code)]
+#[path = "../tests/fixtures/two_blocks.rs"]
+mod blocks_fixture;
+
+#[cfg(test)]
 #[allow(clippy::unwrap_used)]
 mod tests {
+    use super::blocks_fixture::facing_blocks;
     use super::*;
 
-    use contact2d_element::{Material, PlaneCondition};
     use contact2d_mesh::CellKind;
-    use contact2d_mesh::generate::{append_prefixed, rectangle};
 
     /// Two blocks facing each other across a straight gap `g`, 5 and 7 cells along x.
     fn two_blocks(kind: CellKind, g: f64) -> (Model, Contour, Contour) {
-        let mut mesh = contact2d_mesh::Mesh::default();
-        append_prefixed(&mut mesh, &rectangle(kind, [0.0, 1.0], [-1.0, 0.0], 5, 1), "a_");
-        append_prefixed(&mut mesh, &rectangle(kind, [0.0, 1.0], [g, 1.0], 7, 1), "b_");
-        let mut model = Model::new(mesh);
-        let material = Material::new(1.0, 0.3, PlaneCondition::Strain).unwrap();
-        model.add_body("a_domain", material, 1.0).unwrap();
-        model.add_body("b_domain", material, 1.0).unwrap();
-        let master = Contour::from_group(&model.mesh, "b_bottom").unwrap();
-        let slave = Contour::from_group(&model.mesh, "a_top").unwrap();
-        (model, master, slave)
+        facing_blocks(kind, [0.0, 1.0], g, 5, 7, 1)
     }
 
     #[test]

@@ -199,25 +199,19 @@ fn winding_inside(polygon: &[[f64; 2]], x: [f64; 2]) -> bool {
 }
 
 #[cfg(test)]
+#[allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, dead_code)]
+#[path = "../tests/fixtures/two_blocks.rs"]
+mod blocks_fixture;
+
+#[cfg(test)]
 #[allow(clippy::unwrap_used)]
 mod tests {
+    use super::blocks_fixture::facing_blocks;
     use super::*;
-
-    use contact2d_element::{Material, PlaneCondition};
-    use contact2d_mesh::generate::{append_prefixed, rectangle};
 
     /// Block a = [0, 1] × [−1, 0] and block b = [0.5, 2] × [g, 1] (b's bottom runs past a's end).
     fn blocks(kind: CellKind, g: f64) -> (Model, Contour, Contour) {
-        let mut mesh = contact2d_mesh::Mesh::default();
-        append_prefixed(&mut mesh, &rectangle(kind, [0.0, 1.0], [-1.0, 0.0], 4, 2), "a_");
-        append_prefixed(&mut mesh, &rectangle(kind, [0.5, 2.0], [g, 1.0], 6, 2), "b_");
-        let mut model = Model::new(mesh);
-        let material = Material::new(1.0, 0.3, PlaneCondition::Strain).unwrap();
-        model.add_body("a_domain", material, 1.0).unwrap();
-        model.add_body("b_domain", material, 1.0).unwrap();
-        let master = Contour::from_group(&model.mesh, "b_bottom").unwrap();
-        let slave = Contour::from_group(&model.mesh, "a_top").unwrap();
-        (model, master, slave)
+        facing_blocks(kind, [0.5, 2.0], g, 4, 6, 2)
     }
 
     #[test]

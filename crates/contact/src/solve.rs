@@ -280,10 +280,15 @@ pub fn solve_keeping(
     let mut interface = Interface::new(&loaded);
     let condense_time = clock.elapsed();
     let modes = RigidModes::of(problem);
-    let order = boussinesq_order(&loaded, &interface);
-    if settings.algorithm == ContactAlgorithm::Boussinesq {
-        boussinesq_applies(&loaded, &interface, &order, &modes)?;
-    }
+    // Only the Boussinesq algorithm grows its zone along an order of the pairs.
+    let order = if settings.algorithm == ContactAlgorithm::Boussinesq {
+        let open: Vec<f64> = (0..loaded.num_pairs()).map(|k| loaded.gap[k] + interface.h_normal[k]).collect();
+        let order = boussinesq_order(&loaded, &open);
+        boussinesq_applies(&order, &open, &modes)?;
+        order
+    } else {
+        vec![]
+    };
     let mut alpha = vec![0.0; modes.len()];
     let zeros = vec![0.0; problem.patterns().len()];
     // (iterations, residual) of the floating bodies' proximal iteration, per step.
@@ -493,12 +498,8 @@ fn not_boussinesq(reason: String) -> ContactError {
 /// is where the gap under the first load without contact forces, `g + B_N u₀`, is least; an
 /// interior least value below the starting end's by more than 1e-9 of the gaps' spread (round-off)
 /// is inside.
-fn boussinesq_applies(
-    problem: &ContactProblem,
-    interface: &Interface,
-    order: &[usize],
-    modes: &RigidModes,
-) -> Result<(), ContactError> {
+/// `open` holds each pair's gap under the first load without contact forces.
+fn boussinesq_applies(order: &[usize], open: &[f64], modes: &RigidModes) -> Result<(), ContactError> {
     if !modes.is_empty() {
         return Err(not_boussinesq(
             "a body is held only by contact, so it moves as a rigid body until its contact closes; use the \
@@ -506,7 +507,7 @@ fn boussinesq_applies(
                 .into(),
         ));
     }
-    let loaded: Vec<f64> = order.iter().map(|&k| problem.gap[k] + interface.h_normal[k]).collect();
+    let loaded: Vec<f64> = order.iter().map(|&k| open[k]).collect();
     let (Some(&start), Some(&last)) = (loaded.first(), loaded.last()) else { return Ok(()) };
     let spread = loaded.iter().fold(0.0f64, |m, g| m.max((g - start).abs()));
     let (inside, least) = loaded.iter().enumerate().fold((0, start), |a, (i, &g)| if g < a.1 { (i, g) } else { a });
@@ -525,15 +526,14 @@ fn boussinesq_applies(
 /// master curve, from the end where the bodies meet first — the end whose gap under the first
 /// step's load without contact forces, `g + B_N u₀`, is smaller. (The initial gaps alone cannot
 /// tell the ends of a neat fit apart: they are all zero, and only the load says which end
-/// closes.)
-fn boussinesq_order(problem: &ContactProblem, interface: &Interface) -> Vec<usize> {
+/// closes.) `open` holds each pair's `g + B_N u₀`.
+fn boussinesq_order(problem: &ContactProblem, open: &[f64]) -> Vec<usize> {
     let mut order: Vec<usize> = (0..problem.num_pairs()).collect();
     order.sort_by(|a, b| {
         problem.pairs[*a].master_arc_length.total_cmp(&problem.pairs[*b].master_arc_length).then(a.cmp(b))
     });
-    let loaded_gap = |k: usize| problem.gap[k] + interface.h_normal[k];
     if let (Some(&first), Some(&last)) = (order.first(), order.last())
-        && loaded_gap(last) < loaded_gap(first)
+        && open[last] < open[first]
     {
         order.reverse();
     }
