@@ -13,6 +13,12 @@
 #[cfg(test)]
 extern crate self as contact2d_contact;
 
+/// The contact crate's test problems, shared by its unit tests and its integration tests.
+#[cfg(test)]
+#[allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, dead_code)]
+#[path = "../tests/fixtures/two_blocks.rs"]
+mod test_fixtures;
+
 pub mod algorithms;
 pub mod builder;
 pub mod certify;

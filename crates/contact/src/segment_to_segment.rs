@@ -259,15 +259,10 @@ fn quadratic_roots(a: f64, b: f64, c: f64) -> Vec<f64> {
 }
 
 #[cfg(test)]
-#[allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, dead_code)]
-#[path = "../tests/fixtures/two_blocks.rs"]
-mod blocks_fixture;
-
-#[cfg(test)]
 #[allow(clippy::unwrap_used)]
 mod tests {
-    use super::blocks_fixture::facing_blocks;
     use super::*;
+    use crate::test_fixtures::facing_blocks;
 
     use contact2d_mesh::CellKind;
 

@@ -199,15 +199,10 @@ fn winding_inside(polygon: &[[f64; 2]], x: [f64; 2]) -> bool {
 }
 
 #[cfg(test)]
-#[allow(clippy::unwrap_used, clippy::expect_used, clippy::panic, dead_code)]
-#[path = "../tests/fixtures/two_blocks.rs"]
-mod blocks_fixture;
-
-#[cfg(test)]
 #[allow(clippy::unwrap_used)]
 mod tests {
-    use super::blocks_fixture::facing_blocks;
     use super::*;
+    use crate::test_fixtures::facing_blocks;
 
     /// Block a = [0, 1] × [−1, 0] and block b = [0.5, 2] × [g, 1] (b's bottom runs past a's end).
     fn blocks(kind: CellKind, g: f64) -> (Model, Contour, Contour) {

@@ -242,11 +242,6 @@ pub(crate) fn combine(x: &DMatrix<f64>, w: f64) -> (Vec<f64>, Vec<f64>) {
 }
 
 #[cfg(test)]
-#[allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
-#[path = "../../tests/fixtures/two_blocks.rs"]
-mod two_blocks_fixture;
-
-#[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
     use contact2d_mesh::CellKind;
@@ -269,7 +264,7 @@ mod tests {
             slip in -1e-3..1e-3f64,
             nb in 3usize..7,
         ) {
-            let mut problem = super::two_blocks_fixture::two_blocks(CellKind::Quad9, 0.0, 0.004, 2.0, 0.05, 5, nb);
+            let mut problem = crate::test_fixtures::two_blocks(CellKind::Quad9, 0.0, 0.004, 2.0, 0.05, 5, nb);
             problem.set_friction(mu).unwrap();
             let interface = Interface::new(&problem);
             let m = problem.num_pairs();
