@@ -11,8 +11,8 @@
 //! Non-dimensional: E1 = 1, lengths by R, the load factor w multiplies the pulled-edge value 1.
 
 use contact2d_contact::{
-    ContactError, ContactProblem, HistoryStep, LoadSchedule, SolverSettings, node_to_node_targets, pair_contours,
-    solve_with,
+    BuiltProblem, ContactError, ContactProblem, HistoryStep, LoadSchedule, SolverSettings, node_to_node_targets,
+    pair_contours, solve_with,
 };
 use contact2d_element::{Formulation, Material, PlaneCondition};
 use contact2d_fem::{Component, Model};
@@ -111,11 +111,14 @@ pub enum PairDiscretisation {
     NodeToNode,
 }
 
-/// The problem plus the master contour (for η and stresses along it).
+/// The built problem plus the paper's contours (for η and stresses along them). It reads as
+/// the [`BuiltProblem`] it holds (`case.problem`, `case.interfaces`): the generic results and
+/// writers take it as they take any scene's.
 #[derive(Debug, Clone)]
 pub struct PlateInsertProblem {
-    /// The contact problem (unit load pattern u1 = 1 on `right`).
-    pub problem: ContactProblem,
+    /// The contact problem (unit load pattern u1 = 1 on `right`) and its one interface
+    /// ([`preset::INTERFACE`]).
+    pub built: BuiltProblem,
     /// The hole edge, ordered from φ = 0 to φ = π.
     pub hole: Contour,
     /// The insert edge, ordered likewise.
@@ -210,7 +213,9 @@ impl PlateInsert {
         };
         problem.set_gaps(self.gaps(&problem)?)?;
         problem.set_friction(self.friction)?;
-        Ok(PlateInsertProblem { problem, hole, insert: insert_edge, variant: self.variant, eps: self.eps })
+        let interfaces = vec![self.interface_info(&problem, &hole, &insert_edge)];
+        let built = BuiltProblem { problem, interfaces };
+        Ok(PlateInsertProblem { built, hole, insert: insert_edge, variant: self.variant, eps: self.eps })
     }
 
     /// New positions of the placed master corners (on the master circle) and of the mid nodes
@@ -357,6 +362,14 @@ fn angle(x: [f64; 2]) -> f64 {
 /// Polar angle about the point (`centre`, 0).
 fn polar_angle(x: [f64; 2], centre: f64) -> f64 {
     x[1].atan2(x[0] - centre)
+}
+
+impl std::ops::Deref for PlateInsertProblem {
+    type Target = BuiltProblem;
+
+    fn deref(&self) -> &BuiltProblem {
+        &self.built
+    }
 }
 
 impl PlateInsertProblem {

@@ -13,67 +13,123 @@
 //! gaps      geometric × c/ε, or the paper's u_ρc / u_rc ([`GapModel`])
 //! ```
 
-use contact2d_contact::{
-    BodyDescription, ContactDescription, ContactError, FixDescription, GapDescription, Pairing, ProblemDescription,
-};
-use contact2d_fem::Component;
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+
+use contact2d_contact::{BuiltProblem, ContactError, InterfaceInfo, ProblemDescription, builder::DEFAULT_PATTERN};
+use contact2d_element::{Formulation, PlaneCondition};
 use contact2d_mesh::{Contour, Mesh};
 
 use super::{PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem};
+use crate::generic::scene::{
+    BodyEntry, ContactEntry, FixEntry, FormulationKey, GapKey, GenericScene, LoadingSection, PairingKey, PlaneKey,
+};
+use crate::scene::SolverEntry;
 
 /// The name of the preset's one contact interface.
 pub const INTERFACE: &str = "hole";
 
 impl PlateInsert {
-    /// The generic description of the case on `mesh` (see the module docs).
-    pub fn description(&self, mesh: Mesh) -> ProblemDescription {
-        let body = |region: &str, youngs_modulus: f64| BodyDescription {
+    /// The case as a generic scene named `name` (see the module docs): the load w of each step
+    /// in `loads` is the factor of the pattern `main`, whose one value is u1 = 1 on `right`.
+    pub fn generic_scene(&self, name: &str, loads: &[f64], solver: &SolverEntry) -> GenericScene {
+        let body = |region: &str, youngs_modulus: f64| BodyEntry {
             region: region.into(),
             youngs_modulus,
             poissons_ratio: self.poissons_ratio,
-            plane: self.plane,
+            plane: None,
             thickness: 1.0,
-            formulation: self.formulation,
+            formulation: match self.formulation {
+                Formulation::BBar => FormulationKey::Bbar,
+                _ => FormulationKey::Standard,
+            },
         };
-        let fix = |group: &str, component: Component, value: f64| FixDescription {
+        let fix = |group: &str, u1: Option<f64>, u2: Option<f64>| FixEntry {
             group: group.into(),
-            component,
-            value,
-            pattern: contact2d_contact::builder::DEFAULT_PATTERN.into(),
+            u1,
+            u2,
+            pattern: DEFAULT_PATTERN.into(),
         };
         let mut bodies = vec![body("plate", 1.0)];
-        let mut fixes = vec![
-            fix("top", Component::Y, 0.0),
-            fix("bottom_plate", Component::Y, 0.0),
-            fix("right", Component::Y, 0.0),
-            fix("right", Component::X, 1.0),
-        ];
+        let mut fixes =
+            vec![fix("top", None, Some(0.0)), fix("bottom_plate", None, Some(0.0)), fix("right", Some(1.0), Some(0.0))];
         if !self.rigid_insert {
             bodies.push(body("insert", self.stiffness_ratio));
-            fixes.extend([
-                fix("insert_inner", Component::X, 0.0),
-                fix("insert_inner", Component::Y, 0.0),
-                fix("insert_symmetry", Component::Y, 0.0),
-            ]);
+            fixes.extend([fix("insert_inner", Some(0.0), Some(0.0)), fix("insert_symmetry", None, Some(0.0))]);
         }
-        let (master, slave) = match self.variant {
-            PairingVariant::HoleMaster => ("hole_edge", "insert_edge"),
-            PairingVariant::InsertMaster => ("insert_edge", "hole_edge"),
-        };
-        let contact = ContactDescription {
+        let (master, slave) = self.curves();
+        let contact = ContactEntry {
             name: INTERFACE.into(),
             master: master.into(),
             slave: slave.into(),
-            rigid_slave: self.rigid_insert,
+            rigid: self.rigid_insert,
             pairing: match self.pairs {
-                PairDiscretisation::NodeToNode => Pairing::NodeToNode,
-                PairDiscretisation::NodeToSegment => Pairing::NodeToSegment,
+                PairDiscretisation::NodeToNode => PairingKey::NodeToNode,
+                PairDiscretisation::NodeToSegment => PairingKey::NodeToSegment,
             },
-            gap: GapDescription::Geometric,
+            gap: GapKey::Named("geometric".into()),
             friction: self.friction,
             self_contact: false,
         };
-        ProblemDescription { mesh, bodies, fixes, loads: vec![], contacts: vec![contact] }
+        let schedule = loads.iter().map(|w| BTreeMap::from([(DEFAULT_PATTERN.to_string(), *w)])).collect();
+        GenericScene {
+            name: name.into(),
+            description: String::new(),
+            mesh: PathBuf::from(&self.mesh),
+            plane: match self.plane {
+                PlaneCondition::Strain => PlaneKey::Strain,
+                _ => PlaneKey::Stress,
+            },
+            body: bodies,
+            fix: fixes,
+            load: vec![],
+            contact: vec![contact],
+            loading: LoadingSection { steps: None, schedule: Some(schedule) },
+            solver: SolverEntry { place_zone_ends: None, ..solver.clone() },
+            base_dir: PathBuf::new(),
+            file: PathBuf::from(&self.mesh),
+        }
+    }
+
+    /// The generic description of the case on `mesh`: that of [`PlateInsert::generic_scene`].
+    pub fn description(&self, mesh: Mesh) -> ProblemDescription {
+        self.generic_scene("plate_insert", &[1.0], &SolverEntry::default()).description(mesh)
+    }
+
+    /// The master and slave curves (groups) of the pairing variant.
+    fn curves(&self) -> (&'static str, &'static str) {
+        match self.variant {
+            PairingVariant::HoleMaster => ("hole_edge", "insert_edge"),
+            PairingVariant::InsertMaster => ("insert_edge", "hole_edge"),
+        }
+    }
+
+    /// The interface of a problem built by the paper's own code (placed nodes), as the library's
+    /// builder describes it: every pair, in order along the master curve.
+    pub(super) fn interface_info(
+        &self,
+        problem: &contact2d_contact::ContactProblem,
+        hole: &Contour,
+        insert: &Contour,
+    ) -> InterfaceInfo {
+        let (master, slave) = self.curves();
+        let (master_contour, slave_contour) = match self.variant {
+            PairingVariant::HoleMaster => (hole.clone(), insert.clone()),
+            PairingVariant::InsertMaster => (insert.clone(), hole.clone()),
+        };
+        let region = |curve: &str| if curve == "hole_edge" { "plate" } else { "insert" };
+        InterfaceInfo {
+            name: INTERFACE.into(),
+            pairs: 0..problem.num_pairs(),
+            master: master.into(),
+            slave: slave.into(),
+            master_region: region(master).into(),
+            slave_region: region(slave).into(),
+            rigid_slave: self.rigid_insert,
+            master_contour,
+            slave_contour,
+            friction: self.friction,
+        }
     }
 
     /// The case built through the generic description ([`PlateInsert::description`]), the
@@ -82,11 +138,11 @@ impl PlateInsert {
     /// # Errors
     /// Those of [`ProblemDescription::build`], and a clearance the mesh has no room for.
     pub fn build_preset(&self, mesh: Mesh) -> Result<PlateInsertProblem, ContactError> {
-        let mut problem = self.description(mesh).build()?.problem;
-        problem.set_gaps(self.gaps(&problem)?)?;
-        let hole = Contour::from_group(&problem.model.mesh, "hole_edge")?;
-        let insert = Contour::from_group(&problem.model.mesh, "insert_edge")?;
-        Ok(PlateInsertProblem { problem, hole, insert, variant: self.variant, eps: self.eps })
+        let mut built: BuiltProblem = self.description(mesh).build()?;
+        built.problem.set_gaps(self.gaps(&built.problem)?)?;
+        let hole = Contour::from_group(&built.problem.model.mesh, "hole_edge")?;
+        let insert = Contour::from_group(&built.problem.model.mesh, "insert_edge")?;
+        Ok(PlateInsertProblem { built, hole, insert, variant: self.variant, eps: self.eps })
     }
 }
 
@@ -127,6 +183,7 @@ mod tests {
             let read = || contact2d_mesh::read_msh(&case.mesh).unwrap();
             let (preset, own) = (case.build_preset(read()).unwrap(), case.build_reusing(read(), None).unwrap());
             let (p, o) = (&preset.problem, &own.problem);
+            assert_eq!(preset.interfaces[0].pairs, own.interfaces[0].pairs, "{case:?}");
             assert_eq!(p.num_pairs(), o.num_pairs(), "{case:?}");
             assert_eq!((&p.gap, &p.friction), (&o.gap, &o.friction), "{case:?}");
             let load = [0.3];
