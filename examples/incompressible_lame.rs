@@ -16,7 +16,7 @@ use std::path::Path;
 use contact2d::doc_sections::publish_section;
 use contact2d::element::{Formulation, LOCKING_POISSON_THRESHOLD, PlaneCondition};
 use contact2d::mesh::CellKind;
-use contact2d::run::run_scene;
+use contact2d::run::solve_scene;
 use contact2d::scene::Scene;
 use contact2d_verification::lame::{LameLevel, LameSetup, lame_study, standard_levels};
 
@@ -66,8 +66,8 @@ fn flagship_k(scene: &str, nu: f64, formulation: &str) -> Result<(f64, bool), Bo
             format!("plate_insert.formulation=\"{formulation}\""),
         ],
     )?;
-    let report = run_scene(&scene)?;
-    Ok((report.K, report.notes.iter().any(|n| n.contains("lock"))))
+    let outcome = solve_scene(&scene)?;
+    Ok((outcome.paper.K, outcome.report.notes.iter().any(|n| n.contains("lock"))))
 }
 
 fn flagship_table(out: &mut String) -> Result<(), Box<dyn std::error::Error>> {

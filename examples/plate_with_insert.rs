@@ -19,11 +19,12 @@ use rayon::prelude::*;
 
 use contact2d::output::write_outputs;
 use contact2d::plate_insert::published::{PUBLISHED, PublishedCase};
-use contact2d::run::{RunOutcome, RunReport, solve_scene};
+use contact2d::plate_insert::report::PaperReport;
+use contact2d::run::{RunOutcome, solve_scene};
 use contact2d::scene::Scene;
 
 /// The measured value of a published quantity (names as in [`PublishedCase::quantities`]).
-fn measured(r: &RunReport, name: &str) -> Option<f64> {
+fn measured(r: &PaperReport, name: &str) -> Option<f64> {
     match name {
         "l" => r.l,
         "b" => r.b,
@@ -44,7 +45,7 @@ fn sig(v: f64) -> String {
 }
 
 /// What one case gives: the scene, its run, the paper's algorithm's report, the output folder.
-type Solved = (Scene, RunOutcome, RunReport, PathBuf);
+type Solved = (Scene, RunOutcome, RunOutcome, PathBuf);
 
 /// Solves one case with the scene's algorithm (writing its outputs) and with the Boussinesq
 /// algorithm with placed zone ends.
@@ -55,7 +56,7 @@ fn solve(case: &PublishedCase, out: &Path) -> Result<Solved, Box<dyn std::error:
     let dir = out.join(case.scene);
     write_outputs(&dir, &scene, &outcome)?;
     let paper = Scene::load(&path, &["solver.algorithm=boussinesq".into()])?;
-    let boussinesq = solve_scene(&paper)?.report;
+    let boussinesq = solve_scene(&paper)?;
     Ok((scene, outcome, boussinesq, dir))
 }
 
@@ -69,7 +70,12 @@ fn main() -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
         println!("  {}", scene.description);
         println!(
             "  active set: {} after {} iterations, {:.2} s;  Boussinesq (placed l*, b*): {} after {} meshes, {:.2} s",
-            r.status, r.iterations, r.time_s, boussinesq.status, boussinesq.iterations, boussinesq.time_s
+            r.status,
+            r.iterations,
+            r.time_s.total,
+            boussinesq.report.status,
+            boussinesq.report.iterations,
+            boussinesq.report.time_s.total
         );
         println!(
             "  {:<8} {:>12} {:>10} {:>12} {:>10} {:>12}",
@@ -83,10 +89,10 @@ fn main() -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
             }
         };
         for (name, published) in case.quantities() {
-            let cell = |report: &RunReport| {
+            let cell = |report: &PaperReport| {
                 measured(report, name).map_or(("-".to_string(), "-".to_string()), |m| (sig(m), diff(m, published)))
             };
-            let ((a, da), (b, db)) = (cell(r), cell(&boussinesq));
+            let ((a, da), (b, db)) = (cell(&outcome.paper), cell(&boussinesq.paper));
             println!("  {name:<8} {a:>12} {da:>10} {b:>12} {db:>10} {:>12}", sig(published));
         }
         println!("  figures, CSV and VTU files in {}/", dir.display());

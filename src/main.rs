@@ -6,7 +6,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 mod text_summary;
-use text_summary::{print_generic, print_report};
+use text_summary::print_summary;
 
 /// 2D finite-element contact mechanics with Coulomb friction.
 #[derive(Debug, Parser)]
@@ -209,7 +209,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             if json {
                 writeln!(stdout, "{}", serde_json::to_string_pretty(report)?)?;
             } else {
-                print_report(&mut stdout, report)?;
+                print_summary(&mut stdout, report, Some(&outcome.paper))?;
             }
             if let Some(folder) = folder {
                 let written = contact2d::output::write_outputs_into(folder, &scene, &outcome)?;
@@ -305,7 +305,7 @@ fn run_generic(
         serde_json::to_writer_pretty(&mut stdout, report).map_err(std::io::Error::from)?;
         writeln!(stdout)?;
     } else {
-        print_generic(&mut stdout, report)?;
+        print_summary(&mut stdout, report, None)?;
     }
     if let Some(folder) = folder {
         let written = contact2d::generic::outputs::finish_generic_outputs(folder, &outcome)?;

@@ -22,7 +22,7 @@ use std::path::{Path, PathBuf};
 use contact2d_contact::{ContactError, Pairing};
 use serde_json::Value;
 
-use crate::generic::{GenericError, GenericScene, solve_generic_until};
+use crate::generic::{GenericError, GenericReport, GenericScene, solve_generic_until};
 use crate::plate_insert::published::published_case;
 use crate::run::solve_scene;
 use crate::scene::{Scene, SceneError, read_scene_text};
@@ -211,17 +211,7 @@ impl Subject {
         let timed_out = |e: &ContactError| matches!(e, ContactError::DeadlineExceeded { .. });
         match self {
             Subject::Generic(scene) => match solve_generic_until(scene, deadline, &mut |_, _| {}) {
-                Ok(outcome) => {
-                    let r = &outcome.report;
-                    Ok(RunSummary {
-                        json: serde_json::to_value(r).unwrap_or(Value::Null),
-                        times: (r.time_s.total, r.time_s.solve),
-                        status: (r.status.to_string(), r.failed_check.clone()),
-                        iterations: r.iterations,
-                        pairs: r.pairs,
-                        kkt: [r.kkt.max_penetration, r.kkt.max_complementarity, r.kkt.max_cone_violation],
-                    })
-                }
+                Ok(outcome) => Ok(RunSummary::of(&outcome.report)),
                 Err(GenericError::Contact { source, .. }) if timed_out(&source) => {
                     Err(RunFailure::TimedOut(source.to_string()))
                 }
@@ -230,17 +220,7 @@ impl Subject {
             Subject::Paper(scene) => {
                 let scene = Scene { deadline, ..(**scene).clone() };
                 match solve_scene(&scene) {
-                    Ok(outcome) => {
-                        let r = &outcome.report;
-                        Ok(RunSummary {
-                            json: serde_json::to_value(r).unwrap_or(Value::Null),
-                            times: (r.time_s, r.solve_time_s),
-                            status: (r.status.clone(), r.failed_check.clone()),
-                            iterations: r.iterations,
-                            pairs: r.pairs,
-                            kkt: [r.kkt.max_penetration, r.kkt.max_complementarity, r.kkt.max_cone_violation],
-                        })
-                    }
+                    Ok(outcome) => Ok(RunSummary::of(&outcome.report)),
                     Err(e) if timed_out(&e) => Err(RunFailure::TimedOut(e.to_string())),
                     Err(e) => Err(RunFailure::Failed(e.to_string())),
                 }
@@ -249,13 +229,33 @@ impl Subject {
     }
 }
 
+impl RunSummary {
+    /// What a study reads of a run's summary (the one JSON contract of every scene).
+    fn of(r: &GenericReport) -> RunSummary {
+        RunSummary {
+            json: serde_json::to_value(r).unwrap_or(Value::Null),
+            times: (r.time_s.total, r.time_s.solve),
+            status: (r.status.to_string(), r.failed_check.clone()),
+            iterations: r.iterations,
+            pairs: r.pairs,
+            kkt: [r.kkt.max_penetration, r.kkt.max_complementarity, r.kkt.max_cone_violation],
+        }
+    }
+}
+
 /// The number at a dotted path of a JSON summary (`contacts.hertz.normal_force`,
-/// `reactions.block_bottom.1`, `P`), or `energy`: the sum of the bodies' strain energies; `None`
-/// if there is none.
+/// `reactions.block_bottom.1`, `paper.P`), or `energy`: the sum of the bodies' strain energies;
+/// `None` if there is none. A path that names nothing at the top level is looked up in the
+/// preset's block, so the paper's quantities keep their names (`P` is `paper.P`).
 pub fn quantity(summary: &Value, path: &str) -> Option<f64> {
     if path == "energy" {
         return summary.get("energies")?.as_object().map(|m| m.values().filter_map(Value::as_f64).sum());
     }
+    at_path(summary, path).or_else(|| at_path(summary.get(crate::plate_insert::report::BLOCK)?, path))
+}
+
+/// The number at a dotted path.
+fn at_path(summary: &Value, path: &str) -> Option<f64> {
     path.split('.')
         .try_fold(summary, |v, part| match v {
             Value::Array(items) => part.parse::<usize>().ok().and_then(|i| items.get(i)),
@@ -280,5 +280,8 @@ mod tests {
         assert_eq!(quantity(&json, "reactions.b.1"), Some(-3.0));
         assert_eq!(quantity(&json, "reactions.b.2"), None);
         assert_eq!(quantity(&json, "contacts.nope"), None);
+        let paper: Value = serde_json::json!({"status": "converged", "paper": {"P": 0.2, "steps": [{"l": 0.4}]}});
+        assert_eq!(quantity(&paper, "P"), Some(0.2));
+        assert_eq!(quantity(&paper, "paper.steps.0.l"), Some(0.4));
     }
 }

@@ -1,6 +1,9 @@
-//! The text summaries `run` prints: a generic scene's and a flagship scene's.
+//! The text summary `run` prints: every scene's, with the paper's quantities first for a
+//! plate-insert scene.
 
 use std::io::Write;
+
+use contact2d::plate_insert::report::PaperReport;
 
 /// The first line of a run's text report.
 fn heading(
@@ -17,9 +20,16 @@ fn heading(
     )
 }
 
-/// A generic scene's text report.
-pub(crate) fn print_generic(out: &mut impl Write, r: &contact2d::generic::GenericReport) -> std::io::Result<()> {
+/// A run's text report (`paper`: the plate-insert preset's quantities).
+pub(crate) fn print_summary(
+    out: &mut impl Write,
+    r: &contact2d::generic::GenericReport,
+    paper: Option<&PaperReport>,
+) -> std::io::Result<()> {
     heading(out, &r.scene, (r.dofs, r.pairs), &format!("{:?}", r.algorithm), r.status, (r.iterations, r.steps.len()))?;
+    if let Some(paper) = paper {
+        print_paper(out, paper)?;
+    }
     for (name, c) in &r.contacts {
         writeln!(
             out,
@@ -62,10 +72,9 @@ pub(crate) fn print_generic(out: &mut impl Write, r: &contact2d::generic::Generi
     Ok(())
 }
 
-/// A flagship scene's text report.
-pub(crate) fn print_report(out: &mut impl Write, r: &contact2d::run::RunReport) -> std::io::Result<()> {
+/// The paper's quantities.
+fn print_paper(out: &mut impl Write, r: &PaperReport) -> std::io::Result<()> {
     let opt = |v: Option<f64>| v.map_or("-".to_string(), |x| format!("{x:.4}"));
-    heading(out, &r.scene, (r.dofs, r.pairs), &format!("{:?}", r.algorithm), &r.status, (r.iterations, r.steps.len()))?;
     writeln!(out, "  w      = {}   mu = {}", r.w, r.mu)?;
     // Where a zone end sits: a node placed there, or between two nodes (then interpolated).
     let bracket = |b: Option<[f64; 2]>| match b {
@@ -78,19 +87,6 @@ pub(crate) fn print_report(out: &mut impl Write, r: &contact2d::run::RunReport) 
     writeln!(out, "  P      = {:.5}   W = {:.6}", r.P, r.W)?;
     writeln!(out, "  Phi_E1 = {:.6}   Phi_E2 = {:.6}   Phi_f = {:.6}", r.Phi_E1, r.Phi_E2, r.Phi_f)?;
     writeln!(out, "  sigma* = {:.4}   K = {:.3}", r.sigma_star, r.K)?;
-    writeln!(
-        out,
-        "  KKT: penetration {:.1e}, complementarity {:.1e}, cone {:.1e}, slip inside cone {:.1e}, min dissipation {:.1e}",
-        r.kkt.max_penetration,
-        r.kkt.max_complementarity,
-        r.kkt.max_cone_violation,
-        r.kkt.max_slip_inside_cone,
-        r.kkt.min_dissipation
-    )?;
-    writeln!(out, "  time {:.3} s (contact solve {:.4} s)", r.time_s, r.solve_time_s)?;
-    for note in &r.notes {
-        writeln!(out, "  note: {note}")?;
-    }
     for v in &r.violations {
         writeln!(out, "  violated at step {}, pair {} (η = {:.4}): {}", v.step, v.pair, v.eta, v.condition)?;
     }

@@ -27,7 +27,7 @@ fn the_flagship_in_the_generic_schema_gives_the_presets_numbers() {
     let preset = contact2d::run::solve_scene(&preset).unwrap();
     let generic = load_scene(Path::new("scenes/generic/plate_insert_nogap_mu03.toml"), &[]).unwrap();
     let generic = solve_generic(&generic, &mut |_, _| {}).unwrap();
-    let (r, g) = (&preset.report, &generic.report);
+    let (r, g) = (&preset.paper, &generic.report);
     assert_eq!(g.status, "converged");
     close(g.reactions["right"][0].unwrap(), r.P, "P");
     close(g.energies["plate"], r.Phi_E1, "Φ_E1");

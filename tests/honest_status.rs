@@ -28,8 +28,9 @@ fn run(settings: &[&str]) -> Value {
     serde_json::from_slice(&out.stdout).unwrap()
 }
 
+/// A paper quantity of the summary (under `paper`).
 fn number(v: &Value, key: &str) -> f64 {
-    v[key].as_f64().unwrap_or_else(|| panic!("{key} is not a number in {v}"))
+    v["paper"][key].as_f64().unwrap_or_else(|| panic!("{key} is not a number in {v}"))
 }
 
 #[test]

@@ -165,7 +165,11 @@ fn a_run_killed_at_any_moment_leaves_a_whole_folder_or_no_summary() {
             let header: Vec<&str> = steps.lines().next().unwrap().split(',').collect();
             let last: Vec<&str> = steps.lines().last().unwrap().split(',').collect();
             let p = last[header.iter().position(|h| *h == "P").unwrap()].parse::<f64>().unwrap();
-            assert_eq!(Some(p), summary["P"].as_f64(), "after {delay_ms} ms: steps.csv and summary.json agree");
+            assert_eq!(
+                Some(p),
+                summary["paper"]["P"].as_f64(),
+                "after {delay_ms} ms: steps.csv and summary.json agree"
+            );
         }
     }
     // The next run cleans up whatever a killed one left (stale lock, temporary files).

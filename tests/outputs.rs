@@ -85,7 +85,7 @@ fn check_folder(dir: &Path, steps: usize, mesh: &str) -> serde_json::Value {
     let (header, rows) = read_csv(&dir.join("steps.csv"));
     assert_eq!(rows.len(), steps);
     let p_csv = column(&header, &rows, "P");
-    assert_eq!(p_csv[steps - 1], summary["P"].as_f64());
+    assert_eq!(p_csv[steps - 1], summary["paper"]["P"].as_f64());
 
     // VTU files: read back with vtkio, one point per mesh node, Quad9 cells as biquadratic quads.
     let mesh_nodes = contact2d::mesh::read_msh(format!("meshes/plate_insert/{mesh}")).unwrap().num_nodes();
@@ -125,7 +125,7 @@ fn check_hole_edge_balance(dir: &Path, summary: &serde_json::Value) {
     let t1 = column(&header, &rows, "traction_x1");
     let w = column(&header, &rows, "weight");
     let resultant: f64 = t1.iter().zip(&w).map(|(t, w)| t.unwrap() * w.unwrap()).sum();
-    let pull = summary["P"].as_f64().unwrap();
+    let pull = summary["paper"]["P"].as_f64().unwrap();
     assert!(pull > 0.0);
     assert!((resultant + pull).abs() <= 1e-9 * pull, "Σ t1 w = {resultant:e}, P = {pull:e}");
     // Newton's third law: the insert edge carries the opposite forces, Σ traction_x1 · weight = +P

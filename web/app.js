@@ -264,7 +264,7 @@ function table(rows, published) {
 
 function drawFlagship(view) {
   drawMesh(view, [-2.5, 0, 5, 2.5]);
-  const s = view.summary, hole = view.hole;
+  const s = view.summary.paper, hole = view.hole, run = view.summary;
   chart($("profile"), {
     series: [
       { x: hole.eta, y: hole.p, colour: "#d62728", label: "p (hole edge)" },
@@ -280,7 +280,7 @@ function drawFlagship(view) {
     ["contact end l", "l", s.l], ["stick end b", "b", s.b], ["pulling force P", "P", s.P],
     ["Φ_E1 (plate)", "Phi_E1", s.Phi_E1], ["Φ_E2 (insert)", "Phi_E2", s.Phi_E2], ["Φ_f (dissipated)", "Phi_f", s.Phi_f],
     ["σ* (max hoop)", "sigma_star", s.sigma_star], ["K = H σ*/P", "K", s.K],
-    ["status", "status", s.status], ["iterations", "iterations", s.iterations], ["pairs", "pairs", s.pairs],
+    ["status", "status", run.status], ["iterations", "iterations", run.iterations], ["pairs", "pairs", run.pairs],
   ], view.published);
   drawHistory();
 }
@@ -308,7 +308,7 @@ async function runHistory() {
     try {
       const view = SCENES.flagship.solve(p);
       const t1 = performance.now();
-      state.history.push({ w: p.load, l: view.summary.l, b: view.summary.b });
+      state.history.push({ w: p.load, l: view.summary.paper.l, b: view.summary.paper.b });
       drawFlagship(view);
       page.timings.push({ scene: "history", solve_ms: t1 - t0, total_ms: performance.now() - t0 });
       $("timing").textContent = `history step ${k}/${K} (w = ${p.load}): ${(t1 - t0).toFixed(1)} ms`;

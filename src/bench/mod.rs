@@ -6,7 +6,7 @@
 //!   for N in levels (the bundled Quad9 meshes *_N16/32/64/128.msh; Q9 is the only element type
 //!                    the plate-with-insert meshes exist for)
 //!     for algorithm in {boussinesq, active_set, clarabel}
-//!       run_scene(scene with the level's mesh and the algorithm) `repeats` times
+//!       solve_scene(scene with the level's mesh and the algorithm) `repeats` times
 //!       → median, min, max of the wall time; P, Φ_E = Φ_E1 + Φ_E2, l, b, σ*
 //! reference per case and quantity: Richardson extrapolation from the three finest levels
 //!   (see [`reference`]); error = |q − q_ref| / |q_ref|
@@ -26,7 +26,7 @@ use std::time::Instant;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use crate::output::OutputDir;
-use crate::run::run_scene;
+use crate::run::{RunOutcome, solve_scene};
 use contact2d_contact::ContactAlgorithm;
 
 use crate::scene::{Scene, SceneError};
@@ -449,20 +449,20 @@ fn measure(
     let scene = Scene::load(path, &overrides)?;
     let budget = Instant::now();
     for _ in 0..config.repeats {
-        match run_scene(&scene) {
-            Ok(r) => {
+        match solve_scene(&scene) {
+            Ok(RunOutcome { report: r, paper: q, .. }) => {
                 m.dofs = r.dofs;
                 m.pairs = r.pairs;
-                m.status.clone_from(&r.status);
+                m.status = r.status.into();
                 m.iterations = r.iterations;
-                m.times.push(r.time_s);
-                m.solve_times.push(r.solve_time_s);
+                m.times.push(r.time_s.total);
+                m.solve_times.push(r.time_s.solve);
                 m.values = Some(Values {
-                    pull: r.P,
-                    energy: r.Phi_E1 + r.Phi_E2,
-                    contact_end: r.l,
-                    stick_end: r.b,
-                    sigma_star: r.sigma_star,
+                    pull: q.P,
+                    energy: q.Phi_E1 + q.Phi_E2,
+                    contact_end: q.l,
+                    stick_end: q.b,
+                    sigma_star: q.sigma_star,
                 });
             }
             Err(e) => {

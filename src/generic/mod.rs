@@ -150,6 +150,10 @@ pub struct GenericReport {
     pub time_s: Times,
     /// What a user should know about how the numbers were obtained.
     pub notes: Vec<String>,
+    /// The blocks of the scene's preset, by name (`paper`: the plate-insert preset's quantities,
+    /// `crate::plate_insert::report`); none for a plain generic scene.
+    #[serde(flatten)]
+    pub post: BTreeMap<String, serde_json::Value>,
 }
 
 impl GenericReport {
@@ -175,6 +179,7 @@ impl GenericReport {
             groups: self.groups.clone(),
             time_s: self.time_s,
             notes: self.notes.clone(),
+            post: self.post.clone(),
         }
     }
 }
@@ -226,7 +231,14 @@ pub fn solve_generic_streaming(
 ) -> Result<GenericOutcome, GenericError> {
     let clock = Instant::now();
     let mesh = read_scene_mesh(scene)?;
-    solve_generic_from(scene, mesh, clock, None, Stream { retention: Retention::Last, on_step, on_solved })
+    solve_generic_from(
+        scene,
+        mesh,
+        clock,
+        None,
+        Stream { retention: Retention::Last, on_step, on_solved },
+        &as_described,
+    )
 }
 
 /// [`solve_generic`] with a wall-clock deadline checked before each load step
@@ -243,7 +255,7 @@ pub fn solve_generic_until(
     let clock = Instant::now();
     let mesh = read_scene_mesh(scene)?;
     let stream = Stream { retention: Retention::All, on_step, on_solved: &mut |_, _, _| {} };
-    solve_generic_from(scene, mesh, clock, deadline, stream)
+    solve_generic_from(scene, mesh, clock, deadline, stream, &as_described)
 }
 
 /// The scene's mesh file, checked and read.
@@ -271,7 +283,34 @@ pub fn solve_generic_on_mesh(
     on_step: &mut dyn FnMut(usize, usize),
 ) -> Result<GenericOutcome, GenericError> {
     let stream = Stream { retention: Retention::All, on_step, on_solved: &mut |_, _, _| {} };
-    solve_generic_from(scene, mesh, Instant::now(), None, stream)
+    solve_generic_from(scene, mesh, Instant::now(), None, stream, &as_described)
+}
+
+/// What a preset sets on the built problem that no scene key describes (the plate-insert
+/// preset's gap model); nothing for a plain generic scene.
+pub type Adjust<'a> = &'a dyn Fn(&mut BuiltProblem) -> Result<(), ContactError>;
+
+/// Leaves the built problem as the scene describes it.
+fn as_described(_: &mut BuiltProblem) -> Result<(), ContactError> {
+    Ok(())
+}
+
+/// [`solve_generic`] of a preset's expansion on a mesh already read (`clock` started before
+/// reading): `adjust` sets what the scene
+/// keys do not describe on the built problem before solving; every step is kept.
+///
+/// # Errors
+/// [`GenericError`] naming the scene and mesh.
+pub fn solve_preset(
+    scene: &GenericScene,
+    mesh: contact2d_mesh::Mesh,
+    clock: Instant,
+    deadline: Option<Instant>,
+    adjust: Adjust<'_>,
+    on_step: &mut dyn FnMut(usize, usize),
+) -> Result<GenericOutcome, GenericError> {
+    let stream = Stream { retention: Retention::All, on_step, on_solved: &mut |_, _, _| {} };
+    solve_generic_from(scene, mesh, clock, deadline, stream, adjust)
 }
 
 /// What a solve does with each step as it is solved, and which steps its history keeps.
@@ -281,62 +320,71 @@ struct Stream<'a> {
     on_solved: &'a mut dyn FnMut(&BuiltProblem, usize, &SolvedStep),
 }
 
-/// The solve of [`solve_generic`] once the mesh is read (`clock` started before reading).
-fn solve_generic_from(
-    scene: &GenericScene,
-    mesh: contact2d_mesh::Mesh,
-    clock: Instant,
-    deadline: Option<Instant>,
-    stream: Stream<'_>,
-) -> Result<GenericOutcome, GenericError> {
-    let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
-    let contact_error =
-        |source| GenericError::Contact { scene: scene_name.clone(), mesh: mesh_name.clone(), source: Box::new(source) };
-    let read = clock.elapsed().as_secs_f64();
-    let groups = group_reports(scene, &mesh).map_err(contact_error)?;
-    let built = scene.description(mesh).build().map_err(contact_error)?;
-    let schedule = scene.schedule()?;
-    let settings = scene.settings()?;
-    let settings = match deadline {
-        Some(d) => settings.with_deadline(d),
-        None => settings,
-    };
-    let total = schedule.steps().len();
-    let fixed = fixed_groups(scene);
-    // Each step's summary row is made as the step is solved; of the steps before, the results
-    // keep only what the next step needs.
-    let mut results = results::StepResults::new(&built, &fixed);
-    let mut summary_steps: Vec<StepResult> = Vec::with_capacity(total);
-    let (mut failed, mut solve_time, mut post_time) = (None, 0.0, 0.0);
-    let mut first_non_finite: Option<String> = None;
-    let Stream { retention, on_step, on_solved } = stream;
-    let history = solve_keeping(&built.problem, &settings, &schedule, retention, &mut |i, step| {
-        let post_clock = Instant::now();
-        solve_time += step.solution.time.as_secs_f64();
-        if failed.is_none() {
-            match results.push(step, false) {
-                Ok(result) => {
-                    // Checked one row at a time: the whole summary as one JSON value grows with the steps.
-                    if first_non_finite.is_none() {
-                        let value = serde_json::to_value(&result).unwrap_or(serde_json::Value::Null);
-                        first_non_finite = non_finite(&value, &format!("steps.{}", summary_steps.len()));
-                    }
-                    summary_steps.push(result);
-                }
-                Err(e) => failed = Some(e),
-            }
-        }
-        on_solved(&built, i, step);
-        post_time += post_clock.elapsed().as_secs_f64();
-        on_step(i + 1, total);
-    })
-    .map_err(contact_error)?;
-    if let Some(e) = failed {
-        return Err(contact_error(e));
+/// The summary rows of a history, made one step at a time as each is solved (see
+/// [`results::StepResults`]), with the first non-finite number found in them.
+pub struct SummaryRows<'a> {
+    results: results::StepResults<'a>,
+    rows: Vec<StepResult>,
+    first_non_finite: Option<String>,
+}
+
+impl<'a> SummaryRows<'a> {
+    /// Before the first step of a history of `built`, reporting the reactions of `fixed`.
+    pub fn new(built: &'a BuiltProblem, fixed: &'a [FixedGroup]) -> Self {
+        SummaryRows { results: results::StepResults::new(built, fixed), rows: vec![], first_non_finite: None }
     }
+
+    /// The row of the next step, solved on `built` (the history's problem, or one of the same
+    /// topology whose nodes moved).
+    ///
+    /// # Errors
+    /// [`ContactError::InvalidInput`] when the step does not fit the problem.
+    pub fn push(&mut self, built: &'a BuiltProblem, step: &SolvedStep) -> Result<(), ContactError> {
+        self.results.rebase(built);
+        let row = self.results.push(step, false)?;
+        // Checked one row at a time: the whole summary as one JSON value grows with the steps.
+        if self.first_non_finite.is_none() {
+            let value = serde_json::to_value(&row).unwrap_or(serde_json::Value::Null);
+            self.first_non_finite = non_finite(&value, &format!("steps.{}", self.rows.len()));
+        }
+        self.rows.push(row);
+        Ok(())
+    }
+}
+
+/// What a summary needs besides its rows: the scene, the last step and its problem, and the
+/// run's facts.
+pub struct SummaryInput<'s> {
+    /// The scene (expanded, for a preset).
+    pub scene: &'s GenericScene,
+    /// The problem the last step was solved on.
+    pub built: &'s BuiltProblem,
+    /// The last solved step.
+    pub last: &'s SolvedStep,
+    /// The groups the scene names.
+    pub groups: BTreeMap<String, GroupReport>,
+    /// Whether the history was solved once and scaled.
+    pub scaled: bool,
+    /// The number of steps the schedule asked for.
+    pub total_steps: usize,
+    /// Where the time went (`total` and `post` are completed here).
+    pub times: Times,
+    /// When the run started.
+    pub clock: Instant,
+}
+
+/// The summary of a solved history from its rows: the worst step's status, the last step's
+/// interfaces with profiles, reactions and energies, and the notes.
+///
+/// # Errors
+/// [`ContactError::InvalidInput`] without a solved step, [`ContactError::NotFinite`] naming the
+/// first non-finite number.
+pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<GenericReport, ContactError> {
     let post_clock = Instant::now();
-    let (Some(last), Some(last_step)) = (summary_steps.last(), history.steps.last()) else {
-        return Err(contact_error(ContactError::InvalidInput("no load step solved".into())));
+    let SummaryInput { scene, built, last: last_step, groups, scaled, total_steps: total, mut times, clock } = input;
+    let SummaryRows { results, rows: summary_steps, first_non_finite } = rows;
+    let Some(last) = summary_steps.last() else {
+        return Err(ContactError::InvalidInput("no load step solved".into()));
     };
     let last = StepResult { contacts: results.contacts_with_profiles(&last_step.solution), ..last.clone() };
     // A body held only by contact that crosses a gap under a force moves rigidly first: the work
@@ -349,8 +397,8 @@ fn solve_generic_from(
     // Gaps below 1e-9 of the extent (round-off of a turned or morphed geometry) close with no
     // rigid travel worth counting.
     let touching = built.problem.gap.iter().all(|g| g.abs() <= 1e-9 * extent);
-    let balance_checked = !interference && (history.scaled || built.problem.system.floating.is_empty() || touching);
-    let (status, failed_check) = certified_status(history.scaled, &summary_steps, balance_checked);
+    let balance_checked = !interference && (scaled || built.problem.system.floating.is_empty() || touching);
+    let (status, failed_check) = certified_status(scaled, &summary_steps, balance_checked);
     let floating_bodies = built
         .problem
         .system
@@ -358,23 +406,14 @@ fn solve_generic_from(
         .iter()
         .map(|p| FloatingReport { body: p.body.clone(), free_modes: p.mode_names() })
         .collect();
-    let times = Times {
-        read,
-        assemble: built.problem.build_times.assemble.as_secs_f64(),
-        factor: built.problem.build_times.factor.as_secs_f64(),
-        condense: history.condense_time.as_secs_f64(),
-        solve: solve_time,
-        post: post_time + post_clock.elapsed().as_secs_f64(),
-        total: clock.elapsed().as_secs_f64(),
-    };
     let mut notes = scene.element_warnings();
     let regions: Vec<String> = scene.body.iter().map(|b| b.region.clone()).collect();
     notes.extend(setup_notes::shared_node_notes(&built.problem.model.mesh, &regions));
-    notes.extend(setup_notes::deep_interference_notes(&built));
-    notes.extend(setup_notes::held_pair_notes(&built, &last_step.solution.gap));
+    notes.extend(setup_notes::deep_interference_notes(built));
+    notes.extend(setup_notes::held_pair_notes(built, &last_step.solution.gap));
     let node_to_segment: Vec<bool> =
         scene.contact.iter().map(|c| c.pairing == scene::PairingKey::NodeToSegment).collect();
-    notes.extend(setup_notes::quadratic_node_to_segment_notes(&built, &node_to_segment));
+    notes.extend(setup_notes::quadratic_node_to_segment_notes(built, &node_to_segment));
     if interference {
         notes.push(
             "energy balance not checked: the initial interference (negative gaps) stores energy that no load put in"
@@ -393,6 +432,8 @@ fn solve_generic_from(
             summary_steps.len()
         ));
     }
+    times.post += post_clock.elapsed().as_secs_f64();
+    times.total = clock.elapsed().as_secs_f64();
     let report = GenericReport {
         scene: scene.name.clone(),
         status,
@@ -401,7 +442,7 @@ fn solve_generic_from(
         dofs: built.problem.system.dofs.num_free(),
         pairs: built.problem.num_pairs(),
         iterations: summary_steps.iter().map(|s| s.iterations).sum(),
-        scaled: history.scaled,
+        scaled,
         steps: summary_steps,
         contacts: last.contacts,
         reactions: last.reactions,
@@ -412,16 +453,80 @@ fn solve_generic_from(
         groups,
         time_s: times,
         notes,
+        post: BTreeMap::new(),
     };
-    if let Some(path) = non_finite_report(&report, first_non_finite) {
-        return Err(contact_error(ContactError::NotFinite(format!("{path} of the summary"))));
+    match non_finite_report(&report, first_non_finite) {
+        Some(path) => Err(ContactError::NotFinite(format!("{path} of the summary"))),
+        None => Ok(report),
     }
+}
+
+/// The solve of [`solve_generic`] once the mesh is read (`clock` started before reading).
+fn solve_generic_from(
+    scene: &GenericScene,
+    mesh: contact2d_mesh::Mesh,
+    clock: Instant,
+    deadline: Option<Instant>,
+    stream: Stream<'_>,
+    adjust: Adjust<'_>,
+) -> Result<GenericOutcome, GenericError> {
+    let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
+    let contact_error =
+        |source| GenericError::Contact { scene: scene_name.clone(), mesh: mesh_name.clone(), source: Box::new(source) };
+    let read = clock.elapsed().as_secs_f64();
+    let groups = group_reports(scene, &mesh).map_err(contact_error)?;
+    let mut built = scene.description(mesh).build().map_err(contact_error)?;
+    adjust(&mut built).map_err(contact_error)?;
+    let schedule = scene.schedule()?;
+    let settings = scene.settings()?;
+    let settings = match deadline {
+        Some(d) => settings.with_deadline(d),
+        None => settings,
+    };
+    let total = schedule.steps().len();
+    let fixed = fixed_groups(scene);
+    // Each step's summary row is made as the step is solved; of the steps before, the rows
+    // keep only what the next step needs.
+    let mut rows = SummaryRows::new(&built, &fixed);
+    let (mut failed, mut solve_time, mut post_time) = (None, 0.0, 0.0);
+    let Stream { retention, on_step, on_solved } = stream;
+    let history = solve_keeping(&built.problem, &settings, &schedule, retention, &mut |i, step| {
+        let post_clock = Instant::now();
+        solve_time += step.solution.time.as_secs_f64();
+        if failed.is_none()
+            && let Err(e) = rows.push(&built, step)
+        {
+            failed = Some(e);
+        }
+        on_solved(&built, i, step);
+        post_time += post_clock.elapsed().as_secs_f64();
+        on_step(i + 1, total);
+    })
+    .map_err(contact_error)?;
+    if let Some(e) = failed {
+        return Err(contact_error(e));
+    }
+    let Some(last) = history.steps.last() else {
+        return Err(contact_error(ContactError::InvalidInput("no load step solved".into())));
+    };
+    let times = Times {
+        read,
+        assemble: built.problem.build_times.assemble.as_secs_f64(),
+        factor: built.problem.build_times.factor.as_secs_f64(),
+        condense: history.condense_time.as_secs_f64(),
+        solve: solve_time,
+        post: post_time,
+        total: 0.0,
+    };
+    let input =
+        SummaryInput { scene, built: &built, last, groups, scaled: history.scaled, total_steps: total, times, clock };
+    let report = summarise(input, rows).map_err(contact_error)?;
     Ok(GenericOutcome { scene: scene.clone(), built, history, report })
 }
 
 /// The groups of the scene's `[[fix]]` entries, each with the components any of its entries
 /// prescribes.
-fn fixed_groups(scene: &GenericScene) -> Vec<FixedGroup> {
+pub(crate) fn fixed_groups(scene: &GenericScene) -> Vec<FixedGroup> {
     let mut out: Vec<FixedGroup> = vec![];
     for f in &scene.fix {
         let components = [f.u1.is_some(), f.u2.is_some()];
@@ -503,7 +608,7 @@ fn unique(items: impl Iterator<Item = String>) -> Vec<String> {
 }
 
 /// The length and bounding box of every group the scene names.
-fn group_reports(
+pub(crate) fn group_reports(
     scene: &GenericScene,
     mesh: &contact2d_mesh::Mesh,
 ) -> Result<BTreeMap<String, GroupReport>, ContactError> {

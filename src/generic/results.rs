@@ -211,6 +211,12 @@ impl<'a> StepResults<'a> {
         }
     }
 
+    /// The next steps are solved on `built`: a problem of the same topology as the one before,
+    /// whose nodes may have moved (the placed zone ends of the Boussinesq algorithm).
+    pub fn rebase(&mut self, built: &'a BuiltProblem) {
+        self.built = built;
+    }
+
     /// The results of the next step of the history (with the interfaces' profiles if
     /// `with_profile`).
     ///

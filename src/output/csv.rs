@@ -59,7 +59,7 @@ pub fn write_profile_csv(path: &Path, header: &str, rows: &[ProfileRow], node_ta
 /// [`OutputError::Io`] if the file cannot be written.
 pub fn write_steps_csv(path: &Path, outcome: &RunOutcome) -> Result<(), OutputError> {
     let mut text = format!("{STEPS_HEADER}\n");
-    for (k, (row, solved)) in outcome.report.steps.iter().zip(&outcome.steps).enumerate() {
+    for (k, (row, solved)) in outcome.paper.steps.iter().zip(&outcome.steps).enumerate() {
         let fields = [
             k.to_string(),
             num(row.w),

@@ -24,8 +24,8 @@ use contact2d_mesh::{Contour, NodeId};
 
 use super::OutputError;
 use super::step_view::{NodeValues, StepView};
+use crate::plate_insert::report::PaperStep as SolvedStep;
 use crate::plate_insert::{PairingVariant, PlateInsertProblem};
-use crate::run::SolvedStep;
 
 /// The contact values of one contour node (from its pair).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -45,7 +45,7 @@ pub fn readme_text(scene: &Scene, outcome: &RunOutcome, written: &[String]) -> S
         t,
         "{} load step(s), final w = {}, algorithm {:?}, status {}.\n",
         outcome.steps.len(),
-        outcome.report.w,
+        outcome.paper.w,
         outcome.report.algorithm,
         outcome.report.status
     );

@@ -26,6 +26,7 @@ mod group_geometry;
 mod placed;
 pub mod preset;
 pub mod published;
+pub mod report;
 mod results;
 mod roots;
 mod zone_ends;

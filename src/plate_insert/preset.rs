@@ -139,7 +139,24 @@ impl PlateInsert {
     /// Those of [`ProblemDescription::build`], and a clearance the mesh has no room for.
     pub fn build_preset(&self, mesh: Mesh) -> Result<PlateInsertProblem, ContactError> {
         let mut built: BuiltProblem = self.description(mesh).build()?;
-        built.problem.set_gaps(self.gaps(&built.problem)?)?;
+        self.set_gaps(&mut built)?;
+        self.case_of(built)
+    }
+
+    /// Sets the paper's gaps ([`GapModel`](super::GapModel), scaled by c/ε) on the pairs of the
+    /// built description: what no generic scene key describes.
+    ///
+    /// # Errors
+    /// A clearance the mesh has no room for.
+    pub fn set_gaps(&self, built: &mut BuiltProblem) -> Result<(), ContactError> {
+        built.problem.set_gaps(self.gaps(&built.problem)?)
+    }
+
+    /// The case of a problem built from its description: the problem and the paper's contours.
+    ///
+    /// # Errors
+    /// A mesh without the hole or insert edge.
+    pub fn case_of(&self, built: BuiltProblem) -> Result<PlateInsertProblem, ContactError> {
         let hole = Contour::from_group(&built.problem.model.mesh, "hole_edge")?;
         let insert = Contour::from_group(&built.problem.model.mesh, "insert_edge")?;
         Ok(PlateInsertProblem { built, hole, insert, variant: self.variant, eps: self.eps })

@@ -167,7 +167,7 @@ pub fn run_cell(
 }
 
 fn summarise(algorithm: ContactAlgorithm, o: &RunOutcome) -> AlgorithmResult {
-    let r = &o.report;
+    let (r, status) = (&o.paper, o.report.status);
     let values = [r.P, r.Phi_E1 + r.Phi_E2, r.l.unwrap_or(f64::NAN), r.b.unwrap_or(f64::NAN), r.sigma_star];
     let non_finite = [r.P, r.Phi_E1, r.Phi_E2, r.sigma_star, r.Phi_f, r.W].iter().any(|v| !v.is_finite())
         || r.l.is_some_and(|v| !v.is_finite())
@@ -180,13 +180,13 @@ fn summarise(algorithm: ContactAlgorithm, o: &RunOutcome) -> AlgorithmResult {
         .fold(0.0, f64::max);
     AlgorithmResult {
         algorithm,
-        status: r.status.clone(),
-        iterations: r.iterations,
+        status: status.into(),
+        iterations: o.report.iterations,
         values,
         kkt,
         non_finite,
         error: None,
-        time_s: r.time_s,
+        time_s: o.report.time_s.total,
     }
 }
 

@@ -11,7 +11,7 @@ use std::path::Path;
 
 use super::{CaseReport, Check, Level, Tolerance, VerifyError, scene_path};
 use crate::plate_insert::published::PUBLISHED;
-use crate::run::run_scene;
+use crate::run::solve_scene;
 use crate::scene::Scene;
 
 /// Runs every published case with its bundled scene.
@@ -26,10 +26,11 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
     };
     for case in PUBLISHED {
         let scene = Scene::load(&scene_path(root, &format!("scenes/{}.toml", case.scene)), &[])?;
-        let run = run_scene(&scene)?;
-        if run.status != "converged" {
-            report.notes.push(format!("{}: status {}", case.scene, run.status));
+        let outcome = solve_scene(&scene)?;
+        if outcome.report.status != "converged" {
+            report.notes.push(format!("{}: status {}", case.scene, outcome.report.status));
         }
+        let run = &outcome.paper;
         let gap = !case.scene.contains("nogap");
         for (name, published) in case.quantities() {
             let (measured, tolerance) = match name {

@@ -3,7 +3,7 @@
 //! compared with its reference and a stated tolerance.
 //!
 //! ```text
-//! case (scene + closed form) → solve_generic / run_scene → Check { measured, reference, tolerance }
+//! case (scene + closed form) → solve_generic / solve_scene → Check { measured, reference, tolerance }
 //! relative error e = |measured − reference| / |reference|   (or |measured − reference| for an
 //! absolute tolerance);  PASS ⇔ e ≤ tolerance
 //! ```

@@ -85,7 +85,7 @@ try {
   check(stuck > 0, `μ = 0.3: a stick zone appears (${stuck} pairs drawn as stick)`);
   const native = findCase("flagship", {
     friction: 0.3, stiffness_ratio: 1, eps: 0, refinement: 16, load: 1, variant: "hole_master",
-  }).summary;
+  }).summary.paper;
   const live = { l: Number(await cell("l")), b: Number(await cell("b")), P: Number(await cell("P")) };
   for (const k of ["l", "b", "P"]) {
     check(close(live[k], native[k]), `page ${k} = ${live[k]} equals native ${native[k]} to 1e-12`);

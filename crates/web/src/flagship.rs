@@ -18,9 +18,10 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
+use contact2d::generic::GenericReport;
 use contact2d::output::profiles::{ProfileRow, contour_profiles};
 use contact2d::plate_insert::published::{PUBLISHED, PublishedCase};
-use contact2d::run::{RunOutcome, RunReport, Silent, solve_scene_on_mesh};
+use contact2d::run::{RunOutcome, Silent, solve_scene_on_mesh};
 use contact2d::scene::{Scene, VariantKey};
 use contact2d_mesh::parse_msh;
 
@@ -155,8 +156,9 @@ pub struct FlagshipView {
     pub mesh_file: String,
     /// c = ω ε.
     pub clearance: f64,
-    /// The summary, as `contact2d run --json` writes it (l, b, P, Φ, σ*, K, status, steps ...).
-    pub summary: RunReport,
+    /// The summary, as `contact2d run --json` writes it (status, steps, the interface's profile,
+    /// reactions ..., and the paper's l, b, P, Φ, σ*, K under `paper`).
+    pub summary: GenericReport,
     /// The published case these parameters set up, if any.
     pub published: Option<PublishedView>,
     /// The hole edge Γ_p.
@@ -270,10 +272,11 @@ mod tests {
         assert!(free.pairs.state.iter().all(|s| *s == "contact" || *s == "free"));
         let rough = solve_flagship(&params(0.3, 0.0)).unwrap();
         assert!(rough.pairs.state.contains(&"stick"));
-        let (l, b) = (rough.summary.l.unwrap(), rough.summary.b.unwrap());
+        let paper = &rough.summary.post["paper"];
+        let (l, b) = (paper["l"].as_f64().unwrap(), paper["b"].as_f64().unwrap());
         assert!(0.0 < b && b < l, "b = {b}, l = {l}");
         let peak = rough.hole.hoop.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        assert_eq!(peak, rough.summary.sigma_star);
+        assert_eq!(Some(peak), paper["sigma_star"].as_f64());
         assert_eq!(rough.mesh.displacement.len(), rough.mesh.points.len());
     }
 }

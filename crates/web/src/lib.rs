@@ -8,7 +8,7 @@
 //! ```text
 //! solve_flagship({"friction": 0.3, "stiffness_ratio": 1, "eps": 0, "refinement": 16,
 //!                 "load": 1, "variant": "hole_master"})
-//!   → {summary (l, b, P, Φ, σ*, K, status, steps), published, hole {eta, s, hoop, p, q, state},
+//!   → {summary (the generic report; l, b, P, Φ, σ*, K under paper), published, hole {eta, s, hoop, p, q, state},
 //!      insert {...}, pairs {master, state, normal_force}, mesh {points, edges, displacement}}
 //! solve_hertz({"force": 35000, "level": "L1"})
 //!   → {summary (generic report with the interface profile), closed_form {a, p0, x, pressure},
