@@ -76,6 +76,11 @@ enum Command {
         /// slipping, residuals.
         #[arg(long, short)]
         verbose: bool,
+        /// Which steps carry the interfaces' profiles (pressure, shear, gap, slip, state along
+        /// the master curve) in the JSON summary: `last` (default) or `all`; with `all`, `--out`
+        /// also writes one CSV per interface and step (contact_<name>_step_<k>.csv).
+        #[arg(long, value_name = "last|all", default_value = "last", value_parser = ["last", "all"])]
+        profiles: String,
     },
     /// Run a scene over the Cartesian product of varied values, in parallel; write sweep.csv,
     /// sweep.md and plots of the chosen outputs against the first varied key.
@@ -179,11 +184,13 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 writeln!(stdout, "{}\n{summary}", file.display())?;
             }
         }
-        Command::Run { scene, set, json, out, quiet, verbose } => {
+        Command::Run { scene, set, json, out, quiet, verbose, profiles } => {
+            let every_profile = profiles == "all";
             if contact2d::generic::scene::is_generic(&contact2d::scene::read_scene_text(&scene)?) {
-                return run_generic(&scene, &set, json, out.as_deref(), quiet, verbose);
+                return run_generic(&scene, &set, json, out.as_deref(), (quiet, verbose, every_profile));
             }
-            let scene = contact2d::scene::Scene::load(&scene, &set)?;
+            let mut scene = contact2d::scene::Scene::load(&scene, &set)?;
+            scene.every_profile = every_profile;
             scene.check_mesh_file()?;
             // The output folder is checked and locked before the work, so that a bad --out fails
             // at once and no other run writes there meanwhile.
@@ -255,10 +262,10 @@ fn run_generic(
     set: &[String],
     json: bool,
     out: Option<&std::path::Path>,
-    quiet: bool,
-    verbose: bool,
+    (quiet, verbose, every_profile): (bool, bool, bool),
 ) -> anyhow::Result<()> {
-    let scene = contact2d::generic::load_scene(path, set)?;
+    let mut scene = contact2d::generic::load_scene(path, set)?;
+    scene.every_profile = every_profile;
     // The output folder is checked and locked before the work.
     let mut folder =
         out.map(|dir| contact2d::output::OutputDir::prepare(dir, Some(contact2d::output::SUMMARY_FILE))).transpose()?;
@@ -279,15 +286,7 @@ fn run_generic(
                 write_error = Some(e);
             }
             if verbose {
-                let s = &step.solution;
-                let line = format!(
-                    "step {}: factors {:?}, {:?} after {} iterations",
-                    i + 1,
-                    step.factors,
-                    s.status,
-                    s.iterations
-                );
-                lines.push(line);
+                lines.push(iteration_log(&format!("step {}: factors {:?}", i + 1, step.factors), &step.solution));
             }
         },
     )?;
@@ -395,28 +394,27 @@ const DEFAULT_PLOT: &str = "l,b,P";
 
 /// The iteration log of every step (`run -v`), on stderr so that `--json` stays parseable.
 fn print_iterations(outcome: &contact2d::run::RunOutcome) {
-    let mut text = String::new();
-    for (i, step) in outcome.steps.iter().enumerate() {
-        use std::fmt::Write as _;
-        let s = &step.solution;
-        let _ = writeln!(
+    let steps = outcome.steps.iter().enumerate();
+    let text: Vec<String> = steps
+        .map(|(i, s)| iteration_log(&format!("step {}: w = {:.6}", i + 1, s.solution.load_factor), &s.solution))
+        .collect();
+    print_stderr(text.join("\n").trim_end());
+}
+
+/// One step's iteration log: its status and, per iteration of the algorithm, the pairs that
+/// changed state, in contact and slipping, and the residual.
+fn iteration_log(step: &str, s: &contact2d::contact::ContactSolution) -> String {
+    use std::fmt::Write as _;
+    let mut text = format!("{step}, {:?} after {} iterations\n", s.status, s.iterations);
+    text.push_str("  iter  changed  contact  slipping  residual");
+    for r in &s.trace {
+        let _ = write!(
             text,
-            "step {}: w = {:.6}, {:?} after {} iterations",
-            i + 1,
-            s.load_factor,
-            s.status,
-            s.iterations
+            "\n  {:>4}  {:>7}  {:>7}  {:>8}  {:>9.2e}",
+            r.iteration, r.changed, r.in_contact, r.slipping, r.residual
         );
-        let _ = writeln!(text, "  iter  changed  contact  slipping  residual");
-        for r in &s.trace {
-            let _ = writeln!(
-                text,
-                "  {:>4}  {:>7}  {:>7}  {:>8}  {:>9.2e}",
-                r.iteration, r.changed, r.in_contact, r.slipping, r.residual
-            );
-        }
     }
-    print_stderr(text.trim_end());
+    text
 }
 
 /// One message on stderr; a closed or full stderr is ignored (there is nowhere left to say it,

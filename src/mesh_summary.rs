@@ -10,7 +10,7 @@ use std::collections::BTreeMap;
 
 use contact2d_element::{GaussRule, jacobian_determinant};
 use contact2d_fem::element_type;
-use contact2d_mesh::Mesh;
+use contact2d_mesh::{CellBlock, Mesh};
 use serde::Serialize;
 
 /// One physical group in the summary.
@@ -41,6 +41,71 @@ pub struct MeshSummary {
     pub worst_quality: Option<f64>,
     /// Cells whose nodes run clockwise (renumbered when a model is built; not an error).
     pub clockwise_cells: usize,
+    /// Cells of quality below [`MIN_QUALITY`], worst first (at most [`MAX_LISTED`]).
+    pub poor_cells: Vec<PoorCell>,
+    /// How many cells are below [`MIN_QUALITY`] (all of them, listed or not).
+    pub poor_cell_count: usize,
+}
+
+/// The quality below which a cell is warned about: its det J varies more than 20-fold inside
+/// (a sliver or a badly bent edge), where the stiffness is poorly integrated and the stresses
+/// near it are not to be trusted. The cells of every bundled mesh stay above 0.17 (Gmsh's
+/// curved quadratic meshes; measured 2026-11-25).
+pub const MIN_QUALITY: f64 = 0.05;
+
+/// The most poor cells a summary lists.
+pub const MAX_LISTED: usize = 10;
+
+/// A cell of poor quality.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PoorCell {
+    /// The file's element tag.
+    pub element: u64,
+    /// The 2D physical group (body region) it belongs to (empty if none).
+    pub region: String,
+    /// The mean of its nodes.
+    pub centroid: [f64; 2],
+    /// Its quality `min det J / max det J`.
+    pub quality: f64,
+}
+
+impl std::fmt::Display for PoorCell {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let [x, y] = self.centroid;
+        write!(
+            f,
+            "element {} of \"{}\" at ({x:.4e}, {y:.4e}): quality {:.2e} (below {MIN_QUALITY})",
+            self.element, self.region, self.quality
+        )
+    }
+}
+
+/// The cells of `mesh` below [`MIN_QUALITY`], worst first, and how many there are (the list
+/// capped at [`MAX_LISTED`]); measured counter-clockwise as a model sees them.
+pub fn poor_cells(mesh: &Mesh) -> (Vec<PoorCell>, usize) {
+    let mut poor = vec![];
+    for b in mesh.blocks.iter().filter(|b| element_type(b.kind).is_some()) {
+        let region = mesh
+            .groups
+            .iter()
+            .find(|g| g.dim == 2 && b.physical_tags.contains(&g.tag))
+            .map_or(String::new(), |g| g.name.clone());
+        for ((cell, tag), [lo, hi]) in b.cells().zip(&b.element_tags).zip(block_jacobian_extremes(mesh, b)) {
+            let quality = if hi > 0.0 { lo / hi } else { lo.min(0.0) };
+            if quality < MIN_QUALITY {
+                let n = cell.len() as f64;
+                let centroid = cell.iter().fold([0.0; 2], |a, p| {
+                    let x = mesh.points[p.0];
+                    [a[0] + x[0] / n, a[1] + x[1] / n]
+                });
+                poor.push(PoorCell { element: *tag, region: region.clone(), centroid, quality });
+            }
+        }
+    }
+    poor.sort_by(|a, b| a.quality.total_cmp(&b.quality));
+    let count = poor.len();
+    poor.truncate(MAX_LISTED);
+    (poor, count)
 }
 
 /// Summarises `mesh`.
@@ -66,7 +131,10 @@ pub fn summarize_mesh(mesh: &Mesh) -> MeshSummary {
         let q = if hi > 0.0 { lo / hi } else { lo.min(0.0) };
         worst_quality = Some(worst_quality.map_or(q, |w| w.min(q)));
     }
+    let (poor_cells, poor_cell_count) = poor_cells(&oriented);
     MeshSummary {
+        poor_cells,
+        poor_cell_count,
         nodes: mesh.num_nodes(),
         elements,
         physical_groups,
@@ -81,7 +149,13 @@ pub fn summarize_mesh(mesh: &Mesh) -> MeshSummary {
 /// stiffness rule and its reference nodes): min ≤ 0 for an inverted cell, min = max for an
 /// affine one.
 pub fn jacobian_extremes(mesh: &Mesh) -> impl Iterator<Item = [f64; 2]> + '_ {
-    mesh.blocks.iter().filter_map(|b| element_type(b.kind).map(|e| (b, e))).flat_map(move |(b, element)| {
+    mesh.blocks.iter().flat_map(move |b| block_jacobian_extremes(mesh, b))
+}
+
+/// [`jacobian_extremes`] of the cells of one block of `mesh` (none for a block of no element
+/// type).
+fn block_jacobian_extremes<'a>(mesh: &'a Mesh, b: &'a CellBlock) -> impl Iterator<Item = [f64; 2]> + 'a {
+    element_type(b.kind).into_iter().flat_map(move |element| {
         let rule = GaussRule::stiffness_rule(element);
         b.cells().map(move |cell| {
             let coords: Vec<[f64; 2]> = cell.iter().map(|n| mesh.points[n.0]).collect();
@@ -115,9 +189,16 @@ impl std::fmt::Display for MeshSummary {
             )?;
         }
         match (self.min_det_j, self.worst_quality) {
-            (Some(d), Some(q)) => write!(f, "min det J: {d:.6e}\nworst quality (min/max det J): {q:.4}"),
-            _ => write!(f, "no 2D cells"),
+            (Some(d), Some(q)) => write!(f, "min det J: {d:.6e}\nworst quality (min/max det J): {q:.4}")?,
+            _ => write!(f, "no 2D cells")?,
         }
+        if self.poor_cell_count > 0 {
+            write!(f, "\nwarning: {} cells below quality {MIN_QUALITY}, the worst:", self.poor_cell_count)?;
+            for cell in &self.poor_cells {
+                write!(f, "\n  {cell}")?;
+            }
+        }
+        Ok(())
     }
 }
 
@@ -126,6 +207,25 @@ impl std::fmt::Display for MeshSummary {
 mod tests {
     use super::*;
     use contact2d_mesh::{CellKind, generate::rectangle};
+
+    /// A sliver: the free corner (2, 1) of the second unit Q4 of a 2 × 1 strip moved onto
+    /// (1.501, 0.501), 1e-3 beside its cell's diagonal from (2, 0) to (1, 1). det J of the
+    /// bilinear map is linear along each reference axis, so its extremes sit at the corners: the
+    /// moved corner's is ∓2e-3 (twice the distance times the edges), the opposite corner's about
+    /// 1, so the quality is about ±2e-3, far below 0.05; the first cell stays a unit square.
+    #[test]
+    fn a_sliver_is_listed_with_its_place() {
+        let mut mesh = rectangle(CellKind::Quad4, [0.0, 2.0], [0.0, 1.0], 2, 1);
+        let corner = mesh.points.iter().position(|p| *p == [2.0, 1.0]).unwrap();
+        mesh.points[corner] = [1.501, 0.501];
+        let s = summarize_mesh(&mesh);
+        assert_eq!(s.poor_cell_count, 1, "{s}");
+        let sliver = &s.poor_cells[0];
+        assert!(sliver.quality.abs() < 0.01 && sliver.region == "domain", "{sliver}");
+        let [x, y] = sliver.centroid;
+        assert!((x - (1.0 + 2.0 + 1.501 + 1.0) / 4.0).abs() < 1e-12 && (y - (0.501 + 1.0) / 4.0).abs() < 1e-12);
+        assert!(format!("{s}").contains("warning: 1 cells below quality 0.05"), "{s}");
+    }
 
     #[test]
     fn affine_mesh_has_quality_one_and_exact_det_j() {

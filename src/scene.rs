@@ -263,6 +263,10 @@ pub struct Scene {
     /// by callers such as `compare --time-limit`).
     #[serde(skip)]
     pub deadline: Option<web_time::Instant>,
+    /// Every step's row of the summary carries the interface's profile, not only the last (not
+    /// a scene key: `run --profiles all`).
+    #[serde(skip)]
+    pub every_profile: bool,
 }
 
 impl Scene {

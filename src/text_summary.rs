@@ -27,6 +27,10 @@ pub(crate) fn print_summary(
     paper: Option<&PaperReport>,
 ) -> std::io::Result<()> {
     heading(out, &r.scene, (r.dofs, r.pairs), &format!("{:?}", r.algorithm), r.status, (r.iterations, r.steps.len()))?;
+    // Every choice the run made on its own: a refinement study must not mix them unknowingly.
+    let pairings: Vec<String> = r.pairing_used.iter().map(|(name, p)| format!("{name}: {p}")).collect();
+    let scaled = if r.scaled { "solved once and scaled (no gap, proportional loads)" } else { "solved step by step" };
+    writeln!(out, "  method: {}; pairing {}", scaled, pairings.join(", "))?;
     if let Some(paper) = paper {
         print_paper(out, paper)?;
     }
@@ -37,6 +41,20 @@ pub(crate) fn print_summary(
              max pressure {:.6e}, dissipation {:.3e}",
             c.normal_force, c.tangential_force, c.contact_length, c.stick_length, c.max_pressure, c.dissipation
         )?;
+        let [f1, f2] = c.resultant;
+        writeln!(out, "  contact {name}: resultant on the slave side [{f1:.6e}, {f2:.6e}]")?;
+        let where_ = |z: &contact2d::generic::results::ZoneEnds| match &z.angles_deg {
+            // + 0.0: an angle of −1e-15° prints as 0.0°, not −0.0°.
+            Some(a) => a
+                .chunks(2)
+                .map(|e| format!("{:.1}° to {:.1}°", (e[0] * 10.0).round() / 10.0 + 0.0, e.get(1).unwrap_or(&e[0])))
+                .collect::<Vec<_>>(),
+            None => z.points.chunks(2).map(|e| format!("{:?} to {:?}", e[0], e.get(1).unwrap_or(&e[0]))).collect(),
+        };
+        writeln!(out, "  contact {name}: in contact {}", where_(&c.zones).join(", "))?;
+        if !c.stick_zones.s.is_empty() {
+            writeln!(out, "  contact {name}: sticking {}", where_(&c.stick_zones).join(", "))?;
+        }
         if let Some([f1, f2]) = c.rigid_resultant {
             writeln!(out, "  contact {name}: rigid obstacle's resultant [{f1:.6e}, {f2:.6e}]")?;
         }

@@ -129,6 +129,8 @@ pub struct GenericReport {
     pub iterations: usize,
     /// Whether the schedule was solved once and scaled (no gap, proportional loads).
     pub scaled: bool,
+    /// The pairing each interface used: as the scene gives it, or what `automatic` chose.
+    pub pairing_used: BTreeMap<String, &'static str>,
     /// Every step, without profiles.
     pub steps: Vec<StepResult>,
     /// The last step's interfaces, with profiles.
@@ -169,6 +171,7 @@ impl GenericReport {
             pairs: self.pairs,
             iterations: self.iterations,
             scaled: self.scaled,
+            pairing_used: self.pairing_used.clone(),
             steps: vec![],
             contacts: self.contacts.clone(),
             reactions: self.reactions.clone(),
@@ -324,14 +327,21 @@ struct Stream<'a> {
 /// [`results::StepResults`]), with the first non-finite number found in them.
 pub struct SummaryRows<'a> {
     results: results::StepResults<'a>,
+    every_profile: bool,
     rows: Vec<StepResult>,
     first_non_finite: Option<String>,
 }
 
 impl<'a> SummaryRows<'a> {
-    /// Before the first step of a history of `built`, reporting the reactions of `fixed`.
-    pub fn new(built: &'a BuiltProblem, fixed: &'a [FixedGroup]) -> Self {
-        SummaryRows { results: results::StepResults::new(built, fixed), rows: vec![], first_non_finite: None }
+    /// Before the first step of a history of `built`, reporting the reactions of `fixed`, each
+    /// row with the interfaces' profiles if `every_profile`.
+    pub fn new(built: &'a BuiltProblem, fixed: &'a [FixedGroup], every_profile: bool) -> Self {
+        SummaryRows {
+            results: results::StepResults::new(built, fixed),
+            every_profile,
+            rows: vec![],
+            first_non_finite: None,
+        }
     }
 
     /// The row of the next step, solved on `built` (the history's problem, or one of the same
@@ -341,7 +351,7 @@ impl<'a> SummaryRows<'a> {
     /// [`ContactError::InvalidInput`] when the step does not fit the problem.
     pub fn push(&mut self, built: &'a BuiltProblem, step: &SolvedStep) -> Result<(), ContactError> {
         self.results.rebase(built);
-        let row = self.results.push(step, false)?;
+        let row = self.results.push(step, self.every_profile)?;
         // Checked one row at a time: the whole summary as one JSON value grows with the steps.
         if self.first_non_finite.is_none() {
             let value = serde_json::to_value(&row).unwrap_or(serde_json::Value::Null);
@@ -382,7 +392,7 @@ pub struct SummaryInput<'s> {
 pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<GenericReport, ContactError> {
     let post_clock = Instant::now();
     let SummaryInput { scene, built, last: last_step, groups, scaled, total_steps: total, mut times, clock } = input;
-    let SummaryRows { results, rows: summary_steps, first_non_finite } = rows;
+    let SummaryRows { results, rows: summary_steps, first_non_finite, .. } = rows;
     let Some(last) = summary_steps.last() else {
         return Err(ContactError::InvalidInput("no load step solved".into()));
     };
@@ -414,6 +424,16 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
     let node_to_segment: Vec<bool> =
         scene.contact.iter().map(|c| c.pairing == scene::PairingKey::NodeToSegment).collect();
     notes.extend(setup_notes::quadratic_node_to_segment_notes(built, &node_to_segment));
+    let (poor, count) = crate::mesh_summary::poor_cells(&built.problem.model.mesh);
+    if count > 0 {
+        let worst: Vec<String> = poor.iter().take(3).map(ToString::to_string).collect();
+        notes.push(format!(
+            "{count} cells below quality {} (det J varies more than 20-fold inside; stresses near them are not to \
+             be trusted), the worst: {}",
+            crate::mesh_summary::MIN_QUALITY,
+            worst.join("; ")
+        ));
+    }
     if interference {
         notes.push(
             "energy balance not checked: the initial interference (negative gaps) stores energy that no load put in"
@@ -443,6 +463,7 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
         pairs: built.problem.num_pairs(),
         iterations: summary_steps.iter().map(|s| s.iterations).sum(),
         scaled,
+        pairing_used: built.interfaces.iter().map(|i| (i.name.clone(), i.pairing.key())).collect(),
         steps: summary_steps,
         contacts: last.contacts,
         reactions: last.reactions,
@@ -487,7 +508,7 @@ fn solve_generic_from(
     let fixed = fixed_groups(scene);
     // Each step's summary row is made as the step is solved; of the steps before, the rows
     // keep only what the next step needs.
-    let mut rows = SummaryRows::new(&built, &fixed);
+    let mut rows = SummaryRows::new(&built, &fixed, scene.every_profile);
     let (mut failed, mut solve_time, mut post_time) = (None, 0.0, 0.0);
     let Stream { retention, on_step, on_solved } = stream;
     let history = solve_keeping(&built.problem, &settings, &schedule, retention, &mut |i, step| {

@@ -22,7 +22,8 @@ use super::{GenericOutcome, StepResult};
 use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::step_view::{NodeValues, StepView, state_code};
 use crate::output::{
-    FIGURE_EXTENSIONS, OutputDir, OutputError, SUMMARY_FILE, atomic, field_plot, figure, mesh_plot, step_file_name, vtu,
+    FIGURE_EXTENSIONS, OutputDir, OutputError, SUMMARY_FILE, atomic, field_plot, figure, mesh_plot, readme,
+    step_file_name, vtu,
 };
 
 /// Writes every output of `outcome` into the prepared folder `out` (each file atomically, stale
@@ -88,7 +89,11 @@ pub fn finish_generic_outputs(mut out: OutputDir, outcome: &GenericOutcome) -> R
         })?;
         if n > 1 {
             figure(&mut out, &format!("history.{ext}"), &mut skipped, |p| {
-                draw_history(p, &format!("{name}: contact forces over the steps"), outcome)
+                draw_history(
+                    p,
+                    &format!("{name}: contact forces over the steps (resultant on the slave side)"),
+                    outcome,
+                )
             })?;
         }
     }
@@ -96,10 +101,15 @@ pub fn finish_generic_outputs(mut out: OutputDir, outcome: &GenericOutcome) -> R
         out.write_bytes(&format!("contact_{}.csv", file_safe(iface)), profile_csv(result).as_bytes())?;
     }
     out.write_bytes("steps.csv", steps_csv(outcome).as_bytes())?;
+    write_step_profiles(&mut out, &outcome.report.steps)?;
     let step_files: Vec<String> = (0..n).map(step_file_name).collect();
     let collection: Vec<(f64, String)> =
         step_files.iter().enumerate().map(|(k, f)| ((k + 1) as f64, f.clone())).collect();
     out.write_with(PVD_FILE, |p| vtu::write_pvd(p, &collection))?;
+    let mut names = steps_before_pvd(out.written().to_vec(), |f| f.as_str(), |f| step_files.iter().any(|s| s == f));
+    names.extend(["README.txt".to_string(), SUMMARY_FILE.to_string()]);
+    let description = &outcome.scene.description;
+    out.write_bytes("README.txt", readme::generic_readme_text(name, description, &names).as_bytes())?;
     // The summary but its step rows, which are printed from the outcome (no copy of them).
     let mut head = outcome.report.without_steps();
     head.notes.extend(skipped);
@@ -119,6 +129,23 @@ pub fn finish_generic_outputs(mut out: OutputDir, outcome: &GenericOutcome) -> R
         file.write_all(b"\n").map_err(|e| OutputError::io(&summary_path, e))
     })?;
     Ok(steps_before_pvd(written, |p| p.file_name().and_then(|f| f.to_str()).unwrap_or(""), is_step))
+}
+
+/// Writes the profile of every interface at every step whose summary row carries it (`run
+/// --profiles all`): `contact_<name>_step_<k>.csv`, k from 1, the columns of `contact_<name>.csv`.
+///
+/// # Errors
+/// [`OutputError`] naming the file.
+pub fn write_step_profiles(out: &mut OutputDir, steps: &[StepResult]) -> Result<(), OutputError> {
+    for (k, step) in steps.iter().enumerate() {
+        for (iface, result) in step.contacts.iter().filter(|(_, r)| r.profile.is_some()) {
+            out.write_bytes(
+                &format!("contact_{}_step_{:03}.csv", file_safe(iface), k + 1),
+                profile_csv(result).as_bytes(),
+            )?;
+        }
+    }
+    Ok(())
 }
 
 /// A summary printed as its whole JSON value would be (keys sorted at every level), with the
@@ -258,6 +285,11 @@ fn draw_history(path: &Path, title: &str, outcome: &GenericOutcome) -> Result<()
             points: at(|c| c.tangential_force),
             markers: true,
         });
+        // The transmitted force's components, signed: a reversal of the load shows.
+        for (c, component) in [(0, "F1"), (1, "F2")] {
+            let points = if c == 0 { at(|r| r.resultant[0]) } else { at(|r| r.resultant[1]) };
+            series.push(Series { label: format!("{}: resultant {component}", iface.name), points, markers: true });
+        }
     }
     let axes = Axes { title: title.into(), x_label: "load step".into(), y_label: "force".into(), ..Axes::default() };
     line_chart(path, &axes, &series)
@@ -283,7 +315,16 @@ fn steps_csv(outcome: &GenericOutcome) -> String {
     header.extend(patterns.iter().map(|p| format!("factor_{p}")));
     header.extend(["status".into(), "iterations".into()]);
     for i in &outcome.built.interfaces {
-        for q in ["normal_force", "tangential_force", "contact_length", "stick_length", "max_pressure", "dissipation"] {
+        for q in [
+            "normal_force",
+            "tangential_force",
+            "contact_length",
+            "stick_length",
+            "max_pressure",
+            "dissipation",
+            "resultant_1",
+            "resultant_2",
+        ] {
             header.push(format!("{}_{q}", i.name));
         }
     }
@@ -301,6 +342,8 @@ fn steps_csv(outcome: &GenericOutcome) -> String {
                     c.stick_length,
                     c.max_pressure,
                     c.dissipation,
+                    c.resultant[0],
+                    c.resultant[1],
                 ] {
                     row.push(format!("{v:e}"));
                 }

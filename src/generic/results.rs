@@ -68,14 +68,37 @@ pub struct ContactResult {
     pub max_pressure: f64,
     /// Friction dissipation accumulated up to this step.
     pub dissipation: f64,
+    /// The force the interface transmits, `[F1, F2]`: the resultant of the contact forces on
+    /// the slave side (the slave curve's body, or the rigid obstacle), `Σ_k Σ_{a on the slave}
+    /// (B_N)_ka λ_k + (B_T)_ka τ_k`; the master side receives its opposite.
+    pub resultant: [f64; 2],
     /// A rigid obstacle's force on the bodies, `[R1, R2]` (the interfaces with a deformable
     /// slave have none: their pair forces are internal).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rigid_resultant: Option<[f64; 2]>,
+    /// Where the contact zones lie: each zone's two ends (in order along the master curve).
+    pub zones: ZoneEnds,
+    /// Where the stick zones lie (none without friction).
+    pub stick_zones: ZoneEnds,
     /// The profile (top level only; omitted in the per-step entries). Boxed: every step's row
     /// holds this field, and a profile's room in each would grow a long history's memory.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile: Option<Box<Profile>>,
+}
+
+/// The ends of the zones of an interface, two per zone (start, end) in order along the master
+/// curve: each end interpolated between the last pair inside and the next one outside as
+/// `contact_length` is (see the module docs).
+#[derive(Debug, Clone, PartialEq, Serialize, Default)]
+pub struct ZoneEnds {
+    /// Arc length along the master curve.
+    pub s: Vec<f64>,
+    /// The points `[x, y]` on the master curve (undeformed).
+    pub points: Vec<[f64; 2]>,
+    /// For a master curve that is a circular arc (every node within 1e-6 of its radius of one
+    /// circle): the angles of the ends about its centre, degrees in (−180, 180]; absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub angles_deg: Option<Vec<f64>>,
 }
 
 /// KKT residuals of a step.
@@ -424,6 +447,10 @@ pub fn contact_result(
     // profiles (slip against gap), which must not make the part longer than the whole.
     let stick_length =
         if iface.friction > 0.0 { zone_length(&arc, &sticks, &slip, &in_contact).min(contact_length) } else { 0.0 };
+    let points: Vec<[f64; 2]> = order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0]).collect();
+    let ends = |inside: &[bool], opening: &[f64]| zone_ends(&arc, &points, inside, opening, &in_contact);
+    let zones = ends(&in_contact, &gap);
+    let stick_zones = if iface.friction > 0.0 { ends(&sticks, &slip) } else { ZoneEnds::default() };
     let profile = with_profile.then(|| {
         Box::new(Profile {
             s: arc.clone(),
@@ -443,9 +470,84 @@ pub fn contact_result(
         stick_length,
         max_pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).fold(0.0, f64::max),
         dissipation,
+        resultant: slave_resultant(built, iface, s),
         rigid_resultant: iface.rigid_slave.then(|| rigid_resultant(built, iface, s)),
+        zones,
+        stick_zones,
         profile,
     }
+}
+
+/// The force on the slave side of the interface: on the nodes of the slave curve, or, for a
+/// rigid obstacle (no DOFs), the opposite of its force on the bodies.
+fn slave_resultant(built: &BuiltProblem, iface: &InterfaceInfo, s: &ContactSolution) -> [f64; 2] {
+    if iface.rigid_slave {
+        let r = rigid_resultant(built, iface, s);
+        return [-r[0], -r[1]];
+    }
+    let mut on_slave = vec![false; built.problem.model.mesh.num_nodes()];
+    for node in iface.slave_contour.nodes.iter() {
+        on_slave[node.0] = true;
+    }
+    iface.pairs.clone().fold([0.0; 2], |a, k| {
+        let f = built
+            .problem
+            .pair_force_on(k, s.normal_force[k], s.tangential_force[k], |n| on_slave.get(n).copied().unwrap_or(false))
+            .unwrap_or([f64::NAN; 2]);
+        [a[0] + f[0], a[1] + f[1]]
+    })
+}
+
+/// The ends of every zone of consecutive pairs where `inside` holds (see [`ZoneEnds`]), each
+/// end placed as in [`zone_length`]; `curve` holds the pairs' master nodes in the order of `arc`.
+fn zone_ends(arc: &[f64], curve: &[[f64; 2]], inside: &[bool], opening: &[f64], in_contact: &[bool]) -> ZoneEnds {
+    let mut s = vec![];
+    let mut k = 0;
+    while k < inside.len() {
+        if !inside[k] {
+            k += 1;
+            continue;
+        }
+        let first = k;
+        while k + 1 < inside.len() && inside[k + 1] {
+            k += 1;
+        }
+        s.extend(zone_between(arc, inside, opening, in_contact, first, k));
+        k += 1;
+    }
+    let points: Vec<[f64; 2]> = s.iter().map(|at| point_at(arc, curve, *at)).collect();
+    let angles_deg = circle_through(curve)
+        .map(|[cx, cy]| points.iter().map(|p| (p[1] - cy).atan2(p[0] - cx).to_degrees()).collect());
+    ZoneEnds { s, points, angles_deg }
+}
+
+/// The point at arc length `at`, linear between the two nodes around it.
+fn point_at(arc: &[f64], points: &[[f64; 2]], at: f64) -> [f64; 2] {
+    let i = arc.partition_point(|s| *s < at).clamp(1, arc.len().max(2) - 1);
+    let (Some(a), Some(b)) = (points.get(i - 1), points.get(i)) else {
+        return points.first().copied().unwrap_or([f64::NAN; 2]);
+    };
+    let t = if arc[i] > arc[i - 1] { ((at - arc[i - 1]) / (arc[i] - arc[i - 1])).clamp(0.0, 1.0) } else { 0.0 };
+    [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
+}
+
+/// The centre of the circle through every point (the circumcircle of the first, middle and
+/// last, every point within 1e-6 of its radius), or `None`.
+fn circle_through(points: &[[f64; 2]]) -> Option<[f64; 2]> {
+    let n = points.len();
+    if n < 3 {
+        return None;
+    }
+    let (a, b, c) = (points[0], points[n / 2], points[n - 1]);
+    let d = 2.0 * (a[0] * (b[1] - c[1]) + b[0] * (c[1] - a[1]) + c[0] * (a[1] - b[1]));
+    if d.abs() < f64::EPSILON {
+        return None;
+    }
+    let sq = |p: [f64; 2]| p[0] * p[0] + p[1] * p[1];
+    let cx = (sq(a) * (b[1] - c[1]) + sq(b) * (c[1] - a[1]) + sq(c) * (a[1] - b[1])) / d;
+    let cy = (sq(a) * (c[0] - b[0]) + sq(b) * (a[0] - c[0]) + sq(c) * (b[0] - a[0])) / d;
+    let r = (a[0] - cx).hypot(a[1] - cy);
+    points.iter().all(|p| ((p[0] - cx).hypot(p[1] - cy) - r).abs() <= 1e-6 * r).then_some([cx, cy])
 }
 
 /// The force a rigid obstacle exerts on the bodies through the interface's pairs, `Σ_k R_k`
@@ -466,6 +568,21 @@ fn zone_length(arc: &[f64], inside: &[bool], opening: &[f64], in_contact: &[bool
     let (Some(first), Some(last)) = (inside.iter().position(|v| *v), inside.iter().rposition(|v| *v)) else {
         return 0.0;
     };
+    let [lo, hi] = zone_between(arc, inside, opening, in_contact, first, last);
+    (hi - lo).abs()
+}
+
+/// The two ends `[start, end]` (arc length) of the zone from pair `first` to pair `last`, each
+/// moved into the neighbouring interval where the `opening` of the next two outside pairs opens
+/// like the 3/2 power (see [`zone_length`]).
+fn zone_between(
+    arc: &[f64],
+    inside: &[bool],
+    opening: &[f64],
+    in_contact: &[bool],
+    first: usize,
+    last: usize,
+) -> [f64; 2] {
     let end = |at: usize, next: Option<usize>, after: Option<usize>| -> f64 {
         let (Some(f), Some(f2)) = (next, after) else { return arc[at] };
         if inside[f] || inside[f2] || (!in_contact[f] && in_contact[at] && opening_is_slip(in_contact, inside)) {
@@ -479,7 +596,7 @@ fn zone_length(arc: &[f64], inside: &[bool], opening: &[f64], in_contact: &[bool
     let n = arc.len();
     let hi = end(last, (last + 1 < n).then_some(last + 1), (last + 2 < n).then_some(last + 2));
     let lo = end(first, first.checked_sub(1), first.checked_sub(2));
-    (hi - lo).abs()
+    [lo, hi]
 }
 
 /// Whether `inside` is a strict part of the contact zone (a stick zone), so that a free

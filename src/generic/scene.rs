@@ -258,6 +258,10 @@ pub struct GenericScene {
     /// The scene file as given.
     #[serde(skip)]
     pub file: PathBuf,
+    /// Every step's row of the summary carries the interfaces' profiles, not only the last
+    /// (not a scene key: `run --profiles all`).
+    #[serde(skip)]
+    pub every_profile: bool,
 }
 
 /// Whether the TOML text is a generic scene (it has a top-level `mesh` and no `[plate_insert]`).

@@ -125,6 +125,7 @@ pub fn write_outputs_into(
         csv::write_profile_csv(p, csv::INSERT_EDGE_HEADER, &final_profiles.insert, tags)
     })?;
     out.write_with("steps.csv", |p| csv::write_steps_csv(p, outcome))?;
+    crate::generic::outputs::write_step_profiles(&mut out, &outcome.report.steps)?;
 
     let mut collection = vec![];
     for (k, (step, p)) in outcome.steps.iter().zip(&profiles).enumerate() {

@@ -11,7 +11,10 @@ pub fn describe(name: &str) -> &'static str {
     let stem = name.rsplit_once('.').map_or(name, |(s, _)| s);
     match (stem, name.rsplit_once('.').map(|(_, e)| e)) {
         ("summary", Some("json")) => {
-            "the run's summary (as `contact2d run --json`): l, b, P, energies, σ*, K, KKT residuals, steps"
+            "the run's summary (as `contact2d run --json`): status, steps, the interface's resultant, zones and profile, reactions, energies, KKT residuals; l, b, P, Φ, σ*, K under \"paper\""
+        }
+        (s, Some("csv")) if s.starts_with("contact_") && s.contains("_step_") => {
+            "one interface's profile at one step (run --profiles all; columns as contact_<name>.csv of a generic run)"
         }
         ("README", _) => "this file",
         ("mesh", _) => {
@@ -32,6 +35,46 @@ pub fn describe(name: &str) -> &'static str {
         (s, Some("vtu")) if s.starts_with("step_") => "one load step for ParaView (VTK XML unstructured grid)",
         _ => "",
     }
+}
+
+/// What the file `name` of a generic run's folder holds (one line).
+pub fn describe_generic(name: &str) -> &'static str {
+    let stem = name.rsplit_once('.').map_or(name, |(s, _)| s);
+    match (stem, name.rsplit_once('.').map(|(_, e)| e)) {
+        ("summary", Some("json")) => "the run's summary (as `contact2d run --json`; docs/user-guide.md lists its keys)",
+        ("README", _) => "this file",
+        ("mesh", _) => "the mesh undeformed and deformed, contact pairs coloured by state (last step)",
+        ("von_mises", _) => "von Mises stress of every body (last step) with its colour bar",
+        ("history", _) => {
+            "each interface's normal and tangential force and its resultant F1, F2 (signed) over the steps"
+        }
+        ("steps", Some("csv")) => {
+            "one row per step: pattern factors, status, iterations, each interface's forces and zone lengths"
+        }
+        ("steps", Some("pvd")) => "ParaView collection of the step files (open this one; time = step number)",
+        (s, Some("vtu")) if s.starts_with("step_") => "one load step for ParaView (VTK XML unstructured grid)",
+        (s, Some("csv")) if s.starts_with("contact_") && s.contains("_step_") => {
+            "one interface's profile at one step (run --profiles all): s, x, y, pressure, shear, gap, slip, state"
+        }
+        (s, Some("csv")) if s.starts_with("contact_") => {
+            "one interface's profile at the last step: s, x, y, pressure, shear, gap, slip, state"
+        }
+        (s, _) if s.starts_with("contact_") => "pressure and shear along one interface's master curve (last step)",
+        _ => "",
+    }
+}
+
+/// The README text of a generic run's folder with the files `written`.
+pub fn generic_readme_text(name: &str, description: &str, written: &[String]) -> String {
+    let mut t = format!("contact2d outputs of scene \"{name}\"\n");
+    if !description.is_empty() {
+        let _ = writeln!(t, "{description}");
+    }
+    t.push_str("Units: those of the scene (forces per unit thickness where the thickness is 1).\n\nFiles:\n");
+    for file in written {
+        let _ = writeln!(t, "  {file:<24} {}", describe_generic(file));
+    }
+    t
 }
 
 /// The README text for the files `written` (names relative to the folder).

@@ -88,6 +88,7 @@ impl PlateInsert {
             solver: SolverEntry { place_zone_ends: None, ..solver.clone() },
             base_dir: PathBuf::new(),
             file: PathBuf::from(&self.mesh),
+            every_profile: false,
         }
     }
 
@@ -129,6 +130,10 @@ impl PlateInsert {
             master_contour,
             slave_contour,
             friction: self.friction,
+            pairing: match self.pairs {
+                PairDiscretisation::NodeToNode => contact2d_contact::Pairing::NodeToNode,
+                PairDiscretisation::NodeToSegment => contact2d_contact::Pairing::NodeToSegment,
+            },
         }
     }
 

@@ -21,6 +21,11 @@ pub fn csv_header(variations: &[Variation], quantities: &[String]) -> String {
 
 /// One CSV row.
 pub fn csv_row(row: &SweepRow, quantities: &[String]) -> String {
+    row_cells(row, quantities).iter().map(|x| quote(x)).collect::<Vec<_>>().join(",") + "\n"
+}
+
+/// The cells of a row: the varied values, the status, the quantities, the iterations, the error.
+fn row_cells(row: &SweepRow, quantities: &[String]) -> Vec<String> {
     let mut c: Vec<String> = row.values.clone();
     match &row.result {
         Ok(v) => {
@@ -36,21 +41,27 @@ pub fn csv_row(row: &SweepRow, quantities: &[String]) -> String {
             c.push(e.clone());
         }
     }
-    c.iter().map(|x| quote(x)).collect::<Vec<_>>().join(",") + "\n"
+    c
 }
 
 fn quote(s: &str) -> String {
     if s.contains([',', '"', '\n']) { format!("\"{}\"", s.replace('"', "\"\"").replace('\n', " ")) } else { s.into() }
 }
 
-/// A Markdown table of the rows.
+/// A Markdown table of the rows; each cell escaped (`|` and line breaks), so that a vector
+/// value or an error message with commas stays in its cell.
 pub fn markdown(variations: &[Variation], rows: &[SweepRow], quantities: &[String]) -> String {
-    let header = csv_header(variations, quantities);
-    let cells = |line: &str| line.trim_end().replace('|', "\\|").replace(',', " | ");
-    let n = header.trim_end().split(',').count();
-    let mut t = format!("| {} |\n|{}\n", cells(&header), "---|".repeat(n));
+    let mut header: Vec<String> = variations.iter().map(|v| v.key.clone()).collect();
+    header.push("status".into());
+    header.extend(quantities.iter().cloned());
+    header.extend(["iterations".into(), "error".into()]);
+    let line = |cells: &[String]| {
+        let escaped: Vec<String> = cells.iter().map(|c| c.replace('|', "\\|").replace('\n', " ")).collect();
+        format!("| {} |", escaped.join(" | "))
+    };
+    let mut t = format!("{}\n|{}\n", line(&header), "---|".repeat(header.len()));
     for row in rows {
-        let _ = writeln!(t, "| {} |", cells(&csv_row(row, quantities)));
+        let _ = writeln!(t, "{}", line(&row_cells(row, quantities)));
     }
     t
 }
@@ -89,13 +100,39 @@ pub fn write_sweep(
     out.close()
 }
 
-fn plot(path: &Path, name: &str, variations: &[Variation], rows: &[SweepRow], q: &str) -> Result<(), OutputError> {
-    let x = |row: &SweepRow| -> f64 {
-        let value = row.values.first().map_or("", String::as_str);
+/// A plot's x coordinate of a varied value.
+type XValue<'a> = Box<dyn Fn(&str) -> f64 + 'a>;
+
+/// The x axis of a sweep's plots: the first varied key's value; for a vector value (`[25.0, 0.0]`)
+/// the one component that varies, or the vector's norm when several do; otherwise the value's
+/// ordinal.
+fn x_axis(variation: &Variation) -> (String, XValue<'_>) {
+    let vector = |v: &str| -> Option<Vec<f64>> {
+        let parsed = toml::from_str::<toml::Table>(&format!("v = {v}")).ok()?;
+        parsed.get("v")?.as_array()?.iter().map(|x| x.as_float().or_else(|| x.as_integer().map(|i| i as f64))).collect()
+    };
+    let vectors: Option<Vec<Vec<f64>>> = variation.values.iter().map(|v| vector(v)).collect();
+    if let Some(vectors) = vectors.filter(|v| v.iter().all(|x| !x.is_empty() && x.len() == v[0].len())) {
+        let varying: Vec<usize> =
+            (0..vectors[0].len()).filter(|&c| vectors.iter().any(|v| v[c] != vectors[0][c])).collect();
+        if let [c] = varying[..] {
+            return (format!("{}[{c}]", variation.key), Box::new(move |v| vector(v).map_or(f64::NAN, |x| x[c])));
+        }
+        let norm = move |v: &str| vector(v).map_or(f64::NAN, |x| x.iter().map(|c| c * c).sum::<f64>().sqrt());
+        return (format!("|{}| (norm)", variation.key), Box::new(norm));
+    }
+    let ordinal = |value: &str| {
         value
             .parse()
-            .unwrap_or_else(|_| variations[0].values.iter().position(|v| v == value).map_or(f64::NAN, |i| i as f64))
+            .unwrap_or_else(|_| variation.values.iter().position(|v| v == value).map_or(f64::NAN, |i| i as f64))
     };
+    (variation.key.clone(), Box::new(ordinal))
+}
+
+fn plot(path: &Path, name: &str, variations: &[Variation], rows: &[SweepRow], q: &str) -> Result<(), OutputError> {
+    let Some(first) = variations.first() else { return Ok(()) };
+    let (x_label, value) = x_axis(first);
+    let x = |row: &SweepRow| value(row.values.first().map_or("", String::as_str));
     let mut series: Vec<Series> = vec![];
     for row in rows {
         let label = if variations.len() > 1 {
@@ -114,11 +151,46 @@ fn plot(path: &Path, name: &str, variations: &[Variation], rows: &[SweepRow], q:
             None => series.push(Series { label, points: vec![(x(row), y)], markers: true }),
         }
     }
-    let axes = Axes {
-        title: format!("{name}: {q}"),
-        x_label: variations.first().map_or(String::new(), |v| v.key.clone()),
-        y_label: q.to_string(),
-        ..Axes::default()
-    };
+    let axes = Axes { title: format!("{name}: {q}"), x_label, y_label: q.to_string(), ..Axes::default() };
     line_chart(path, &axes, &series)
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+
+    fn force(values: &[&str]) -> Variation {
+        Variation { key: "load.pin_back.force".into(), values: values.iter().map(|v| v.to_string()).collect() }
+    }
+
+    /// A vector value and an error message with commas and a bar stay in their cells: every
+    /// line has as many cells as the header.
+    #[test]
+    fn markdown_cells_hold_commas_and_bars() {
+        let v = force(&["[25.0, 0.0]", "[50.0, 0.0]"]);
+        let rows = [
+            SweepRow { values: vec!["[25.0, 0.0]".into()], result: Ok(serde_json::json!({"status": "converged"})) },
+            SweepRow { values: vec!["[50.0, 0.0]".into()], result: Err("no equilibrium, step 1 | pin".into()) },
+        ];
+        let table = markdown(&[v], &rows, &["P".into()]);
+        let cells = |line: &str| line.split(" | ").count();
+        let lines: Vec<&str> = table.lines().filter(|l| !l.starts_with("|-")).collect();
+        assert!(lines.iter().all(|l| cells(l) == cells(lines[0])), "{table}");
+        assert!(table.contains("[25.0, 0.0]") && table.contains("step 1 \\| pin"), "{table}");
+    }
+
+    /// A vector key is plotted against the one component that varies, or its norm.
+    #[test]
+    fn a_vector_key_is_plotted_against_its_varying_component_or_norm() {
+        let one = force(&["[25.0, 0.0]", "[50.0, 0.0]"]);
+        let (label, x) = x_axis(&one);
+        assert_eq!((label.as_str(), x("[50.0, 0.0]")), ("load.pin_back.force[0]", 50.0));
+        let both = force(&["[3.0, 4.0]", "[6.0, 8.0]"]);
+        let (label, x) = x_axis(&both);
+        assert_eq!((label.as_str(), x("[6.0, 8.0]")), ("|load.pin_back.force| (norm)", 10.0));
+        let scalar = force(&["0.1", "0.2"]);
+        let (label, x) = x_axis(&scalar);
+        assert_eq!((label.as_str(), x("0.2")), ("load.pin_back.force", 0.2));
+    }
 }

@@ -194,6 +194,9 @@ pub struct InterfaceInfo {
     pub slave_contour: Contour,
     /// Its friction coefficient.
     pub friction: f64,
+    /// The pairing used: as given, or what [`Pairing::Automatic`] chose (node to segment where
+    /// the curves' nodes face each other one to one, else segment to segment).
+    pub pairing: Pairing,
 }
 
 /// A built problem with what its outputs need.
@@ -245,6 +248,7 @@ impl ProblemDescription {
         for c in &self.contacts {
             let (mut p, slave_contour, slave_region) = self.pair(&model, c)?;
             let master_contour = Contour::from_group(&model.mesh, &c.master)?;
+            let pairing = Self::pairing_used(&model, c, &master_contour, &slave_contour);
             let start = pairs.len();
             gaps.extend(p.iter().map(|pair| match c.gap {
                 GapDescription::Geometric => pair.gap,
@@ -264,6 +268,7 @@ impl ProblemDescription {
                 master_contour,
                 slave_contour,
                 friction: c.friction,
+                pairing,
             });
         }
         let patterns = self.pattern_names();
@@ -364,17 +369,22 @@ impl ProblemDescription {
                 c.name
             )));
         }
-        let segments = match c.pairing {
-            Pairing::NodeToSegment | Pairing::NodeToNode => false,
-            Pairing::SegmentToSegment => true,
-            Pairing::Automatic => !nodes_face_each_other(&model.mesh.points, &master, &slave),
-        };
+        let segments = Self::pairing_used(model, c, &master, &slave) == Pairing::SegmentToSegment;
         let pairs = if segments {
             pair_segments(model, &master, &slave, &region)?
         } else {
             pair_contours(model, &master, &slave, &region)?
         };
         Ok((pairs, slave, region))
+    }
+
+    /// The pairing of contact `c` between its curves: as given, or [`Pairing::Automatic`]'s choice.
+    fn pairing_used(model: &Model, c: &ContactDescription, master: &Contour, slave: &Contour) -> Pairing {
+        match c.pairing {
+            Pairing::Automatic if nodes_face_each_other(&model.mesh.points, master, slave) => Pairing::NodeToSegment,
+            Pairing::Automatic => Pairing::SegmentToSegment,
+            given => given,
+        }
     }
 
     /// The pattern names of the non-zero prescribed values and the loads ([`pattern_order`]).

@@ -210,12 +210,17 @@ pub(crate) fn solve_floating_step(
     legs.push(step.factors.to_vec());
     let (mut start, mut guess) = (step.start.clone(), step.guess.map(<[PairState]>::to_vec));
     let (mut dissipation, mut inner, mut outer) = (0.0, 0, 0);
+    let mut trace = vec![];
     let mut friction_slip = vec![0.0; step.start.slip.len()];
     let mut last = None;
     for leg in &legs {
         let answer = balance_pins(loaded, interface, modes, step, leg, &start, guess.as_deref(), alpha, solve)?;
         dissipation += answer.solution.dissipation;
         friction_slip.iter_mut().zip(&answer.solution.slip_increment).for_each(|(a, d)| *a += d);
+        let done = inner;
+        trace.extend(
+            answer.solution.trace.iter().map(|r| crate::IterationRecord { iteration: done + r.iteration, ..*r }),
+        );
         inner += answer.solution.iterations;
         outer += answer.iterations;
         let solved = answer.solution.status.is_solved();
@@ -233,6 +238,7 @@ pub(crate) fn solve_floating_step(
     // The step's slip increment is the friction slip of its legs (landing travel excluded).
     answer.solution.slip_increment = friction_slip;
     answer.solution.iterations = inner;
+    answer.solution.trace = trace;
     answer.iterations = outer;
     answer.solution.time = clock.elapsed();
     Ok(answer)
@@ -292,6 +298,8 @@ fn balance_pins(
     };
     let mut start = step_start.clone();
     let inner_iterations = std::cell::Cell::new(0);
+    // Every inner solve's iterations, numbered on: the step's log is all of them.
+    let trace = std::cell::RefCell::new(Vec::<crate::IterationRecord>::new());
     let evaluate = |loaded: &mut ContactProblem,
                     interface: &mut Interface,
                     alpha: &[f64],
@@ -301,7 +309,11 @@ fn balance_pins(
         loaded.apply_load(factors, Some(&modes.anchor_load(alpha)))?;
         interface.update_load(loaded);
         let solution = solve(loaded, interface, start, guess);
-        inner_iterations.set(inner_iterations.get() + solution.iterations);
+        let done = inner_iterations.get();
+        trace
+            .borrow_mut()
+            .extend(solution.trace.iter().map(|r| crate::IterationRecord { iteration: done + r.iteration, ..*r }));
+        inner_iterations.set(done + solution.iterations);
         let u_free = loaded.system.dofs.restrict_free(&solution.displacement);
         let s = modes.pin_forces(&u_free, alpha);
         Ok((solution, s))
@@ -311,6 +323,7 @@ fn balance_pins(
     let size = length_scale(loaded);
     let finish = |mut solution: ContactSolution, iterations: usize, s: &[f64]| {
         solution.iterations = inner_iterations.get();
+        solution.trace = trace.take();
         FloatingAnswer { solution, iterations, residual: norm1(s) }
     };
     loop {

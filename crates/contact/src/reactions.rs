@@ -78,12 +78,28 @@ impl ContactProblem {
     /// # Errors
     /// [`ContactError::InvalidInput`] for a pair index out of range.
     pub fn pair_resultant(&self, k: usize, normal_force: f64, tangential_force: f64) -> Result<[f64; 2], ContactError> {
+        self.pair_force_on(k, normal_force, tangential_force, |_| true)
+    }
+
+    /// The force pair `k` exerts on the nodes that `on` selects (by node index),
+    /// `[Σ_{a ∈ on} (B_N)_ka λ_k + (B_T)_ka τ_k]` in x1 and x2: e.g. on one side of the pair,
+    /// whose sum over the pairs of an interface is the force that side receives.
+    ///
+    /// # Errors
+    /// [`ContactError::InvalidInput`] for a pair index out of range.
+    pub fn pair_force_on(
+        &self,
+        k: usize,
+        normal_force: f64,
+        tangential_force: f64,
+        on: impl Fn(usize) -> bool,
+    ) -> Result<[f64; 2], ContactError> {
         let (Some(normal), Some(tangent)) = (self.normal_rows.get(k), self.tangent_rows.get(k)) else {
             return Err(ContactError::InvalidInput(format!("pair {k} of {}", self.num_pairs())));
         };
         let mut out = [0.0; 2];
         for (row, force) in [(normal, normal_force), (tangent, tangential_force)] {
-            for (dof, c) in self.row_entries(row) {
+            for (dof, c) in self.row_entries(row).filter(|(dof, _)| on(dof.0 / 2)) {
                 out[dof.0 % 2] += c * force;
             }
         }
