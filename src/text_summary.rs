@@ -28,9 +28,7 @@ pub(crate) fn print_summary(
 ) -> std::io::Result<()> {
     heading(out, &r.scene, (r.dofs, r.pairs), &format!("{:?}", r.algorithm), r.status, (r.iterations, r.steps.len()))?;
     // Every choice the run made on its own: a refinement study must not mix them unknowingly.
-    let pairings: Vec<String> = r.pairing_used.iter().map(|(name, p)| format!("{name}: {p}")).collect();
-    let scaled = if r.scaled { "solved once and scaled (no gap, proportional loads)" } else { "solved step by step" };
-    writeln!(out, "  method: {}; pairing {}", scaled, pairings.join(", "))?;
+    writeln!(out, "  {}", contact2d::output::readme::method_line(r))?;
     if let Some(paper) = paper {
         print_paper(out, paper)?;
     }

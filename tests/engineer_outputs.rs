@@ -96,6 +96,8 @@ fn every_steps_profile_is_reported_and_written() {
     }
     let readme = std::fs::read_to_string(dir.join("README.txt")).unwrap();
     assert!(readme.contains("contact_bore_step_001.csv") && readme.contains("summary.json"), "{readme}");
+    let method = format!("pairing bore: {}", summary["pairing_used"]["bore"].as_str().unwrap());
+    assert!(readme.contains(&method), "the README records the method: {readme}");
     let (last_only, _) = run(&[PIN, "--json"]);
     assert!(last_only["steps"][0]["contacts"]["bore"].get("profile").is_none());
     std::fs::remove_dir_all(&dir).unwrap();

@@ -109,7 +109,7 @@ pub fn finish_generic_outputs(mut out: OutputDir, outcome: &GenericOutcome) -> R
     let mut names = steps_before_pvd(out.written().to_vec(), |f| f.as_str(), |f| step_files.iter().any(|s| s == f));
     names.extend(["README.txt".to_string(), SUMMARY_FILE.to_string()]);
     let description = &outcome.scene.description;
-    out.write_bytes("README.txt", readme::generic_readme_text(name, description, &names).as_bytes())?;
+    out.write_bytes("README.txt", readme::generic_readme_text(&outcome.report, description, &names).as_bytes())?;
     // The summary but its step rows, which are printed from the outcome (no copy of them).
     let mut head = outcome.report.without_steps();
     head.notes.extend(skipped);

@@ -3,6 +3,7 @@
 use std::fmt::Write as _;
 
 use super::csv::{HOLE_EDGE_HEADER, INSERT_EDGE_HEADER, STEPS_HEADER};
+use crate::generic::GenericReport;
 use crate::run::RunOutcome;
 use crate::scene::Scene;
 
@@ -65,16 +66,26 @@ pub fn describe_generic(name: &str) -> &'static str {
 }
 
 /// The README text of a generic run's folder with the files `written`.
-pub fn generic_readme_text(name: &str, description: &str, written: &[String]) -> String {
-    let mut t = format!("contact2d outputs of scene \"{name}\"\n");
+pub fn generic_readme_text(report: &GenericReport, description: &str, written: &[String]) -> String {
+    let mut t = format!("contact2d outputs of scene \"{}\"\n", report.scene);
     if !description.is_empty() {
         let _ = writeln!(t, "{description}");
     }
+    let _ = writeln!(t, "{}", method_line(report));
     t.push_str("Units: those of the scene (forces per unit thickness where the thickness is 1).\n\nFiles:\n");
     for file in written {
         let _ = writeln!(t, "  {file:<24} {}", describe_generic(file));
     }
     t
+}
+
+/// The choices a run made on its own: the algorithm, whether the history was solved once and
+/// scaled, and the pairing of each interface (what `automatic` chose).
+pub fn method_line(report: &GenericReport) -> String {
+    let pairings: Vec<String> = report.pairing_used.iter().map(|(name, p)| format!("{name}: {p}")).collect();
+    let history =
+        if report.scaled { "solved once and scaled (no gap, proportional loads)" } else { "solved step by step" };
+    format!("Method: {}, {history}; pairing {}.", report.algorithm.key(), pairings.join(", "))
 }
 
 /// The README text for the files `written` (names relative to the folder).
@@ -86,11 +97,12 @@ pub fn readme_text(scene: &Scene, outcome: &RunOutcome, written: &[String]) -> S
     }
     let _ = writeln!(
         t,
-        "{} load step(s), final w = {}, algorithm {:?}, status {}.\n",
+        "{} load step(s), final w = {}, algorithm {:?}, status {}.\n{}\n",
         outcome.steps.len(),
         outcome.paper.w,
         outcome.report.algorithm,
-        outcome.report.status
+        outcome.report.status,
+        method_line(&outcome.report)
     );
     t.push_str(
         "Units: non-dimensional as in the paper (spec section 7): lengths / R, displacements and the\n\
