@@ -17,7 +17,7 @@ use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
 
-use contact2d::output::write_outputs;
+use contact2d::plate_insert::outputs::write_outputs;
 use contact2d::plate_insert::published::{PUBLISHED, PublishedCase};
 use contact2d::plate_insert::report::PaperReport;
 use contact2d::run::{RunOutcome, solve_scene};

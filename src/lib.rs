@@ -24,6 +24,7 @@ pub mod output;
 pub mod plate_insert;
 pub mod run;
 pub mod scene;
+pub mod schema;
 #[cfg(feature = "native")]
 pub mod stress;
 #[cfg(feature = "native")]

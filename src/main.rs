@@ -219,7 +219,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 print_summary(&mut stdout, report, Some(&outcome.paper))?;
             }
             if let Some(folder) = folder {
-                let written = contact2d::output::write_outputs_into(folder, &scene, &outcome)?;
+                let written = contact2d::plate_insert::outputs::write_outputs_into(folder, &scene, &outcome)?;
                 // With --json, stdout stays one JSON object; the file list goes to stderr.
                 let list = |p: &std::path::PathBuf| format!("  {}", p.display());
                 let lines: Vec<String> = written.iter().map(list).collect();

@@ -187,7 +187,7 @@ fn figures_that_cannot_be_drawn_are_skipped_with_a_note() {
     // field cannot be drawn; the run's other files are still written, whole.
     outcome.steps.last_mut().unwrap().solution.displacement[0] = f64::NAN;
     let dir = fresh("undrawable");
-    let written = contact2d::output::write_outputs(&dir, &scene, &outcome).unwrap();
+    let written = contact2d::plate_insert::outputs::write_outputs(&dir, &scene, &outcome).unwrap();
     assert_eq!(written.last().unwrap().file_name().unwrap(), "summary.json");
     assert!(!dir.join("mesh.png").exists() && !dir.join("von_mises.svg").exists());
     let summary: serde_json::Value =

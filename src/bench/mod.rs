@@ -173,7 +173,7 @@ impl BenchConfig {
             .algorithms
             .iter()
             .map(|s| {
-                crate::scene::algorithm_from_key(s)
+                crate::schema::algorithm_from_key(s)
                     .ok_or_else(|| flag("--algorithms", format!("unknown algorithm {s:?}")))
             })
             .collect::<Result<Vec<_>, _>>()?;

@@ -45,7 +45,7 @@ use serde_json::Value;
 
 use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::{OutputDir, OutputError};
-use crate::scene::SceneError;
+use crate::schema::SceneError;
 
 use crate::subject::{RunFailure, Subject};
 

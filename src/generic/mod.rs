@@ -29,7 +29,7 @@ pub use scene::GenericScene;
 
 use crate::input_file::{InputFileError, MAX_MESH_BYTES, check_input_file};
 use crate::output::step_view::bounding_box;
-use crate::scene::SceneError;
+use crate::schema::SceneError;
 
 /// Errors of a generic run.
 #[derive(Debug, thiserror::Error)]
@@ -119,7 +119,7 @@ pub struct GenericReport {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub failed_check: Option<String>,
     /// The algorithm (its scene key).
-    #[serde(serialize_with = "crate::scene::serialize_algorithm")]
+    #[serde(serialize_with = "crate::schema::serialize_algorithm")]
     pub algorithm: contact2d_contact::ContactAlgorithm,
     /// Free DOFs.
     pub dofs: usize,
@@ -153,7 +153,7 @@ pub struct GenericReport {
     /// What a user should know about how the numbers were obtained.
     pub notes: Vec<String>,
     /// The blocks of the scene's preset, by name (`paper`: the plate-insert preset's quantities,
-    /// `crate::plate_insert::report`); none for a plain generic scene.
+    /// its post-processor `src/plate_insert/report.rs`); none for a plain generic scene.
     #[serde(flatten)]
     pub post: BTreeMap<String, serde_json::Value>,
 }
@@ -206,7 +206,7 @@ pub struct GenericOutcome {
 /// # Errors
 /// [`SceneError`] naming the file and what is wrong.
 pub fn load_scene(path: &Path, overrides: &[String]) -> Result<GenericScene, SceneError> {
-    GenericScene::from_toml_str(&crate::scene::read_scene_text(path)?, path, overrides)
+    GenericScene::from_toml_str(&crate::schema::read_scene_text(path)?, path, overrides)
 }
 
 /// Solves a generic scene, calling `on_step(done, total)` after each step.

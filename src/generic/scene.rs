@@ -45,7 +45,7 @@ use contact2d_element::{Formulation, PlaneCondition, locking_warning};
 use contact2d_fem::Component;
 use contact2d_mesh::Mesh;
 
-use crate::scene::{SceneError, SolverEntry, parse_scene_toml};
+use crate::schema::{SceneError, SolverEntry, parse_scene_toml};
 
 /// The plane condition as spelled in scene files.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]

@@ -1,6 +1,8 @@
-//! Outputs of a solved scene: figures (PNG and SVG), CSV tables, VTU files for ParaView.
-//!
-//! [`write_outputs`] writes the folder of `contact2d run SCENE --out DIR`:
+//! Writers of (problem, solution) every scene's outputs use: the output folder written whole
+//! ([`atomic`]), line charts ([`chart`]), the mesh and von Mises figures, VTU files for ParaView,
+//! and the README's descriptions. The generic run's folder is written by
+//! `crate::generic::outputs`; the plate-insert preset's own figures and tables by its
+//! post-processor (`crate::plate_insert::outputs`), which writes this folder:
 //!
 //! ```text
 //! summary.json                     the run's summary (the --json object) plus "files", the list of
@@ -19,142 +21,27 @@
 pub mod atomic;
 #[cfg(feature = "native")]
 pub mod chart;
-pub mod csv;
 mod error;
 #[cfg(feature = "native")]
 pub mod field_plot;
 #[cfg(feature = "native")]
-pub mod figures;
-#[cfg(feature = "native")]
 pub mod mesh_plot;
-pub mod profiles;
 pub mod readme;
 pub mod step_view;
 #[cfg(feature = "native")]
 pub mod vtu;
 
 #[cfg(feature = "native")]
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 pub use atomic::OutputDir;
 pub use error::OutputError;
-
-#[cfg(feature = "native")]
-use crate::run::RunOutcome;
-#[cfg(feature = "native")]
-use crate::scene::Scene;
 
 /// The figure formats written for every figure.
 pub const FIGURE_EXTENSIONS: [&str; 2] = ["png", "svg"];
 
 /// The manifest of a run folder: the summary, written last, listing the run's files.
 pub const SUMMARY_FILE: &str = "summary.json";
-
-#[cfg(feature = "native")]
-/// Writes every output of a solved scene into `dir` (see [`write_outputs_into`]); the folder is
-/// prepared (created, checked, locked) here. Prefer [`atomic::OutputDir::prepare`] before
-/// solving and [`write_outputs_into`] after, so that a bad folder fails before the work.
-///
-/// # Errors
-/// [`OutputError`] naming the folder or the first file that could not be written.
-pub fn write_outputs(dir: &Path, scene: &Scene, outcome: &RunOutcome) -> Result<Vec<PathBuf>, OutputError> {
-    write_outputs_into(OutputDir::prepare(dir, Some(SUMMARY_FILE))?, scene, outcome)
-}
-
-#[cfg(feature = "native")]
-/// Writes every output of a solved scene into the prepared folder `out` and returns the paths
-/// written, the summary last: each file atomically, stale files of an earlier run removed, the
-/// summary (with `"files"`, the manifest) last. A figure that cannot be drawn (non-finite or
-/// unrepresentable values) is skipped with a note in the summary's `notes` and the README.
-///
-/// # Errors
-/// [`OutputError`] naming the first file that could not be written; the folder then holds no
-/// summary and none of this run's files.
-pub fn write_outputs_into(
-    mut out: OutputDir,
-    scene: &Scene,
-    outcome: &RunOutcome,
-) -> Result<Vec<PathBuf>, OutputError> {
-    let dir = out.path().to_path_buf();
-    let last = outcome
-        .steps
-        .last()
-        .ok_or_else(|| OutputError::MissingData { path: dir.clone(), reason: "the run has no solved step".into() })?;
-    let mut skipped: Vec<String> = vec![];
-
-    let n = outcome.steps.len();
-    let step_label = format!("step {n}/{n}, w = {:.4}", last.solution.load_factor);
-    let title = |what: &str| format!("{}: {what} ({step_label})", scene.name);
-    let profiles: Vec<profiles::Profiles> =
-        outcome.steps.iter().map(profiles::contour_profiles).collect::<Result<_, _>>()?;
-    let final_profiles = profiles
-        .last()
-        .ok_or_else(|| OutputError::MissingData { path: dir.clone(), reason: "no contour profile".into() })?;
-    let elastic_insert = last.case.problem.model.body("insert").is_some();
-    let last_view = profiles::flagship_view(last, final_profiles);
-
-    for ext in FIGURE_EXTENSIONS {
-        figure(&mut out, &format!("mesh.{ext}"), &mut skipped, |p| {
-            mesh_plot::draw_mesh(p, &title("mesh"), &last_view)
-        })?;
-        let ends: Vec<(&str, f64)> = [("l", last.results.contact_end), ("b", last.results.stick_end)]
-            .into_iter()
-            .filter_map(|(name, v)| Some((name, v?)))
-            .collect();
-        figure(&mut out, &format!("hole_edge.{ext}"), &mut skipped, |p| {
-            figures::draw_hole_edge(p, &title("hole edge"), &final_profiles.hole, &ends)
-        })?;
-        if elastic_insert {
-            figure(&mut out, &format!("insert_hoop.{ext}"), &mut skipped, |p| {
-                figures::draw_insert_hoop(p, &title("insert hoop stress"), &final_profiles.insert)
-            })?;
-        }
-        figure(&mut out, &format!("von_mises.{ext}"), &mut skipped, |p| {
-            field_plot::draw_von_mises(p, &title("von Mises stress"), &last_view)
-        })?;
-        if n > 1 {
-            figure(&mut out, &format!("history.{ext}"), &mut skipped, |p| {
-                figures::draw_history(p, &format!("{}: zone ends over the loading", scene.name), outcome)
-            })?;
-        }
-    }
-
-    let tags = &last.case.problem.model.mesh.node_tags;
-    out.write_with("hole_edge.csv", |p| csv::write_profile_csv(p, csv::HOLE_EDGE_HEADER, &final_profiles.hole, tags))?;
-    out.write_with("insert_edge.csv", |p| {
-        csv::write_profile_csv(p, csv::INSERT_EDGE_HEADER, &final_profiles.insert, tags)
-    })?;
-    out.write_with("steps.csv", |p| csv::write_steps_csv(p, outcome))?;
-    crate::generic::outputs::write_step_profiles(&mut out, &outcome.report.steps)?;
-
-    let mut collection = vec![];
-    for (k, (step, p)) in outcome.steps.iter().zip(&profiles).enumerate() {
-        let name = step_file_name(k);
-        out.write_with(&name, |tmp| vtu::write_step_vtu(tmp, &profiles::flagship_view(step, p)))?;
-        collection.push((step.solution.load_factor, name));
-    }
-    out.write_with("steps.pvd", |p| vtu::write_pvd(p, &collection))?;
-
-    let mut names: Vec<String> = out.written().to_vec();
-    names.extend(["README.txt".to_string(), SUMMARY_FILE.to_string()]);
-    let mut readme = readme::readme_text(scene, outcome, &names);
-    if !skipped.is_empty() {
-        readme.push_str("\nNot drawn (the data cannot be plotted; the CSV and VTU files hold the values):\n");
-        for note in &skipped {
-            readme.push_str(&format!("  {note}\n"));
-        }
-    }
-    out.write_bytes("README.txt", readme.as_bytes())?;
-
-    let mut report = outcome.report.clone();
-    report.notes.extend(skipped);
-    let summary_path = dir.join(SUMMARY_FILE);
-    out.finish(|files| {
-        let value = serde_json::to_value(&report)
-            .map_err(|e| OutputError::Serialize { path: summary_path.clone(), reason: e.to_string() })?;
-        atomic::manifest_json(value, files, &summary_path)
-    })
-}
 
 #[cfg(feature = "native")]
 /// Draws one figure through `out`; a figure that cannot be drawn is noted in `skipped` instead.

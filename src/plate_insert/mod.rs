@@ -23,6 +23,7 @@ mod contour_history;
 mod corners;
 mod generated_mesh;
 mod group_geometry;
+pub mod outputs;
 mod placed;
 pub mod preset;
 pub mod published;

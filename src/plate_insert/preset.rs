@@ -24,7 +24,7 @@ use super::{PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem}
 use crate::generic::scene::{
     BodyEntry, ContactEntry, FixEntry, FormulationKey, GapKey, GenericScene, LoadingSection, PairingKey, PlaneKey,
 };
-use crate::scene::SolverEntry;
+use crate::schema::SolverEntry;
 
 /// The name of the preset's one contact interface.
 pub const INTERFACE: &str = "hole";

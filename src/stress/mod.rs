@@ -231,7 +231,7 @@ pub fn run_command(args: &StressArgs) -> Result<String, StressError> {
         .algorithms
         .iter()
         .map(|s| {
-            crate::scene::algorithm_from_key(s)
+            crate::schema::algorithm_from_key(s)
                 .ok_or_else(|| StressError::Flag { flag: "--algorithms", reason: format!("unknown algorithm {s:?}") })
         })
         .collect::<Result<Vec<_>, _>>()?;

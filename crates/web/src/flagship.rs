@@ -19,7 +19,7 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use contact2d::generic::GenericReport;
-use contact2d::output::profiles::{ProfileRow, contour_profiles};
+use contact2d::plate_insert::outputs::profiles::{ProfileRow, contour_profiles};
 use contact2d::plate_insert::published::{PUBLISHED, PublishedCase};
 use contact2d::run::{RunOutcome, Silent, solve_scene_on_mesh};
 use contact2d::scene::{Scene, VariantKey};

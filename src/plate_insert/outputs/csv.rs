@@ -7,8 +7,8 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use super::OutputError;
 use super::profiles::{ProfileRow, state_name};
+use crate::output::OutputError;
 use crate::run::RunOutcome;
 
 /// Header of `hole_edge.csv`.

@@ -91,7 +91,7 @@ pub(crate) fn apply_override(root: &mut toml::Value, assignment: &str) -> Result
 #[cfg(test)]
 #[allow(clippy::unwrap_used)]
 mod tests {
-    use super::super::Scene;
+    use crate::scene::Scene;
     use std::path::Path;
 
     const SCENE: &str = "name = \"t\"\n[plate_insert]\nmesh = \"m.msh\"\nvariant = \"hole_master\"\nload = 1.0\n[solver]\nalgorithm = \"active_set\"\n";

@@ -1,5 +1,5 @@
 //! The paper's line figures (spec §7): the hole-edge profiles, the insert's hoop stress, and the
-//! zone ends over a loading history, drawn with [`super::chart::line_chart`].
+//! zone ends over a loading history, drawn with [`crate::output::chart::line_chart`].
 //!
 //! ```text
 //! hole_edge     s_φφ, p, q on Γ_p vs η = 1 − φ/π      (stresses and tractions / E1)
@@ -9,9 +9,9 @@
 
 use std::path::Path;
 
-use super::OutputError;
-use super::chart::{Axes, Series, line_chart};
 use super::profiles::ProfileRow;
+use crate::output::OutputError;
+use crate::output::chart::{Axes, Series, line_chart};
 use crate::run::RunOutcome;
 
 /// The x label of every profile figure.

@@ -22,8 +22,8 @@ use contact2d_contact::{ContactPair, PairState, tributary_weights};
 use contact2d_fem::{BodyId, StressRecovery, stresses_along_curve};
 use contact2d_mesh::{Contour, NodeId};
 
-use super::OutputError;
-use super::step_view::{NodeValues, StepView};
+use crate::output::OutputError;
+use crate::output::step_view::{NodeValues, StepView};
 use crate::plate_insert::report::PaperStep as SolvedStep;
 use crate::plate_insert::{PairingVariant, PlateInsertProblem};
 
@@ -85,7 +85,7 @@ pub fn state_name(state: PairState) -> &'static str {
     }
 }
 
-pub use super::step_view::state_code;
+pub use crate::output::step_view::state_code;
 
 /// The writers' view of a flagship step: its problem and solution, the rigid insert's edge as
 /// an obstacle, the contact values of its profiles, and the non-dimensional labels.
