@@ -397,7 +397,7 @@ pub struct LoadPattern {
 /// `K_ff` factored bordered by the pair rows up to [`crate::linear::SPARSE_FROM_PAIRS`] pairs
 /// (the factor's last block is then the compliance `C = B K⁻¹ Bᵀ` of the bodies at the pairs,
 /// crate::interface), refactoring `previous`'s symbolic analysis when it has the same pattern;
-/// `K` alone (AMD) above. Returns the factor and whether it is bordered.
+/// `K` alone (AMD, supernodal) above. Returns the factor and whether it is bordered.
 fn factor_stiffness(
     system: &LinearSystem,
     normal_rows: &[PairRow],
@@ -411,7 +411,7 @@ fn factor_stiffness(
                 s.refactor(&system.stiffness)?;
                 s
             }
-            _ => CholeskySolver::factor(&system.stiffness)?,
+            _ => CholeskySolver::factor_supernodal(&system.stiffness)?,
         };
         return Ok((solver, false));
     }

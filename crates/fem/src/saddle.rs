@@ -66,6 +66,8 @@ impl SaddlePointSolver {
         crate::solve::check_square(k)?;
         let (n, r) = (k.nrows(), rows.len());
         let (matrix, row_entries, row_diagonal) = saddle_lower(k, rows)?;
+        // AMD on the whole pattern: it knows that each row joins the DOFs of a pair (AMD on K
+        // alone, the rows then inserted, gave 5 times the fill on the long-interface meshes).
         let amd = fill_reducing_permutation_of_pattern(&matrix)?;
         // Each row just after the last DOF of its support (a row with no support first).
         let mut position = vec![0usize; n + r];

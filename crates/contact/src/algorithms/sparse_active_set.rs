@@ -12,7 +12,7 @@
 //!
 //! The same update and constants as the condensed path, which reads `C_kk` off the compliances:
 //! here they come from one multi-RHS solve, over every pair up to 64 pairs (the same constants
-//! up to round-off, so the same iterates) and over 64 pairs evenly spread beyond (an estimate of
+//! up to round-off, so the same iterates) and over 8 pairs evenly spread beyond (an estimate of
 //! the same mean; `c` sets the path of the iteration, not its fixed point). A state that repeats
 //! is the solution on either path, and the answers agree to round-off (`tests/sparse_path.rs`).
 
@@ -20,22 +20,25 @@ use web_time::Instant;
 
 use crate::algorithms::full_system::{contact_stiffness, dot_free, row_offsets};
 use crate::interface::Interface;
-use crate::kkt::{StateKkt, StateSolution};
+use crate::kkt::{Accuracy, StateKkt, StateSolution};
 use crate::problem::{ContactProblem, PairRow};
 use crate::report::{RawSolution, finish_from_displacement};
 use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
 
-/// Pairs up to which the complementarity constants use every pair's compliance; above, this
-/// many pairs evenly spread along the list.
-const COMPLIANCE_SAMPLES: usize = 64;
+/// Pairs up to which the complementarity constants use every pair's compliance.
+const COMPLIANCE_EXACT: usize = 64;
+
+/// Pairs, evenly spread along the list, whose compliances estimate the constants above
+/// [`COMPLIANCE_EXACT`] pairs (each costs two columns of one multi-RHS solve).
+const COMPLIANCE_SAMPLES: usize = 8;
 
 /// `(c_N, c_T)`: the condensed path's `1 / mean diag C_NN` and `1 / mean diag C_TT`
 /// (`C_kk = b_k · K⁻¹ b_k`), from one multi-RHS solve over every pair up to
-/// [`COMPLIANCE_SAMPLES`] pairs (the same constants, up to round-off) or over that many pairs
-/// evenly spread (an estimate of the same mean).
+/// [`COMPLIANCE_EXACT`] pairs (the same constants, up to round-off) or over
+/// [`COMPLIANCE_SAMPLES`] pairs evenly spread (an estimate of the same mean).
 fn complementarity_constants(problem: &ContactProblem, frictional: bool) -> (f64, f64) {
     let m = problem.num_pairs();
-    let picked: Vec<usize> = if m <= COMPLIANCE_SAMPLES {
+    let picked: Vec<usize> = if m <= COMPLIANCE_EXACT {
         (0..m).collect()
     } else {
         (0..COMPLIANCE_SAMPLES).map(|i| i * (m - 1) / (COMPLIANCE_SAMPLES - 1)).collect()
@@ -90,32 +93,33 @@ pub(crate) fn solve_sparse_active_set(
     let mut iterations = 0;
     let mut trace = Vec::new();
     let (g_hat, s_hat) = row_offsets(problem, w);
+    let mut warm: Option<Vec<f64>> = None;
+    // The state's solution to `accuracy`, its gaps and slips, and the state the update picks.
+    let mut evaluate = |state: &[PairState], accuracy: Accuracy, warm: Option<&[f64]>| {
+        let solution = cache.as_mut()?.solve(problem, w, start, state, accuracy, warm)?;
+        let u = &solution.displacement;
+        let gap: Vec<f64> = (0..m).map(|k| g_hat[k] + dot_free(&problem.normal_rows[k], u)).collect();
+        let slip: Vec<f64> =
+            (0..m).map(|k| if frictional { s_hat[k] + dot_free(&problem.tangent_rows[k], u) } else { 0.0 }).collect();
+        let next = next_state(problem, &solution, &gap, &slip, start, (c_n, c_t), frictional);
+        let settled = next == state || admissible(problem, state, &solution, &gap, &slip, start);
+        Some((solution, next, settled))
+    };
     for it in 1..=max_iterations {
         iterations = it;
-        let Some(StateSolution { normal_force, tangential_force, displacement }) =
-            cache.as_mut().and_then(|kkt| kkt.solve(problem, w, start, &state))
-        else {
+        let Some((mut solution, mut next, mut settled)) = evaluate(&state, Accuracy::Trial, warm.as_deref()) else {
             status = ContactStatus::Numerical;
             break;
         };
-        (lambda, tau, u) = (normal_force, tangential_force, displacement);
-        let gap: Vec<f64> = (0..m).map(|k| g_hat[k] + dot_free(&problem.normal_rows[k], &u)).collect();
-        let slip: Vec<f64> =
-            (0..m).map(|k| if frictional { s_hat[k] + dot_free(&problem.tangent_rows[k], &u) } else { 0.0 }).collect();
-        let next: Vec<PairState> = (0..m)
-            .map(|k| {
-                let normal = lambda[k] - c_n * gap[k];
-                if normal <= 0.0 || !problem.normal[k] {
-                    return PairState::Free;
-                }
-                let mu = problem.friction[k];
-                if !frictional || !problem.tangential[k] || mu == 0.0 {
-                    return PairState::Stick;
-                }
-                let theta = tau[k] - c_t * (slip[k] - start.slip[k]);
-                PairState::from_trial(normal, theta, mu, true)
-            })
-            .collect();
+        if settled {
+            // The state repeats on a trial solution: the answer is its solution to round-off,
+            // and the state must repeat on that too.
+            let Some(fine) = evaluate(&state, Accuracy::Final, Some(&solution.unknowns)) else {
+                status = ContactStatus::Numerical;
+                break;
+            };
+            (solution, next, settled) = fine;
+        }
         trace.push(IterationRecord {
             iteration: it,
             changed: next.iter().zip(&state).filter(|(a, b)| a != b).count(),
@@ -123,7 +127,9 @@ pub(crate) fn solve_sparse_active_set(
             slipping: state.iter().filter(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative)).count(),
             residual: 0.0,
         });
-        if next == state || admissible(problem, &state, &lambda, &tau, &gap, &slip, start) {
+        warm = Some(solution.unknowns);
+        (lambda, tau, u) = (solution.normal_force, solution.tangential_force, solution.displacement);
+        if settled {
             status = ContactStatus::Converged;
             break;
         }
@@ -143,17 +149,44 @@ pub(crate) fn solve_sparse_active_set(
     solution
 }
 
+/// The state the semi-smooth update picks from a state's solution (module docs).
+fn next_state(
+    problem: &ContactProblem,
+    solution: &StateSolution,
+    gap: &[f64],
+    slip: &[f64],
+    start: &StepStart,
+    (c_n, c_t): (f64, f64),
+    frictional: bool,
+) -> Vec<PairState> {
+    let (lambda, tau) = (&solution.normal_force, &solution.tangential_force);
+    (0..lambda.len())
+        .map(|k| {
+            let normal = lambda[k] - c_n * gap[k];
+            if normal <= 0.0 || !problem.normal[k] {
+                return PairState::Free;
+            }
+            let mu = problem.friction[k];
+            if !frictional || !problem.tangential[k] || mu == 0.0 {
+                return PairState::Stick;
+            }
+            let theta = tau[k] - c_t * (slip[k] - start.slip[k]);
+            PairState::from_trial(normal, theta, mu, true)
+        })
+        .collect()
+}
+
 /// Whether the solution of `state` satisfies all contact and friction conditions to round-off
 /// (1e-10 of the force and length scales; as `frictional_active_set.rs` decides it).
 fn admissible(
     problem: &ContactProblem,
     state: &[PairState],
-    lambda: &[f64],
-    tau: &[f64],
+    solution: &StateSolution,
     gap: &[f64],
     slip: &[f64],
     start: &StepStart,
 ) -> bool {
+    let (lambda, tau) = (&solution.normal_force, &solution.tangential_force);
     let force = lambda.iter().chain(tau).fold(0.0f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
     let length = gap.iter().zip(&problem.gap).fold(0.0f64, |a, (v, g0)| a.max((v - g0).abs())).max(f64::MIN_POSITIVE);
     let (tf, tg) = (1e-10 * force, 1e-10 * length);
