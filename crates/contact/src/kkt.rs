@@ -26,7 +26,7 @@
 //! state as the preconditioner, `A` then differing by a low-rank term as well, was measured: a
 //! sparse triangular solve costs 1/7 of a factorisation on the long-interface meshes, and GMRES
 //! needed 15–30 iterations; refactoring is cheaper.) The active set solves its trial states to
-//! a relative residual of 1e-8 ([`Accuracy::Trial`]) and the state that repeats to 1e-14
+//! a relative residual of 1e-4 ([`Accuracy::Trial`]) and the state that repeats to 1e-14
 //! ([`Accuracy::Final`], warm-started). The row scale `s = k_c` (the contact stiffness of the pairs,
 //! `algorithms/full_system.rs`) gives the constraint rows the units of the force rows, so that
 //! GMRES's residual weighs both alike.
@@ -42,7 +42,7 @@ const BUDGET: usize = 200;
 /// How accurately a state is solved.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Accuracy {
-    /// Relative residual 1e-8: enough to choose the next state while the iteration moves.
+    /// Relative residual 1e-4: enough to choose the next state while the iteration moves.
     Trial,
     /// Relative residual 1e-14 (or the round-off floor): the answer.
     Final,
@@ -51,7 +51,7 @@ pub(crate) enum Accuracy {
 impl Accuracy {
     fn tolerance(self) -> f64 {
         match self {
-            Accuracy::Trial => 1e-8,
+            Accuracy::Trial => 1e-4,
             Accuracy::Final => 1e-14,
         }
     }

@@ -31,7 +31,7 @@ use faer::sparse::linalg::cholesky::{
     CholeskySymbolicParams, LdltRef, SymbolicCholesky, SymmetricOrdering, factorize_symbolic_cholesky,
 };
 use faer::sparse::{SparseColMat, SymbolicSparseColMat};
-use faer::{Conj, Mat, Side};
+use faer::{Conj, MatMut, Side};
 
 use crate::error::FemError;
 use crate::ordering::fill_reducing_permutation_of_pattern;
@@ -39,8 +39,7 @@ use crate::solve::parallelism;
 use crate::sparse::Csc;
 
 /// `[K Bᵀ; B 0]` with rows switched on and off, analysed once and factored per choice (module
-/// docs).
-#[derive(Debug)]
+/// docs). The factor's values and the workspaces are allocated once and reused.
 pub struct SaddlePointSolver {
     /// Order of `K`.
     n: usize,
@@ -51,8 +50,23 @@ pub struct SaddlePointSolver {
     /// Where each row's diagonal sits in `matrix`'s values.
     row_diagonal: Vec<usize>,
     symbolic: SymbolicCholesky<usize>,
-    /// The numeric factor of the last [`SaddlePointSolver::factor`], if it succeeded.
-    values: Option<Vec<f64>>,
+    /// The numeric factor of the last [`SaddlePointSolver::factor`].
+    values: Vec<f64>,
+    /// Whether `values` holds a successful factorisation.
+    factored: bool,
+    /// The factorisation's and one solve's workspace.
+    memory: MemBuffer,
+}
+
+impl std::fmt::Debug for SaddlePointSolver {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SaddlePointSolver")
+            .field("dim", &self.n)
+            .field("rows", &self.row_entries.len())
+            .field("factor_nnz", &self.symbolic.len_val())
+            .field("factored", &self.factored)
+            .finish()
+    }
 }
 
 impl SaddlePointSolver {
@@ -91,7 +105,21 @@ impl SaddlePointSolver {
         let symbolic =
             factorize_symbolic_cholesky(matrix.symbolic(), Side::Lower, SymmetricOrdering::Custom(perm), params)
                 .map_err(|e| FemError::Factorization(format!("symbolic analysis: {e:?}")))?;
-        Ok(SaddlePointSolver { n, matrix, row_entries, row_diagonal, symbolic, values: None })
+        let par = parallelism();
+        let scratch = symbolic
+            .factorize_numeric_ldlt_scratch::<f64>(par, Default::default())
+            .or(symbolic.solve_in_place_scratch::<f64>(1, par));
+        let memory = MemBuffer::try_new(scratch).map_err(|e| FemError::Factorization(format!("workspace: {e:?}")))?;
+        Ok(SaddlePointSolver {
+            n,
+            matrix,
+            row_entries,
+            row_diagonal,
+            values: vec![0.0; symbolic.len_val()],
+            symbolic,
+            factored: false,
+            memory,
+        })
     }
 
     /// Order of `K`.
@@ -116,7 +144,7 @@ impl SaddlePointSolver {
     /// [`FemError::InvalidInput`] if `on` has the wrong length; [`FemError::Factorization`] on a
     /// zero or non-finite pivot (`K` not positive definite, or dependent rows switched on).
     pub fn factor(&mut self, on: &[bool]) -> Result<(), FemError> {
-        self.values = None;
+        self.factored = false;
         if on.len() != self.row_entries.len() {
             return Err(FemError::InvalidInput(format!(
                 "{} row switches for {} rows",
@@ -132,45 +160,39 @@ impl SaddlePointSolver {
             values[self.row_diagonal[q]] = if on[q] { 0.0 } else { 1.0 };
         }
         let par = parallelism();
-        let mut values = vec![0.0; self.symbolic.len_val()];
-        let mut memory =
-            MemBuffer::try_new(self.symbolic.factorize_numeric_ldlt_scratch::<f64>(par, Default::default()))
-                .map_err(|e| FemError::Factorization(format!("workspace: {e:?}")))?;
+        self.values.iter_mut().for_each(|v| *v = 0.0);
         self.symbolic
             .factorize_numeric_ldlt(
-                &mut values,
+                &mut self.values,
                 self.matrix.as_ref(),
                 Side::Lower,
                 LdltRegularization::default(),
                 par,
-                MemStack::new(&mut memory),
+                MemStack::new(&mut self.memory),
                 Default::default(),
             )
             .map_err(|e| FemError::Factorization(format!("saddle-point LDLᵀ: {e:?}")))?;
-        if values.iter().any(|v| !v.is_finite()) {
+        if self.values.iter().any(|v| !v.is_finite()) {
             return Err(FemError::Factorization("saddle-point LDLᵀ: a pivot is not finite".into()));
         }
-        self.values = Some(values);
+        self.factored = true;
         Ok(())
     }
 
     /// Solves `A(on) x = b` with the last factorisation (`b` of length `dim + row_count`), in
     /// place; `false` (and `b` untouched) if there is none.
-    pub fn solve_in_place(&self, b: &mut [f64]) -> bool {
-        let Some(values) = &self.values else { return false };
-        if b.len() != self.n + self.row_entries.len() {
+    pub fn solve_in_place(&mut self, b: &mut [f64]) -> bool {
+        if !self.factored || b.len() != self.n + self.row_entries.len() {
             return false;
         }
-        let par = parallelism();
-        let mut x = Mat::from_fn(b.len(), 1, |i, _| b[i]);
-        let mut memory = MemBuffer::new(self.symbolic.solve_in_place_scratch::<f64>(1, par));
-        LdltRef::new(&self.symbolic, values).solve_in_place_with_conj(
+        let rows = b.len();
+        let x = MatMut::from_column_major_slice_mut(b, rows, 1);
+        LdltRef::new(&self.symbolic, &self.values).solve_in_place_with_conj(
             Conj::No,
-            x.as_mut(),
-            par,
-            MemStack::new(&mut memory),
+            x,
+            parallelism(),
+            MemStack::new(&mut self.memory),
         );
-        b.iter_mut().zip(x.col(0).iter()).for_each(|(v, x)| *v = *x);
         true
     }
 }
