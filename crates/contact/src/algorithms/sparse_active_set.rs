@@ -94,6 +94,8 @@ pub(crate) fn solve_sparse_active_set(
     let mut trace = Vec::new();
     let (g_hat, s_hat) = row_offsets(problem, w);
     let mut warm: Option<Vec<f64>> = None;
+    let mut accuracy = Accuracy::Trial;
+    let mut before: Option<Vec<PairState>> = None;
     // The state's solution to `accuracy`, its gaps and slips, and the state the update picks.
     let mut evaluate = |state: &[PairState], accuracy: Accuracy, warm: Option<&[f64]>| {
         let solution = cache.as_mut()?.solve(problem, w, start, state, accuracy, warm)?;
@@ -107,11 +109,11 @@ pub(crate) fn solve_sparse_active_set(
     };
     for it in 1..=max_iterations {
         iterations = it;
-        let Some((mut solution, mut next, mut settled)) = evaluate(&state, Accuracy::Trial, warm.as_deref()) else {
+        let Some((mut solution, mut next, mut settled)) = evaluate(&state, accuracy, warm.as_deref()) else {
             status = ContactStatus::Numerical;
             break;
         };
-        if settled {
+        if settled && accuracy == Accuracy::Trial {
             // The state repeats on a trial solution: the answer is its solution to round-off,
             // and the state must repeat on that too.
             let Some(fine) = evaluate(&state, Accuracy::Final, Some(&solution.unknowns)) else {
@@ -119,6 +121,11 @@ pub(crate) fn solve_sparse_active_set(
                 break;
             };
             (solution, next, settled) = fine;
+            // A trial solution that misjudged its state: the rest of the step is solved to
+            // round-off (a trial error could otherwise send the iteration round a cycle).
+            if !settled {
+                accuracy = Accuracy::Final;
+            }
         }
         trace.push(IterationRecord {
             iteration: it,
@@ -133,7 +140,12 @@ pub(crate) fn solve_sparse_active_set(
             status = ContactStatus::Converged;
             break;
         }
-        state = next;
+        // Back to the state before: a cycle, which the condensed path ends by the round-off
+        // test of `admissible` (a pair on the cone's edge); that test needs round-off accuracy.
+        if before.as_ref() == Some(&next) {
+            accuracy = Accuracy::Final;
+        }
+        before = Some(std::mem::replace(&mut state, next));
     }
     drop(cache);
     let raw = RawSolution {
