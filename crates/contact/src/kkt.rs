@@ -57,10 +57,11 @@ impl Accuracy {
     }
 }
 
-/// The relative residual accepted once a GMRES cycle no longer halves it: the floor set by
-/// round-off in `A x` itself (`ε ‖|A| |x|‖`, which exceeds `1e-14 ‖b‖` where the forces in
-/// `K u` nearly cancel: 3e-14 on the long-interface benchmark).
-const ROUND_OFF_FLOOR: f64 = 1e-11;
+/// The largest relative residual accepted as the round-off floor: the floor is set by round-off in `A x` itself (`ε ‖|A| |x|‖`, which
+/// exceeds `1e-14 ‖b‖` where the forces in `K u` nearly cancel: 3e-14 at 37k DOFs, 1e-11 at
+/// 952k DOFs on the long-interface benchmark). A sanity bound, not the accuracy: GMRES
+/// preconditioned by the exact factor reduces the residual geometrically until that floor.
+const ROUND_OFF_FLOOR: f64 = 1e-9;
 
 /// Krylov vectors kept before GMRES restarts.
 const RESTART: usize = 16;
@@ -202,13 +203,17 @@ impl StateKkt {
         }
         let mut used = 0;
         let mut previous = f64::INFINITY;
+        // Whether the last cycle ended with GMRES's own residual estimate below the target.
+        let mut estimated = false;
         loop {
             let mut r = system.apply(&x);
             r.iter_mut().zip(b).for_each(|(r, b)| *r = b - *r);
             let beta = norm(&r);
-            // Converged, or stalled at the round-off floor of the residual (a cycle that did not
-            // halve it, below ROUND_OFF_FLOOR ‖b‖).
-            if beta <= target || (beta > 0.5 * previous && beta <= ROUND_OFF_FLOOR * scale) {
+            // Converged; or at the round-off floor of the residual: the last cycle's estimate
+            // reached the target but the true residual did not, or a whole cycle did not halve
+            // it (the floor is checked against ROUND_OFF_FLOOR ‖b‖).
+            let floor = (estimated || beta > 0.5 * previous) && beta <= ROUND_OFF_FLOOR * scale;
+            if beta <= target || floor {
                 return x.iter().all(|v| v.is_finite()).then_some(x);
             }
             if used >= BUDGET {
@@ -258,7 +263,8 @@ impl StateKkt {
                 g[j] *= cs[j];
                 let next_norm = norm(&v);
                 h.push(column);
-                if g[j + 1].abs() <= 0.5 * target || next_norm == 0.0 || j + 1 == steps {
+                estimated = g[j + 1].abs() <= 0.5 * target;
+                if estimated || next_norm == 0.0 || j + 1 == steps {
                     // y = H⁻¹ g (upper triangular), x += Σ y_i M⁻¹ v_i.
                     let k = j + 1;
                     let mut y = vec![0.0; k];
