@@ -57,9 +57,9 @@ impl Accuracy {
     }
 }
 
-/// The largest relative residual accepted as the round-off floor: the floor is set by round-off in `A x` itself (`ε ‖|A| |x|‖`, which
-/// exceeds `1e-14 ‖b‖` where the forces in `K u` nearly cancel: 3e-14 at 37k DOFs, 1e-11 at
-/// 952k DOFs on the long-interface benchmark). A sanity bound, not the accuracy: GMRES
+/// The largest relative residual accepted as the round-off floor: the floor is set by
+/// round-off in `A x` itself (`ε ‖|A| |x|‖`, which exceeds `1e-14 ‖b‖` where the forces in
+/// `K u` nearly cancel: 3e-14 at 37k DOFs, 1e-11 at 952k DOFs on the long-interface benchmark). A sanity bound, not the accuracy: GMRES
 /// preconditioned by the exact factor reduces the residual geometrically until that floor.
 const ROUND_OFF_FLOOR: f64 = 1e-9;
 

@@ -11,7 +11,10 @@
 //! ```
 //!
 //! The threshold is measured on the long-interface benchmark (docs/benchmarks.md, "Sparse
-//! contact solves"), where the two paths' whole runs cross.
+//! contact solves"): a one-step press is faster condensed at 761 pairs (2.1 against 4.5 s CPU)
+//! and sparse from 1,521 (11.7 against 13.3 s; 3.4 times at 3,041); a 40-step history, whose
+//! condensed path reuses the LU of repeated states, is faster condensed at every size measured
+//! (up to 1,521 pairs). 2,000 lies between the two crossovers.
 
 use crate::error::ContactError;
 use crate::solve::ContactAlgorithm;

@@ -173,3 +173,17 @@ fn sparse_is_refused_for_the_algorithms_that_need_the_compliances() {
         assert!(matches!(refused, Err(contact2d_contact::ContactError::NotApplicable { .. })), "{algorithm:?}");
     }
 }
+
+#[test]
+fn the_compliance_algorithms_condense_a_sparse_interface_themselves() {
+    // Clarabel's entry point given the sparse path's interface (no compliances) condenses the
+    // problem itself: the same answer as on the condensed interface, bit for bit (the same
+    // computation).
+    let problem = two_blocks(CellKind::Quad9, 0.01, 0.05, 3.0, 0.03, 7, 5);
+    let on_condensed =
+        contact2d_contact::solve_frictionless_qp_on(&problem, &contact2d_contact::Interface::new(&problem), 1.0);
+    let on_sparse =
+        contact2d_contact::solve_frictionless_qp_on(&problem, &contact2d_contact::Interface::sparse(&problem), 1.0);
+    assert_eq!(on_condensed.status, on_sparse.status);
+    assert_eq!(on_condensed.normal_force, on_sparse.normal_force);
+}
