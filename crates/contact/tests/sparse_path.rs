@@ -187,3 +187,25 @@ fn the_compliance_algorithms_condense_a_sparse_interface_themselves() {
     assert_eq!(on_condensed.status, on_sparse.status);
     assert_eq!(on_condensed.normal_force, on_sparse.normal_force);
 }
+
+#[test]
+fn the_full_system_algorithms_give_the_same_answer_on_either_path() {
+    // The augmented Lagrangian and the penalty method never use the compliances (each factors
+    // its own sparse LU of the full system): on the sparse path they only skip the
+    // condensation, so their answers are the same bit for bit.
+    let mut problem = two_blocks_sliding(CellKind::Quad9, 0.0, 0.005, 2.0, 0.05, 0.02, 6, 4);
+    problem.set_friction(0.3).unwrap();
+    let schedule = LoadSchedule::ramp(vec!["main".into()], 2).unwrap();
+    for algorithm in [ContactAlgorithm::AugmentedLagrangian, ContactAlgorithm::Penalty] {
+        let run = |linear| {
+            let settings = SolverSettings::new(algorithm).with_linear(linear).unwrap();
+            solve(&problem, &settings, &schedule).unwrap()
+        };
+        let (condensed, sparse) = (run(LinearSolver::Condensed), run(LinearSolver::Sparse));
+        for (a, b) in condensed.steps.iter().zip(&sparse.steps) {
+            assert_eq!(a.solution.status, b.solution.status, "{algorithm:?}");
+            assert_eq!(a.solution.normal_force, b.solution.normal_force, "{algorithm:?}");
+            assert_eq!(a.solution.displacement, b.solution.displacement, "{algorithm:?}");
+        }
+    }
+}
