@@ -11,41 +11,49 @@
 # memory, and the JSON's per-phase times.
 #
 # Usage: benchmarks/long_interface.sh [n_upper ...]   (pairs = 2 n_upper + 1;
-#        default 96 190 380 760 1520 2500; HISTORY_MAX=1600 by default)
+#        default 96 190 380 760 1520 2500; HISTORY_MAX=1600 by default;
+#        LINEAR=auto|condensed|sparse sets solver.linear (default auto), or a list such as
+#        LINEAR="condensed sparse" to run each; PRESS_MAX caps the pairs of the press runs)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 sizes=("$@")
 [ ${#sizes[@]} -eq 0 ] && sizes=(96 190 380 760 1520 2500)
 history_max=${HISTORY_MAX:-1600}
+press_max=${PRESS_MAX:-100000}
+read -r -a linears <<< "${LINEAR:-auto}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cargo build --release --quiet --manifest-path "$root/Cargo.toml" --bin contact2d
 bin="$root/target/release/contact2d"
 cp "$root/scenes/generic/long_interface.toml" "$work/"
 
-echo "| run | pairs | DOFs | iterations | wall s | CPU s | peak RSS MiB | read | assemble | factor | condense | solve | post |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| run | linear | pairs | DOFs | iterations | wall s | CPU s | peak RSS MiB | read | assemble | factor | condense | solve | post |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for n in "${sizes[@]}"; do
   mesh="$work/long_interface_$n.msh"
   gmsh "$root/meshes/generic/long_interface.geo" -2 -order 2 -format msh41 -setnumber n_upper "$n" \
     -o "$mesh" > /dev/null
-  runs=(press)
-  [ $((2 * n + 1)) -le "$history_max" ] && runs=(history press)
+  runs=()
+  [ $((2 * n + 1)) -le "$history_max" ] && runs=(history)
+  [ $((2 * n + 1)) -le "$press_max" ] && runs+=(press)
   for run in "${runs[@]}"; do
-    extra=()
-    [ "$run" = press ] && extra=(--set 'loading.schedule=[{press=1.0}]')
+   for linear in "${linears[@]}"; do
+    extra=(--set "solver.linear=\"$linear\"")
+    [ "$run" = press ] && extra+=(--set 'loading.schedule=[{press=1.0}]')
     /usr/bin/time -f "%e %U %S %M" -o "$work/time" \
       "$bin" run "$work/long_interface.toml" --set "mesh=\"$mesh\"" "${extra[@]}" --json > "$work/out.json"
-    python3 - "$run" "$work/out.json" "$work/time" <<'EOF'
+    python3 - "$run" "$work/out.json" "$work/time" "$linear" <<'EOF'
 import json, sys
-run, out, timing = sys.argv[1:4]
+run, out, timing, linear = sys.argv[1:5]
 d = json.load(open(out))
 wall, user, system, rss = open(timing).read().split()[-4:]
 t = d["time_s"]
 phases = " | ".join(f"{t[k]:.3f}" for k in ("read", "assemble", "factor", "condense", "solve", "post"))
-print(f"| {run} | {d['pairs']} | {d['dofs']} | {d['iterations']} | {float(wall):.2f} | "
+status = "" if d["status"] == "converged" else f" ({d['status']})"
+print(f"| {run} | {linear} | {d['pairs']} | {d['dofs']} | {d['iterations']}{status} | {float(wall):.2f} | "
       f"{float(user) + float(system):.2f} | {int(rss) // 1024} | {phases} |")
 EOF
+   done
   done
   rm -f "$mesh"
 done

@@ -9,12 +9,13 @@
 //! penalty = 1e3              # penalty only: normal penalty / k_c
 //! tangential_penalty = 1e3   # penalty only: stick penalty / k_c (default: penalty)
 //! place_zone_ends = true     # boussinesq on the plate-insert preset: nodes at l* and b*
+//! linear = "auto"            # condensed, sparse: how the contact states' equations are solved
 //! ```
 
 use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serializer};
 
-use contact2d_contact::{ContactAlgorithm, PenaltyParameters, SolverSettings};
+use contact2d_contact::{ContactAlgorithm, LinearSolver, PenaltyParameters, SolverSettings};
 
 use super::SceneError;
 
@@ -45,6 +46,18 @@ pub fn serialize_algorithm<S: Serializer>(algorithm: &ContactAlgorithm, s: S) ->
     s.serialize_str(algorithm.key())
 }
 
+/// The scene keys of [`LinearSolver::ALL`], in that order.
+const LINEAR_KEYS: [&str; 3] = ["auto", "condensed", "sparse"];
+
+/// Reads `solver.linear` from its scene key ([`LinearSolver::key`]).
+fn deserialize_linear<'de, D: Deserializer<'de>>(d: D) -> Result<LinearSolver, D::Error> {
+    let key = String::deserialize(d)?;
+    LinearSolver::ALL
+        .into_iter()
+        .find(|l| l.key() == key.trim())
+        .ok_or_else(|| D::Error::unknown_variant(&key, &LINEAR_KEYS))
+}
+
 /// The `[solver]` section.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -68,6 +81,10 @@ pub struct SolverEntry {
     /// its nodes.
     #[serde(default)]
     pub place_zone_ends: Option<bool>,
+    /// How the contact states' linear equations are solved: `auto` (default), `condensed` or
+    /// `sparse` ([`LinearSolver`]).
+    #[serde(default, deserialize_with = "deserialize_linear")]
+    pub linear: LinearSolver,
 }
 
 impl Default for SolverEntry {
@@ -78,6 +95,7 @@ impl Default for SolverEntry {
             penalty: None,
             tangential_penalty: None,
             place_zone_ends: None,
+            linear: LinearSolver::Auto,
         }
     }
 }
@@ -104,7 +122,9 @@ impl SolverEntry {
         let algorithm = self.algorithm;
         let settings = SolverSettings::new(algorithm)
             .with_max_iterations(self.max_iterations)
-            .map_err(|e| fail("solver.max_iterations", e.to_string()))?;
+            .map_err(|e| fail("solver.max_iterations", e.to_string()))?
+            .with_linear(self.linear)
+            .map_err(|e| fail("solver.linear", e.to_string()))?;
         let given = [("solver.penalty", self.penalty), ("solver.tangential_penalty", self.tangential_penalty)];
         if algorithm != ContactAlgorithm::Penalty {
             if let Some((key, _)) = given.iter().find(|(_, v)| v.is_some()) {
@@ -128,6 +148,20 @@ impl SolverEntry {
 #[allow(clippy::unwrap_used)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn linear_reads_its_keys_and_refuses_sparse_where_it_does_not_apply() {
+        for (linear, key) in LinearSolver::ALL.into_iter().zip(LINEAR_KEYS) {
+            assert_eq!(linear.key(), key);
+            let entry: SolverEntry = toml::from_str(&format!("linear = \"{key}\"")).unwrap();
+            assert_eq!(entry.linear, linear);
+        }
+        let wrong = toml::from_str::<SolverEntry>("linear = \"dense\"").unwrap_err().to_string();
+        assert!(wrong.contains("condensed"), "{wrong}");
+        let entry: SolverEntry = toml::from_str("algorithm = \"clarabel\"\nlinear = \"sparse\"").unwrap();
+        let fail = |key: &str, reason: String| SceneError::Value { path: "s.toml".into(), key: key.into(), reason };
+        assert!(matches!(entry.settings(fail), Err(SceneError::Value { key, .. }) if key == "solver.linear"));
+    }
 
     #[test]
     fn every_algorithm_reads_and_writes_its_key() {

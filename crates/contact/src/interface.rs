@@ -57,6 +57,11 @@ pub struct Interface {
     /// the next solve has the same state (a load step starting from the previous step's
     /// states).
     pub(crate) last_state: crate::factor_cache::StateFactorCache,
+    /// Whether the compliances were computed ([`Interface::new`]) or left empty for the sparse
+    /// path ([`Interface::sparse`]).
+    condensed: bool,
+    /// The sparse state system of the sparse path, analysed when first needed.
+    pub(crate) kkt: crate::kkt::KktCache,
 }
 
 /// `Bᵀ` restricted to free DOFs, as dense columns of length `n`.
@@ -78,12 +83,16 @@ fn to_dmatrix(m: &Mat<f64>) -> DMatrix<f64> {
 /// problem's rows, or `None` if the factor has no rows (they were dependent). The rows left out
 /// of the factor (a negligible free part, [`condensed_rows`]) get theirs by one multi-RHS solve,
 /// which also gives `u0 = K⁻¹ r` (its last column): one pass over the factor for both.
-fn condensed_blocks(problem: &ContactProblem, tangent: &[PairRow]) -> Option<([Mat<f64>; 4], Vec<f64>)> {
+fn condensed_blocks(
+    problem: &ContactProblem,
+    solver: &CholeskySolver,
+    tangent: &[PairRow],
+) -> Option<([Mat<f64>; 4], Vec<f64>)> {
     let (index, rows) = condensed_rows(&problem.normal_rows, &problem.tangent_rows);
-    if problem.solver.constraint_count() != rows.len() {
+    if solver.constraint_count() != rows.len() {
         return None;
     }
-    let factored = problem.solver.condensed()?;
+    let factored = solver.condensed()?;
     let m = problem.normal_rows.len();
     let all: Vec<&PairRow> = problem.normal_rows.iter().chain(&problem.tangent_rows).collect();
     let mut c = Mat::zeros(all.len(), all.len());
@@ -102,7 +111,7 @@ fn condensed_blocks(problem: &ContactProblem, tangent: &[PairRow]) -> Option<([M
         all[i].free.iter().for_each(|&(d, v)| b[(d, col)] += v);
     }
     b.col_mut(load).iter_mut().zip(&problem.pattern_rhs).for_each(|(x, r)| *x = *r);
-    let z = problem.solver.solve_many(&b);
+    let z = solver.solve_many(&b);
     let u0 = z.col(load).iter().copied().collect();
     for (col, &i) in left_out.iter().enumerate() {
         for (j, other) in all.iter().enumerate() {
@@ -128,13 +137,22 @@ fn product(a: faer::MatRef<'_, f64>, b: &Mat<f64>) -> Mat<f64> {
 impl Interface {
     /// Condenses `problem` onto its pairs with the existing factorisation: `C = W Wᵀ` from the
     /// last block of the factor bordered by the rows, and one multi-RHS solve for `u0` and the
-    /// rows left out of the border.
+    /// rows left out of the border. A problem factored without its rows (many pairs,
+    /// [`ContactProblem::is_bordered`]) is factored bordered here first (the same factor the
+    /// problem would have made); if that fails the compliances come from multi-RHS solves.
     pub fn new(problem: &ContactProblem) -> Interface {
+        let bordered = if problem.is_bordered() {
+            None
+        } else {
+            let (_, rows) = condensed_rows(&problem.normal_rows, &problem.tangent_rows);
+            CholeskySolver::factor_with_constraints(&problem.system.stiffness, &rows).ok()
+        };
+        let solver = bordered.as_ref().unwrap_or(&problem.solver);
         let n = problem.system.dofs.num_free();
         let frictional = problem.is_frictional();
         let normal = &problem.normal_rows[..];
         let tangent: &[PairRow] = if frictional { &problem.tangent_rows } else { &[] };
-        let ((c_nn, c_nt, c_tn, c_tt), u0) = match condensed_blocks(problem, tangent) {
+        let ((c_nn, c_nt, c_tn, c_tt), u0) = match condensed_blocks(problem, solver, tangent) {
             Some(([c_nn, c_nt, c_tn, c_tt], u0)) => ((c_nn, c_nt, c_tn, c_tt), u0),
             None => {
                 let b_n = rows_to_columns(n, normal);
@@ -159,7 +177,43 @@ impl Interface {
             tangent_rows: tangent.to_vec(),
             pattern_u0: vec![None; problem.patterns().len()],
             last_state: Default::default(),
+            condensed: true,
+            kkt: Default::default(),
         }
+    }
+
+    /// The interface of the sparse path ([`crate::LinearSolver::Sparse`]): `u0` and `h` as in
+    /// [`Interface::new`] (one solve), but no compliances (`c_nn`, `c_nt`, `c_tn`, `c_tt` are
+    /// empty, 0 × 0): the algorithms that support it solve each contact state on the full
+    /// system (`crate::kkt`) at the cost of a sparse factorisation, with no dense block of the
+    /// size of the interface.
+    pub fn sparse(problem: &ContactProblem) -> Interface {
+        let frictional = problem.is_frictional();
+        let tangent: &[PairRow] = if frictional { &problem.tangent_rows } else { &[] };
+        let u0 = problem.solver.solve(&problem.pattern_rhs);
+        let h = |rows: &[PairRow]| rows.iter().map(|r| r.dot(&u0, &problem.pattern_prescribed)).collect::<Vec<_>>();
+        Interface {
+            h_normal: h(&problem.normal_rows),
+            h_tangent: h(&problem.tangent_rows),
+            c_nn: DMatrix::zeros(0, 0),
+            c_nt: DMatrix::zeros(0, 0),
+            c_tn: DMatrix::zeros(0, 0),
+            c_tt: DMatrix::zeros(0, 0),
+            u0,
+            solver: problem.solver.clone(),
+            normal_rows: problem.normal_rows.clone(),
+            tangent_rows: tangent.to_vec(),
+            pattern_u0: vec![None; problem.patterns().len()],
+            last_state: Default::default(),
+            condensed: false,
+            kkt: Default::default(),
+        }
+    }
+
+    /// Whether the compliances were computed ([`Interface::new`]); false on the sparse path
+    /// ([`Interface::sparse`]).
+    pub fn is_condensed(&self) -> bool {
+        self.condensed
     }
 
     /// Recomputes the load terms `u0` and `h` after the problem's load changed

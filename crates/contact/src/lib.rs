@@ -27,6 +27,8 @@ mod factor_cache;
 mod floating;
 pub mod history;
 pub mod interface;
+mod kkt;
+pub mod linear;
 pub mod loading;
 pub mod pairing;
 pub mod post;
@@ -58,6 +60,7 @@ pub use frictional_active_set::solve_frictional_active_set;
 pub use frictionless_active_set::solve_frictionless_active_set;
 pub use history::{HistoryStep, Retention, equal_steps};
 pub use interface::Interface;
+pub use linear::{LinearSolver, SPARSE_FROM_PAIRS};
 pub use loading::LoadSchedule;
 pub use pairing::{
     ContactPair, IntegratedRows, RowCoefficient, node_to_node_targets, nodes_face_each_other, pair_contours,

@@ -82,6 +82,9 @@ pub struct ContactProblem {
     slave: Vec<SlaveKind>,
     /// Wall time of assembly (with pairing rows) and of ordering plus factorisation, when built.
     pub build_times: BuildTimes,
+    /// Whether `solver` was factored bordered by the pair rows (false above
+    /// [`crate::linear::SPARSE_FROM_PAIRS`] pairs: `K` alone, [`ContactProblem::is_bordered`]).
+    bordered: bool,
 }
 
 /// Where a problem's set-up time went.
@@ -141,13 +144,11 @@ impl ContactProblem {
         let system = assemble(&model)?;
         let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, &slave)?;
         let assembled = clock.elapsed();
-        // K is factored bordered by the pair rows: the factor's last block is then the
-        // compliance C = B K⁻¹ Bᵀ of the bodies at the pairs (crate::interface).
-        let (_, rows) = condensed_rows(&normal_rows, &tangent_rows);
-        let solver = CholeskySolver::factor_with_constraints(&system.stiffness, &rows)?;
+        let (solver, bordered) = factor_stiffness(&system, &normal_rows, &tangent_rows, None)?;
         let friction = vec![0.0; pairs.len()];
         let mut problem =
             ContactProblem::assemble_parts(model, system, solver, pairs, normal_rows, tangent_rows, friction, slave);
+        problem.bordered = bordered;
         problem.build_times = BuildTimes { assemble: assembled, factor: clock.elapsed() - assembled };
         Ok(problem)
     }
@@ -178,10 +179,21 @@ impl ContactProblem {
             vec![self.slave.first().copied().unwrap_or(SlaveKind::Deformable); pairs.len()]
         };
         let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, &slave)?;
-        let mut solver = self.solver.clone();
-        solver.refactor_with_constraints(&system.stiffness, &condensed_rows(&normal_rows, &tangent_rows).1)?;
+        let (solver, bordered) = factor_stiffness(&system, &normal_rows, &tangent_rows, Some(&self.solver))?;
         let friction = if pairs.len() == self.friction.len() { self.friction.clone() } else { vec![0.0; pairs.len()] };
-        Ok(ContactProblem::assemble_parts(model, system, solver, pairs, normal_rows, tangent_rows, friction, slave))
+        let mut problem =
+            ContactProblem::assemble_parts(model, system, solver, pairs, normal_rows, tangent_rows, friction, slave);
+        problem.bordered = bordered;
+        Ok(problem)
+    }
+
+    /// Whether [`ContactProblem::solver`] was factored bordered by the pair rows (always up to
+    /// [`crate::linear::SPARSE_FROM_PAIRS`] pairs), so that [`crate::Interface::new`] condenses
+    /// from it; else it is `K`'s own Cholesky factor (the sparse path needs no more, and the
+    /// bordered factor's dense block of the rows would cost `(2 × pairs)³ / 3` flops) and
+    /// [`crate::Interface::new`] borders it when the condensed path is asked for.
+    pub fn is_bordered(&self) -> bool {
+        self.bordered
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -233,6 +245,7 @@ impl ContactProblem {
             stiffness_scale,
             slave,
             build_times: BuildTimes::default(),
+            bordered: true,
         }
     }
 
@@ -379,6 +392,39 @@ pub struct LoadPattern {
     pub prescribed: Vec<f64>,
     /// `f_p`: the pattern's nodal loads in global DOF order (for reactions).
     pub nodal: Vec<f64>,
+}
+
+/// `K_ff` factored bordered by the pair rows up to [`crate::linear::SPARSE_FROM_PAIRS`] pairs
+/// (the factor's last block is then the compliance `C = B K⁻¹ Bᵀ` of the bodies at the pairs,
+/// crate::interface), refactoring `previous`'s symbolic analysis when it has the same pattern;
+/// `K` alone (AMD, supernodal) above. Returns the factor and whether it is bordered.
+fn factor_stiffness(
+    system: &LinearSystem,
+    normal_rows: &[PairRow],
+    tangent_rows: &[PairRow],
+    previous: Option<&CholeskySolver>,
+) -> Result<(CholeskySolver, bool), ContactError> {
+    if normal_rows.len() >= crate::linear::SPARSE_FROM_PAIRS {
+        let solver = match previous {
+            Some(p) if p.same_pattern(&system.stiffness) => {
+                let mut s = p.clone();
+                s.refactor(&system.stiffness)?;
+                s
+            }
+            _ => CholeskySolver::factor_supernodal(&system.stiffness)?,
+        };
+        return Ok((solver, false));
+    }
+    let rows = condensed_rows(normal_rows, tangent_rows).1;
+    let solver = match previous {
+        Some(p) => {
+            let mut s = p.clone();
+            s.refactor_with_constraints(&system.stiffness, &rows)?;
+            s
+        }
+        None => CholeskySolver::factor_with_constraints(&system.stiffness, &rows)?,
+    };
+    Ok((solver, true))
 }
 
 /// The normal and tangential rows of `pairs`.

@@ -28,6 +28,7 @@ use crate::error::ContactError;
 use crate::floating::{FloatingStep, RigidModes, solve_floating_step as solve_floating_step_with};
 use crate::history::{HistoryStep, Retention, march_keeping};
 use crate::interface::Interface;
+use crate::linear::LinearSolver;
 use crate::loading::LoadSchedule;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_displacement};
@@ -89,6 +90,7 @@ pub struct SolverSettings {
     max_floating_iterations: usize,
     penalty: PenaltyParameters,
     deadline: Option<web_time::Instant>,
+    linear: LinearSolver,
 }
 
 impl SolverSettings {
@@ -102,7 +104,25 @@ impl SolverSettings {
             max_floating_iterations: 60,
             penalty: PenaltyParameters::default(),
             deadline: None,
+            linear: LinearSolver::Auto,
         }
+    }
+
+    /// Sets how the contact states' linear equations are solved ([`LinearSolver`]; default
+    /// [`LinearSolver::Auto`]).
+    ///
+    /// # Errors
+    /// [`LinearSolver::Sparse`] with an algorithm that works on the compliances (Clarabel, the
+    /// Boussinesq algorithm).
+    pub fn with_linear(mut self, linear: LinearSolver) -> Result<SolverSettings, ContactError> {
+        linear.resolve(self.algorithm, 0)?;
+        self.linear = linear;
+        Ok(self)
+    }
+
+    /// How the contact states' linear equations are solved.
+    pub fn linear(&self) -> LinearSolver {
+        self.linear
     }
 
     /// Sets a wall-clock deadline: [`solve_with`] checks it before each load step and stops with
@@ -277,7 +297,10 @@ pub fn solve_keeping(
     };
     loaded.apply_load(&targets[0], None)?;
     let clock = web_time::Instant::now();
-    let mut interface = Interface::new(&loaded);
+    let mut interface = match settings.linear.resolve(settings.algorithm, problem.num_pairs())? {
+        LinearSolver::Sparse => Interface::sparse(&loaded),
+        _ => Interface::new(&loaded),
+    };
     let condense_time = clock.elapsed();
     let modes = RigidModes::of(problem);
     // Only the Boussinesq algorithm grows its zone along an order of the pairs.

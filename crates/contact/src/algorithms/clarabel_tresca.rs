@@ -52,6 +52,14 @@ pub fn solve_frictional_qp_on(
     start: &StepStart,
     max_fixed_point: usize,
 ) -> ContactSolution {
+    // The sparse path's interface holds no compliances: condense here (this algorithm works on them).
+    let condensed;
+    let interface = if interface.is_condensed() {
+        interface
+    } else {
+        condensed = Interface::new(problem);
+        &condensed
+    };
     let clock = Instant::now();
     let m = problem.num_pairs();
     let dual = DualProblem::new(problem, interface, w, start);

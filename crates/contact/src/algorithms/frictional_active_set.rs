@@ -25,6 +25,7 @@ use web_time::Instant;
 
 use nalgebra::{DMatrix, DVector};
 
+use crate::algorithms::sparse_active_set::solve_sparse_active_set;
 use crate::algorithms::state_equations::{combine, solve_state_equations};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
@@ -33,6 +34,8 @@ use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState
 
 /// Solves one frictional step to load factor `w` from the history `start`, starting from the
 /// state guess `guess` (e.g. the previous step's states; `None`: all in contact and sticking).
+/// On an interface of the sparse path ([`Interface::sparse`]) each state is solved on the full
+/// system (`sparse_active_set.rs`).
 pub fn solve_frictional_active_set(
     problem: &ContactProblem,
     interface: &Interface,
@@ -41,6 +44,9 @@ pub fn solve_frictional_active_set(
     guess: Option<&[PairState]>,
     max_iterations: usize,
 ) -> ContactSolution {
+    if !interface.is_condensed() {
+        return solve_sparse_active_set(problem, interface, w, start, guess, max_iterations);
+    }
     let clock = Instant::now();
     let m = problem.num_pairs();
     let frictional = interface.c_tt.nrows() == m;

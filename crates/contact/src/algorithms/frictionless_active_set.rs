@@ -16,19 +16,31 @@ use web_time::Instant;
 
 use nalgebra::{DMatrix, DVector};
 
+use crate::algorithms::sparse_active_set::solve_sparse_active_set;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
 use crate::solution::{ContactSolution, ContactStatus, IterationRecord, StepStart};
 
 /// Solves the frictionless problem at load factor `w` with at most `max_iterations` active-set
-/// updates.
+/// updates (on an interface of the sparse path, [`Interface::sparse`], with the sparse state
+/// equations of `sparse_active_set.rs`).
 pub fn solve_frictionless_active_set(
     problem: &ContactProblem,
     interface: &Interface,
     w: f64,
     max_iterations: usize,
 ) -> ContactSolution {
+    if !interface.is_condensed() {
+        // The sparse path solves the problem's own friction law: a frictionless copy.
+        let initial = StepStart::initial(problem.num_pairs());
+        if !problem.is_frictional() {
+            return solve_sparse_active_set(problem, interface, w, &initial, None, max_iterations);
+        }
+        let mut frictionless = problem.clone();
+        frictionless.friction.iter_mut().for_each(|mu| *mu = 0.0);
+        return solve_sparse_active_set(&frictionless, interface, w, &initial, None, max_iterations);
+    }
     let start = Instant::now();
     let m = problem.num_pairs();
     let g_free: Vec<f64> = (0..m).map(|k| problem.gap[k] + w * interface.h_normal[k]).collect();

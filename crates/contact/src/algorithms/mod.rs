@@ -12,6 +12,7 @@
 //! augmented_lagrangian      Alart–Curnier semi-smooth Newton on the full system (sparse LU)
 //! full_system               contact stiffness scale and fixed-pattern sparse LU (shared)
 //! state_equations           the linear system of a given zone configuration (shared)
+//! sparse_active_set         the active set on the sparse full system (crate::kkt), no condensation
 //! ```
 
 pub mod augmented_lagrangian;
@@ -22,4 +23,5 @@ pub mod frictional_active_set;
 pub mod frictionless_active_set;
 pub mod full_system;
 pub mod penalty;
+pub(crate) mod sparse_active_set;
 pub(crate) mod state_equations;

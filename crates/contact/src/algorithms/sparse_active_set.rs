@@ -1,0 +1,215 @@
+//! The primal-dual active set of `frictional_active_set.rs` on the sparse path: each state's
+//! equations solved on the full system (`crate::kkt`) instead of the condensed interface, so no
+//! dense block of the size of the interface is ever formed.
+//!
+//! ```text
+//! state → [u_f, λ, τ] from the sparse state system (crate::kkt)
+//! gap = ĝ + B_N,f u_f,   s = ŝ + B_T,f u_f,   Δs = s − s_start
+//! update: contact ⇔ λ − c_N gap > 0;  in contact, with θ = τ − c_T Δs:
+//!         stick ⇔ |θ| ≤ μ(λ − c_N gap);  else slip with τ = μλ sign θ
+//! c_N = 1 / mean_k C_NN,kk,   c_T = 1 / mean_k C_TT,kk,   C_kk = b_k · K⁻¹ b_k
+//! ```
+//!
+//! The same update and constants as the condensed path, which reads `C_kk` off the compliances:
+//! here they come from one multi-RHS solve, over every pair up to 64 pairs (the same constants
+//! up to round-off, so the same iterates) and over 8 pairs evenly spread beyond (an estimate of
+//! the same mean; `c` sets the path of the iteration, not its fixed point). A state that repeats
+//! is the solution on either path, and the answers agree to round-off (`tests/sparse_path.rs`).
+
+use web_time::Instant;
+
+use crate::algorithms::full_system::{contact_stiffness, dot_free, row_offsets};
+use crate::interface::Interface;
+use crate::kkt::{Accuracy, StateKkt, StateSolution};
+use crate::problem::{ContactProblem, PairRow};
+use crate::report::{RawSolution, finish_from_displacement};
+use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
+
+/// Pairs up to which the complementarity constants use every pair's compliance.
+const COMPLIANCE_EXACT: usize = 64;
+
+/// Pairs, evenly spread along the list, whose compliances estimate the constants above
+/// [`COMPLIANCE_EXACT`] pairs (each costs two columns of one multi-RHS solve).
+const COMPLIANCE_SAMPLES: usize = 8;
+
+/// `(c_N, c_T)`: the condensed path's `1 / mean diag C_NN` and `1 / mean diag C_TT`
+/// (`C_kk = b_k · K⁻¹ b_k`), from one multi-RHS solve over every pair up to
+/// [`COMPLIANCE_EXACT`] pairs (the same constants, up to round-off) or over
+/// [`COMPLIANCE_SAMPLES`] pairs evenly spread (an estimate of the same mean).
+fn complementarity_constants(problem: &ContactProblem, frictional: bool) -> (f64, f64) {
+    let m = problem.num_pairs();
+    let picked: Vec<usize> = if m <= COMPLIANCE_EXACT {
+        (0..m).collect()
+    } else {
+        (0..COMPLIANCE_SAMPLES).map(|i| i * (m - 1) / (COMPLIANCE_SAMPLES - 1)).collect()
+    };
+    let mut rows: Vec<&PairRow> = picked.iter().map(|&k| &problem.normal_rows[k]).collect();
+    if frictional {
+        rows.extend(picked.iter().map(|&k| &problem.tangent_rows[k]));
+    }
+    let mut b = faer::Mat::<f64>::zeros(problem.system.dofs.num_free(), rows.len());
+    for (c, row) in rows.iter().enumerate() {
+        row.free.iter().for_each(|&(i, v)| b[(i, c)] += v);
+    }
+    let z = problem.solver.solve_many(&b);
+    let diagonal: Vec<f64> =
+        rows.iter().enumerate().map(|(c, row)| row.free.iter().map(|&(i, v)| v * z[(i, c)]).sum()).collect();
+    let p = picked.len().max(1) as f64;
+    let c_n = 1.0 / (diagonal[..picked.len()].iter().sum::<f64>() / p).max(f64::MIN_POSITIVE);
+    let c_t =
+        if frictional { 1.0 / (diagonal[picked.len()..].iter().sum::<f64>() / p).max(f64::MIN_POSITIVE) } else { 0.0 };
+    (c_n, c_t)
+}
+
+/// Solves one step like [`crate::solve_frictional_active_set`], on the sparse path (`interface`
+/// made by [`Interface::sparse`]).
+pub(crate) fn solve_sparse_active_set(
+    problem: &ContactProblem,
+    interface: &Interface,
+    w: f64,
+    start: &StepStart,
+    guess: Option<&[PairState]>,
+    max_iterations: usize,
+) -> ContactSolution {
+    let clock = Instant::now();
+    let m = problem.num_pairs();
+    let n = problem.system.dofs.num_free();
+    let frictional = problem.is_frictional();
+    let mut state: Vec<PairState> = match guess {
+        Some(g) if g.len() == m => g.to_vec(),
+        _ => vec![PairState::Stick; m],
+    };
+    for (s, _) in state.iter_mut().zip(&problem.normal).filter(|(_, normal)| !**normal) {
+        *s = PairState::Free;
+    }
+    let mut cache = interface.kkt.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    if cache.as_ref().is_none_or(|kkt| kkt.is_frictional() != frictional) {
+        let constants = complementarity_constants(problem, frictional);
+        *cache = StateKkt::new(problem, frictional, contact_stiffness(problem), constants).ok();
+    }
+    let (c_n, c_t) = cache.as_ref().map_or((0.0, 0.0), |kkt| kkt.constants);
+    let (mut lambda, mut tau, mut u) = (vec![0.0; m], vec![0.0; m], vec![0.0; n]);
+    let mut status = ContactStatus::MaxIterations;
+    let mut iterations = 0;
+    let mut trace = Vec::new();
+    let (g_hat, s_hat) = row_offsets(problem, w);
+    let mut warm: Option<Vec<f64>> = None;
+    let mut accuracy = Accuracy::Trial;
+    let mut before: Option<Vec<PairState>> = None;
+    // The state's solution to `accuracy`, its gaps and slips, and the state the update picks.
+    let mut evaluate = |state: &[PairState], accuracy: Accuracy, warm: Option<&[f64]>| {
+        let solution = cache.as_mut()?.solve(problem, w, start, state, accuracy, warm)?;
+        let u = &solution.displacement;
+        let gap: Vec<f64> = (0..m).map(|k| g_hat[k] + dot_free(&problem.normal_rows[k], u)).collect();
+        let slip: Vec<f64> =
+            (0..m).map(|k| if frictional { s_hat[k] + dot_free(&problem.tangent_rows[k], u) } else { 0.0 }).collect();
+        let next = next_state(problem, &solution, &gap, &slip, start, (c_n, c_t), frictional);
+        let settled = next == state || admissible(problem, state, &solution, &gap, &slip, start);
+        Some((solution, next, settled))
+    };
+    for it in 1..=max_iterations {
+        iterations = it;
+        let Some((mut solution, mut next, mut settled)) = evaluate(&state, accuracy, warm.as_deref()) else {
+            status = ContactStatus::Numerical;
+            break;
+        };
+        if settled && accuracy == Accuracy::Trial {
+            // The state repeats on a trial solution: the answer is its solution to round-off,
+            // and the state must repeat on that too.
+            let Some(fine) = evaluate(&state, Accuracy::Final, Some(&solution.unknowns)) else {
+                status = ContactStatus::Numerical;
+                break;
+            };
+            (solution, next, settled) = fine;
+            // A trial solution that misjudged its state: the rest of the step is solved to
+            // round-off (a trial error could otherwise send the iteration round a cycle).
+            if !settled {
+                accuracy = Accuracy::Final;
+            }
+        }
+        trace.push(IterationRecord {
+            iteration: it,
+            changed: next.iter().zip(&state).filter(|(a, b)| a != b).count(),
+            in_contact: state.iter().filter(|s| **s != PairState::Free).count(),
+            slipping: state.iter().filter(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative)).count(),
+            residual: 0.0,
+        });
+        warm = Some(solution.unknowns);
+        (lambda, tau, u) = (solution.normal_force, solution.tangential_force, solution.displacement);
+        if settled {
+            status = ContactStatus::Converged;
+            break;
+        }
+        // Back to the state before: a cycle, which the condensed path ends by the round-off
+        // test of `admissible` (a pair on the cone's edge); that test needs round-off accuracy.
+        if before.as_ref() == Some(&next) {
+            accuracy = Accuracy::Final;
+        }
+        before = Some(std::mem::replace(&mut state, next));
+    }
+    drop(cache);
+    let raw = RawSolution {
+        load_factor: w,
+        normal_force: lambda,
+        tangential_force: tau,
+        status,
+        iterations,
+        time: clock.elapsed(),
+    };
+    let mut solution = finish_from_displacement(problem, &u, raw, start);
+    solution.trace = trace;
+    solution
+}
+
+/// The state the semi-smooth update picks from a state's solution (module docs).
+fn next_state(
+    problem: &ContactProblem,
+    solution: &StateSolution,
+    gap: &[f64],
+    slip: &[f64],
+    start: &StepStart,
+    (c_n, c_t): (f64, f64),
+    frictional: bool,
+) -> Vec<PairState> {
+    let (lambda, tau) = (&solution.normal_force, &solution.tangential_force);
+    (0..lambda.len())
+        .map(|k| {
+            let normal = lambda[k] - c_n * gap[k];
+            if normal <= 0.0 || !problem.normal[k] {
+                return PairState::Free;
+            }
+            let mu = problem.friction[k];
+            if !frictional || !problem.tangential[k] || mu == 0.0 {
+                return PairState::Stick;
+            }
+            let theta = tau[k] - c_t * (slip[k] - start.slip[k]);
+            PairState::from_trial(normal, theta, mu, true)
+        })
+        .collect()
+}
+
+/// Whether the solution of `state` satisfies all contact and friction conditions to round-off
+/// (1e-10 of the force and length scales; as `frictional_active_set.rs` decides it).
+fn admissible(
+    problem: &ContactProblem,
+    state: &[PairState],
+    solution: &StateSolution,
+    gap: &[f64],
+    slip: &[f64],
+    start: &StepStart,
+) -> bool {
+    let (lambda, tau) = (&solution.normal_force, &solution.tangential_force);
+    let force = lambda.iter().chain(tau).fold(0.0f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
+    let length = gap.iter().zip(&problem.gap).fold(0.0f64, |a, (v, g0)| a.max((v - g0).abs())).max(f64::MIN_POSITIVE);
+    let (tf, tg) = (1e-10 * force, 1e-10 * length);
+    (0..lambda.len()).all(|k| {
+        let ds = slip[k] - start.slip[k];
+        let mu_lambda = problem.friction[k] * lambda[k];
+        match state[k] {
+            PairState::Free => gap[k] >= -tg,
+            PairState::Stick => lambda[k] >= -tf && tau[k].abs() <= mu_lambda + tf,
+            PairState::SlipPositive => lambda[k] >= -tf && ds >= -tg,
+            PairState::SlipNegative => lambda[k] >= -tf && ds <= tg,
+        }
+    })
+}

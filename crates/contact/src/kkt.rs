@@ -1,0 +1,370 @@
+//! The equations of one contact state on the full (not condensed) system, for the sparse path
+//! ([`crate::LinearSolver::Sparse`]): displacements and pair forces together, factored sparse.
+//!
+//! ```text
+//! unknowns  x = [u_f; z_N; z_T],   λ = −s z_N,  τ = −s z_T    (s: the row scale below)
+//! K u_f + s Σ_{k in contact} (b_k + f_k t_k)ᵀ z_N,k + s Σ_{k stick} t_kᵀ z_T,k = w r
+//! s b_k · u_f = −s ĝ_k              (k in contact: gap_k = ĝ_k + b_k·u_f = 0)
+//! s t_k · u_f = s (s_start,k − ŝ_k)  (k stick: Δs_k = 0)
+//! z_N,k = 0 (k free),   z_T,k = 0 (k not stick: τ_k = f_k λ_k for slip, 0 otherwise)
+//! b_k, t_k: free parts of B_N, B_T;  ĝ_k = g0_k + w (B_N,c u_c)_k,  ŝ_k = w (B_T,c u_c)_k
+//! f_k = −μ_k (slip+), +μ_k (slip−), 0 otherwise
+//! ```
+//!
+//! These are the condensed state equations (`algorithms/state_equations.rs`) before `u_f` is
+//! eliminated: the same solution. The matrix is symmetric except for the slip pairs' friction
+//! columns `f_k t_kᵀ`. Its symmetric part `A_sym` (slip pairs as frictionless contact pairs) is
+//! factored by [`contact2d_fem::SaddlePointSolver`] (symbolic analysis once per interface,
+//! numeric per change of the pairs in contact or sticking), and the whole matrix is solved by
+//! GMRES right-preconditioned with that factor:
+//!
+//! ```text
+//! A A_sym⁻¹ = I + F A_sym⁻¹,   F = the friction columns: rank ≤ #slip, relative size ~ μ
+//! ```
+//!
+//! so GMRES converges in a few iterations (one without slip). (A stale factor of the previous
+//! state as the preconditioner, `A` then differing by a low-rank term as well, was measured: a
+//! sparse triangular solve costs 1/7 of a factorisation on the long-interface meshes, and GMRES
+//! needed 15–30 iterations; refactoring is cheaper.) The active set solves its trial states to
+//! a relative residual of 1e-4 ([`Accuracy::Trial`]) and the state that repeats to 1e-14
+//! ([`Accuracy::Final`], warm-started). The row scale `s = k_c` (the contact stiffness of the pairs,
+//! `algorithms/full_system.rs`) gives the constraint rows the units of the force rows, so that
+//! GMRES's residual weighs both alike.
+
+use contact2d_fem::{FemError, SaddlePointSolver};
+
+use crate::problem::ContactProblem;
+use crate::solution::{PairState, StepStart};
+
+/// GMRES iterations allowed per solve (a safeguard: friction columns converge in a handful).
+const BUDGET: usize = 200;
+
+/// How accurately a state is solved.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Accuracy {
+    /// Relative residual 1e-4: enough to choose the next state while the iteration moves.
+    Trial,
+    /// Relative residual 1e-14 (or the round-off floor): the answer.
+    Final,
+}
+
+impl Accuracy {
+    fn tolerance(self) -> f64 {
+        match self {
+            Accuracy::Trial => 1e-4,
+            Accuracy::Final => 1e-14,
+        }
+    }
+}
+
+/// The largest relative residual accepted as the round-off floor: the floor is set by
+/// round-off in `A x` itself (`ε ‖|A| |x|‖`, which exceeds `1e-14 ‖b‖` where the forces in
+/// `K u` nearly cancel: 3e-14 at 37k DOFs, 1e-11 at 952k DOFs on the long-interface benchmark). A sanity bound, not the accuracy: GMRES
+/// preconditioned by the exact factor reduces the residual geometrically until that floor.
+const ROUND_OFF_FLOOR: f64 = 1e-9;
+
+/// Krylov vectors kept before GMRES restarts (two vectors of the system's size each: 120 MB at
+/// 952k DOFs; the solves converge in a few iterations or stop at the round-off floor).
+const RESTART: usize = 8;
+
+/// The sparse state system of an interface: the analysed saddle-point factor and which rows
+/// its last numeric factorisation switched on.
+#[derive(Debug)]
+pub(crate) struct StateKkt {
+    solver: SaddlePointSolver,
+    /// Rows switched on in the last factorisation (normal rows, then tangential rows).
+    factored: Option<Vec<bool>>,
+    /// Row scale `s`.
+    scale: f64,
+    /// Whether the tangential rows are part of the system.
+    frictional: bool,
+    /// The active set's complementarity constants `(c_N, c_T)`, computed once per interface.
+    pub(crate) constants: (f64, f64),
+    /// Numeric factorisations and GMRES iterations done (statistics).
+    pub(crate) factorizations: usize,
+    pub(crate) krylov_iterations: usize,
+}
+
+/// A state's solution: forces and free displacements.
+pub(crate) struct StateSolution {
+    pub(crate) normal_force: Vec<f64>,
+    pub(crate) tangential_force: Vec<f64>,
+    pub(crate) displacement: Vec<f64>,
+    /// All unknowns `x` (a warm start for the same state).
+    pub(crate) unknowns: Vec<f64>,
+}
+
+/// How pair `k`'s tangential force follows from its state.
+fn slip_factor(problem: &ContactProblem, state: PairState, k: usize, frictional: bool) -> f64 {
+    if !frictional || !problem.tangential[k] {
+        return 0.0;
+    }
+    match state {
+        PairState::SlipPositive => -problem.friction[k],
+        PairState::SlipNegative => problem.friction[k],
+        PairState::Free | PairState::Stick => 0.0,
+    }
+}
+
+/// Whether pair `k` has its stick row on.
+fn sticks(problem: &ContactProblem, state: PairState, k: usize, frictional: bool) -> bool {
+    frictional && state == PairState::Stick && problem.tangential[k] && problem.friction[k] > 0.0
+}
+
+impl StateKkt {
+    /// Analyses the system of `problem` (every normal row and, when `frictional`, every
+    /// tangential row) with row scale `scale`.
+    ///
+    /// # Errors
+    /// From the analysis.
+    pub(crate) fn new(
+        problem: &ContactProblem,
+        frictional: bool,
+        scale: f64,
+        constants: (f64, f64),
+    ) -> Result<StateKkt, FemError> {
+        let scaled = |rows: &[crate::problem::PairRow]| -> Vec<Vec<(usize, f64)>> {
+            rows.iter().map(|r| r.free.iter().map(|&(j, v)| (j, scale * v)).collect()).collect()
+        };
+        let mut rows = scaled(&problem.normal_rows);
+        if frictional {
+            rows.extend(scaled(&problem.tangent_rows));
+        }
+        let refs: Vec<&[(usize, f64)]> = rows.iter().map(Vec::as_slice).collect();
+        let solver = SaddlePointSolver::analyse(&problem.system.stiffness, &refs)?;
+        Ok(StateKkt { solver, factored: None, scale, frictional, constants, factorizations: 0, krylov_iterations: 0 })
+    }
+
+    /// Whether the tangential rows are part of the system.
+    pub(crate) fn is_frictional(&self) -> bool {
+        self.frictional
+    }
+
+    /// Rows of `A_sym` switched on for `state`.
+    fn rows_on(&self, problem: &ContactProblem, state: &[PairState]) -> Vec<bool> {
+        let m = state.len();
+        let mut on: Vec<bool> = (0..m).map(|k| state[k] != PairState::Free && problem.normal[k]).collect();
+        if self.frictional {
+            on.extend((0..m).map(|k| sticks(problem, state[k], k, true)));
+        }
+        on
+    }
+
+    /// Solves the state equations of the module docs at load `w` from `start` to the relative
+    /// residual `accuracy`, GMRES starting from `warm` (a previous solution of this state, or
+    /// zero); `None` if the factorisation fails (dependent rows in contact) or GMRES does not
+    /// converge.
+    pub(crate) fn solve(
+        &mut self,
+        problem: &ContactProblem,
+        w: f64,
+        start: &StepStart,
+        state: &[PairState],
+        accuracy: Accuracy,
+        warm: Option<&[f64]>,
+    ) -> Option<StateSolution> {
+        let (n, m) = (problem.system.dofs.num_free(), state.len());
+        let on = self.rows_on(problem, state);
+        if self.factored.as_ref() != Some(&on) {
+            self.factored = None;
+            self.solver.factor(&on).ok()?;
+            self.factored = Some(on.clone());
+            self.factorizations += 1;
+        }
+        let system = Operator { problem, state, on: &on, scale: self.scale, frictional: self.frictional };
+        let b = system.rhs(w, start);
+        let x = self.gmres(&system, &b, warm, accuracy.tolerance())?;
+        let s = self.scale;
+        let normal_force: Vec<f64> = (0..m).map(|k| if on[k] { -s * x[n + k] } else { 0.0 }).collect();
+        let tangential_force = (0..m)
+            .map(|k| {
+                if self.frictional && on[m + k] {
+                    -s * x[n + m + k]
+                } else {
+                    slip_factor(problem, state[k], k, self.frictional) * normal_force[k]
+                }
+            })
+            .collect();
+        Some(StateSolution { normal_force, tangential_force, displacement: x[..n].to_vec(), unknowns: x })
+    }
+
+    /// Restarted GMRES on `A x = b`, right-preconditioned by the last factor, from `warm` (or
+    /// zero), at most [`BUDGET`] iterations; `None` unless `‖b − A x‖ ≤ tolerance ‖b‖` or the
+    /// residual stalls below [`ROUND_OFF_FLOOR`] `‖b‖` (or on breakdown).
+    fn gmres(&mut self, system: &Operator, b: &[f64], warm: Option<&[f64]>, tolerance: f64) -> Option<Vec<f64>> {
+        let norm = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+        let scale = norm(b);
+        let target = tolerance * scale;
+        let mut x = match warm {
+            Some(w) if w.len() == b.len() => w.to_vec(),
+            _ => vec![0.0; b.len()],
+        };
+        if scale == 0.0 {
+            return Some(vec![0.0; b.len()]);
+        }
+        let mut used = 0;
+        let mut previous = f64::INFINITY;
+        // Whether the last cycle ended with GMRES's own residual estimate below the target.
+        let mut estimated = false;
+        loop {
+            let mut r = system.apply(&x);
+            r.iter_mut().zip(b).for_each(|(r, b)| *r = b - *r);
+            let beta = norm(&r);
+            // Converged; or at the round-off floor of the residual: the last cycle's estimate
+            // reached the target but the true residual did not, or a whole cycle did not halve
+            // it (the floor is checked against ROUND_OFF_FLOOR ‖b‖).
+            let floor = (estimated || beta > 0.5 * previous) && beta <= ROUND_OFF_FLOOR * scale;
+            if beta <= target || floor {
+                return x.iter().all(|v| v.is_finite()).then_some(x);
+            }
+            if used >= BUDGET {
+                return None;
+            }
+            previous = beta;
+            let steps = RESTART.min(BUDGET - used);
+            let mut basis: Vec<Vec<f64>> = vec![r.iter().map(|v| v / beta).collect()];
+            let mut preconditioned: Vec<Vec<f64>> = vec![];
+            let mut h: Vec<Vec<f64>> = vec![];
+            let (mut cs, mut sn): (Vec<f64>, Vec<f64>) = (vec![], vec![]);
+            let mut g = vec![beta];
+            for j in 0..steps {
+                used += 1;
+                self.krylov_iterations += 1;
+                let mut z = basis[j].clone();
+                if !self.solver.solve_in_place(&mut z) {
+                    return None;
+                }
+                let mut v = system.apply(&z);
+                preconditioned.push(z);
+                // Modified Gram–Schmidt, twice (the Krylov vectors stay orthogonal to round-off).
+                let mut column = vec![0.0; j + 2];
+                for _ in 0..2 {
+                    for (i, q) in basis.iter().enumerate() {
+                        let d: f64 = q.iter().zip(&v).map(|(a, b)| a * b).sum();
+                        column[i] += d;
+                        v.iter_mut().zip(q).for_each(|(v, q)| *v -= d * q);
+                    }
+                }
+                column[j + 1] = norm(&v);
+                for i in 0..j {
+                    let (a, c) = (column[i], column[i + 1]);
+                    column[i] = cs[i] * a + sn[i] * c;
+                    column[i + 1] = -sn[i] * a + cs[i] * c;
+                }
+                let (a, c) = (column[j], column[j + 1]);
+                let radius = a.hypot(c);
+                if radius == 0.0 {
+                    return None;
+                }
+                cs.push(a / radius);
+                sn.push(c / radius);
+                column[j] = radius;
+                column[j + 1] = 0.0;
+                g.push(-sn[j] * g[j]);
+                g[j] *= cs[j];
+                let next_norm = norm(&v);
+                h.push(column);
+                estimated = g[j + 1].abs() <= 0.5 * target;
+                if estimated || next_norm == 0.0 || j + 1 == steps {
+                    // y = H⁻¹ g (upper triangular), x += Σ y_i M⁻¹ v_i.
+                    let k = j + 1;
+                    let mut y = vec![0.0; k];
+                    for i in (0..k).rev() {
+                        let s: f64 = (i + 1..k).map(|l| h[l][i] * y[l]).sum();
+                        y[i] = (g[i] - s) / h[i][i];
+                    }
+                    for (yi, zi) in y.iter().zip(&preconditioned) {
+                        x.iter_mut().zip(zi).for_each(|(x, z)| *x += yi * z);
+                    }
+                    break;
+                }
+                basis.push(v.iter().map(|x| x / next_norm).collect());
+            }
+        }
+    }
+}
+
+/// The exact matrix of a state (module docs) as an operator.
+struct Operator<'a> {
+    problem: &'a ContactProblem,
+    state: &'a [PairState],
+    on: &'a [bool],
+    scale: f64,
+    frictional: bool,
+}
+
+impl Operator<'_> {
+    /// The right-hand side `[w r; s rhs_N; s rhs_T]` at load `w`.
+    fn rhs(&self, w: f64, start: &StepStart) -> Vec<f64> {
+        let p = self.problem;
+        let m = self.state.len();
+        let prescribed: Vec<f64> = p.pattern_prescribed.iter().map(|v| w * v).collect();
+        let constrained =
+            |row: &crate::problem::PairRow| row.constrained.iter().map(|(j, v)| v * prescribed[*j]).sum::<f64>();
+        let mut b: Vec<f64> = p.pattern_rhs.iter().map(|r| w * r).collect();
+        b.extend((0..m).map(
+            |k| {
+                if self.on[k] { -self.scale * (p.gap[k] + constrained(&p.normal_rows[k])) } else { 0.0 }
+            },
+        ));
+        if self.frictional {
+            b.extend((0..m).map(|k| {
+                if self.on[m + k] { self.scale * (start.slip[k] - constrained(&p.tangent_rows[k])) } else { 0.0 }
+            }));
+        }
+        b
+    }
+
+    /// `A x`.
+    fn apply(&self, x: &[f64]) -> Vec<f64> {
+        let p = self.problem;
+        let (n, m, s) = (p.system.dofs.num_free(), self.state.len(), self.scale);
+        let k = p.system.stiffness.as_ref();
+        let mut y = vec![0.0; x.len()];
+        for j in 0..n {
+            for (i, v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
+                y[i] += v * x[j];
+                if i != j {
+                    y[j] += v * x[i];
+                }
+            }
+        }
+        let dot = |row: &crate::problem::PairRow| row.free.iter().map(|&(i, v)| v * x[i]).sum::<f64>();
+        for kk in 0..m {
+            let (row_n, row_t) = (&p.normal_rows[kk], &p.tangent_rows[kk]);
+            if self.on[kk] {
+                let z = s * x[n + kk];
+                row_n.free.iter().for_each(|&(i, v)| y[i] += v * z);
+                let f = slip_factor(p, self.state[kk], kk, self.frictional);
+                if f != 0.0 {
+                    row_t.free.iter().for_each(|&(i, v)| y[i] += f * v * z);
+                }
+                y[n + kk] = s * dot(row_n);
+            } else {
+                y[n + kk] = x[n + kk];
+            }
+            if self.frictional {
+                let q = n + m + kk;
+                if self.on[m + kk] {
+                    let z = s * x[q];
+                    row_t.free.iter().for_each(|&(i, v)| y[i] += v * z);
+                    y[q] = s * dot(row_t);
+                } else {
+                    y[q] = x[q];
+                }
+            }
+        }
+        y
+    }
+}
+
+/// The state system an interface keeps for the sparse path (a cache, like
+/// [`crate::factor_cache::StateFactorCache`]: a clone starts empty).
+#[derive(Debug, Default)]
+pub(crate) struct KktCache(pub(crate) std::sync::Mutex<Option<StateKkt>>);
+
+impl Clone for KktCache {
+    fn clone(&self) -> KktCache {
+        KktCache::default()
+    }
+}

@@ -1,0 +1,211 @@
+//! The sparse path (`solver.linear = "sparse"`: each contact state solved on the full system,
+//! `crate::kkt`) against the condensed path (the interface condensed onto the pairs, each state's
+//! reduced system a dense LU): a second algorithm for the same discrete problem, so the two
+//! histories must agree to round-off in every force and displacement.
+//!
+//! ```text
+//!   ┌──────────────┐  upper block: pushed (two_blocks) or pressed and slid (blocks below)
+//!   └──────────────┘  master ── gap / tilt / touching ──
+//!   ┌──────────────────────┐  lower block, slave; bottom clamped
+//!   └──────────────────────┘
+//! ```
+//!
+//! Cases: frictionless through a tilted gap; Coulomb press and slide through stick and slip;
+//! a floating block (held only by contact) with every pairing (node-to-segment,
+//! node-to-node, segment-to-segment on non-matching meshes).
+//!
+//! Tolerance 1e-10 of the largest value of each field: both paths end in the same contact
+//! state and solve its linear equations backward-stably (LU of the condensed compliances;
+//! LDLᵀ plus GMRES to a relative residual of 1e-14 on the full system); on these meshes the
+//! systems' condition numbers are below ~1e5, so the answers differ by ~1e5 ε ≈ 2e-11.
+#![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
+
+use contact2d_contact::{
+    BodyDescription, ContactAlgorithm, ContactDescription, ContactProblem, ContactStatus, EdgeLoadKind, FixDescription,
+    GapDescription, History, LinearSolver, LoadDescription, LoadSchedule, Pairing, ProblemDescription, SolverSettings,
+    solve,
+};
+use contact2d_element::{Formulation, PlaneCondition};
+use contact2d_fem::Component;
+use contact2d_mesh::generate::{append_prefixed, rectangle};
+use contact2d_mesh::{CellKind, Mesh};
+
+#[path = "fixtures/two_blocks.rs"]
+mod fixture;
+use fixture::{two_blocks, two_blocks_sliding};
+
+/// Solves `schedule` on `problem` with the active set on both paths.
+fn both_paths(problem: &ContactProblem, schedule: &LoadSchedule) -> (History, History) {
+    let run = |linear| {
+        // Floating bodies' proximal iteration to 1e-14 (default 1e-10): it stops at a spring
+        // force of that fraction of the force scale, and the paths must agree beyond it.
+        let settings = SolverSettings::new(ContactAlgorithm::ActiveSet)
+            .with_linear(linear)
+            .unwrap()
+            .with_floating_tolerance(1e-14)
+            .unwrap();
+        solve(problem, &settings, schedule).unwrap()
+    };
+    (run(LinearSolver::Condensed), run(LinearSolver::Sparse))
+}
+
+/// Asserts that every step converged on both paths with the same states, and that forces,
+/// displacements, gaps and dissipation agree to 1e-10 of each field's largest value.
+fn assert_agree(condensed: &History, sparse: &History) {
+    let statuses = |h: &History| h.steps.iter().map(|s| s.solution.status).collect::<Vec<_>>();
+    assert_eq!(statuses(condensed), statuses(sparse));
+    for (i, (a, b)) in condensed.steps.iter().zip(&sparse.steps).enumerate() {
+        let (a, b) = (&a.solution, &b.solution);
+        assert_eq!(a.status, ContactStatus::Converged, "step {i}: condensed {:?}", a.status);
+        assert_eq!(b.status, ContactStatus::Converged, "step {i}: sparse {:?}", b.status);
+        assert_eq!(a.state, b.state, "step {i}: states");
+        let largest = |x: &[f64]| x.iter().fold(f64::MIN_POSITIVE, |m, v| m.max(v.abs()));
+        // Gaps are judged on the displacements' scale (closed gaps are round-off themselves).
+        let fields = [
+            ("normal force", &a.normal_force, &b.normal_force, largest(&a.normal_force)),
+            ("tangential force", &a.tangential_force, &b.tangential_force, largest(&a.normal_force)),
+            ("displacement", &a.displacement, &b.displacement, largest(&a.displacement)),
+            ("gap", &a.gap, &b.gap, largest(&a.displacement).max(largest(&a.gap))),
+        ];
+        for (name, x, y, scale) in fields {
+            for (k, (p, q)) in x.iter().zip(y.iter()).enumerate() {
+                assert!((p - q).abs() <= 1e-10 * scale, "step {i}, {name} [{k}]: condensed {p}, sparse {q}");
+            }
+        }
+        let d = a.dissipation.abs().max(f64::MIN_POSITIVE);
+        assert!((a.dissipation - b.dissipation).abs() <= 1e-10 * d, "step {i}: dissipation");
+    }
+}
+
+#[test]
+fn frictionless_contact_through_a_tilted_gap() {
+    let problem = two_blocks(CellKind::Quad9, 0.01, 0.05, 3.0, 0.03, 7, 5);
+    let schedule = LoadSchedule::ramp(vec!["main".into()], 3).unwrap();
+    let (condensed, sparse) = both_paths(&problem, &schedule);
+    assert!(condensed.steps.last().unwrap().solution.state.iter().any(|s| *s == contact2d_contact::PairState::Free));
+    assert_agree(&condensed, &sparse);
+}
+
+#[test]
+fn coulomb_press_and_slide_through_stick_and_slip() {
+    let mut problem = two_blocks_sliding(CellKind::Quad9, 0.0, 0.005, 2.0, 0.05, 0.02, 8, 6);
+    problem.set_friction(0.3).unwrap();
+    let schedule = LoadSchedule::ramp(vec!["main".into()], 4).unwrap();
+    let (condensed, sparse) = both_paths(&problem, &schedule);
+    let states = &condensed.steps.last().unwrap().solution.state;
+    assert!(
+        states.iter().any(|s| matches!(
+            s,
+            contact2d_contact::PairState::SlipPositive | contact2d_contact::PairState::SlipNegative
+        ))
+    );
+    assert_agree(&condensed, &sparse);
+}
+
+/// Lower block `lower` × [−1, 0] (`na` cells along x), upper block [0.5, 2.5] × [0, 1] (`nb`),
+/// Quad9; the upper block pressed by q = 10 and slid by its top (u1 only: it floats in y).
+fn floating_description(lower: [f64; 2], na: usize, nb: usize, pairing: Pairing) -> ProblemDescription {
+    let mut mesh = Mesh::default();
+    append_prefixed(&mut mesh, &rectangle(CellKind::Quad9, lower, [-1.0, 0.0], na, 3), "a_");
+    append_prefixed(&mut mesh, &rectangle(CellKind::Quad9, [0.5, 2.5], [0.0, 1.0], nb, 3), "b_");
+    let body = |region: &str, e: f64| BodyDescription {
+        region: region.into(),
+        youngs_modulus: e,
+        poissons_ratio: 0.3,
+        plane: PlaneCondition::Strain,
+        thickness: 1.0,
+        formulation: Formulation::Standard,
+    };
+    let fix = |group: &str, component, value, pattern: &str| FixDescription {
+        group: group.into(),
+        component,
+        value,
+        pattern: pattern.into(),
+    };
+    ProblemDescription {
+        mesh,
+        bodies: vec![body("a_domain", 1000.0), body("b_domain", 2000.0)],
+        fixes: vec![
+            fix("a_bottom", Component::X, 0.0, "main"),
+            fix("a_bottom", Component::Y, 0.0, "main"),
+            fix("b_top", Component::X, 0.02, "slide"),
+        ],
+        loads: vec![LoadDescription {
+            group: "b_top".into(),
+            kind: EdgeLoadKind::Pressure(10.0),
+            pattern: "press".into(),
+        }],
+        contacts: vec![ContactDescription {
+            name: "joint".into(),
+            master: "b_bottom".into(),
+            slave: "a_top".into(),
+            rigid_slave: false,
+            pairing,
+            gap: GapDescription::Geometric,
+            friction: 0.3,
+            self_contact: false,
+        }],
+    }
+}
+
+#[test]
+fn a_floating_block_pressed_and_slid_with_every_pairing() {
+    for &pairing in Pairing::ALL {
+        // Node-to-node: a lower block as wide as the upper one, the meshes matching (one slave
+        // node per pair); otherwise a wider lower block with non-matching cells (7 against 4).
+        let (lower, na) = if pairing == Pairing::NodeToNode { ([0.5, 2.5], 4) } else { ([0.0, 3.0], 7) };
+        let built = floating_description(lower, na, 4, pairing).build().unwrap();
+        assert_eq!(built.problem.system.floating.len(), 1, "{pairing:?}");
+        let schedule = LoadSchedule::new(
+            vec!["press".into(), "slide".into()],
+            vec![vec![1.0, 0.0], vec![1.0, 0.3], vec![1.0, 0.6], vec![1.0, 1.0]],
+        )
+        .unwrap();
+        let (condensed, sparse) = both_paths(&built.problem, &schedule);
+        assert_agree(&condensed, &sparse);
+    }
+}
+
+#[test]
+fn sparse_is_refused_for_the_algorithms_that_need_the_compliances() {
+    for algorithm in [ContactAlgorithm::Clarabel, ContactAlgorithm::Boussinesq] {
+        let refused = SolverSettings::new(algorithm).with_linear(LinearSolver::Sparse);
+        assert!(matches!(refused, Err(contact2d_contact::ContactError::NotApplicable { .. })), "{algorithm:?}");
+    }
+}
+
+#[test]
+fn the_compliance_algorithms_condense_a_sparse_interface_themselves() {
+    // Clarabel's entry point given the sparse path's interface (no compliances) condenses the
+    // problem itself: the same answer as on the condensed interface, bit for bit (the same
+    // computation).
+    let problem = two_blocks(CellKind::Quad9, 0.01, 0.05, 3.0, 0.03, 7, 5);
+    let on_condensed =
+        contact2d_contact::solve_frictionless_qp_on(&problem, &contact2d_contact::Interface::new(&problem), 1.0);
+    let on_sparse =
+        contact2d_contact::solve_frictionless_qp_on(&problem, &contact2d_contact::Interface::sparse(&problem), 1.0);
+    assert_eq!(on_condensed.status, on_sparse.status);
+    assert_eq!(on_condensed.normal_force, on_sparse.normal_force);
+}
+
+#[test]
+fn the_full_system_algorithms_give_the_same_answer_on_either_path() {
+    // The augmented Lagrangian and the penalty method never use the compliances (each factors
+    // its own sparse LU of the full system): on the sparse path they only skip the
+    // condensation, so their answers are the same bit for bit.
+    let mut problem = two_blocks_sliding(CellKind::Quad9, 0.0, 0.005, 2.0, 0.05, 0.02, 6, 4);
+    problem.set_friction(0.3).unwrap();
+    let schedule = LoadSchedule::ramp(vec!["main".into()], 2).unwrap();
+    for algorithm in [ContactAlgorithm::AugmentedLagrangian, ContactAlgorithm::Penalty] {
+        let run = |linear| {
+            let settings = SolverSettings::new(algorithm).with_linear(linear).unwrap();
+            solve(&problem, &settings, &schedule).unwrap()
+        };
+        let (condensed, sparse) = (run(LinearSolver::Condensed), run(LinearSolver::Sparse));
+        for (a, b) in condensed.steps.iter().zip(&sparse.steps) {
+            assert_eq!(a.solution.status, b.solution.status, "{algorithm:?}");
+            assert_eq!(a.solution.normal_force, b.solution.normal_force, "{algorithm:?}");
+            assert_eq!(a.solution.displacement, b.solution.displacement, "{algorithm:?}");
+        }
+    }
+}
