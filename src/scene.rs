@@ -51,6 +51,7 @@ mod solver;
 
 pub use limits::{MAGNITUDE_RANGE, MAX_FRICTION, MAX_ITERATIONS, MAX_STEPS, STIFFNESS_RATIO_RANGE};
 pub(crate) use overrides::apply_override;
+pub use overrides::overridden_scene_text;
 pub(crate) use parse::parse_scene_toml;
 pub use parse::read_scene_text;
 pub use solver::{SolverEntry, algorithm_from_key, deserialize_algorithm, serialize_algorithm};
