@@ -118,3 +118,17 @@ def test_write_gives_the_cli_outputs(tmp_path: Path) -> None:
     names = {p.name for p in written}
     assert {"summary.json", "steps.csv", "steps.pvd"} <= names, names
     assert all(p.is_file() for p in written)
+
+
+def test_to_meshio_carries_the_mesh_and_displacement(tmp_path: Path) -> None:
+    meshio = pytest.importorskip("meshio")
+    import numpy as np
+
+    result = contact2d.solve(contact2d.Scene.load(ROOT / "scenes" / "generic" / "pin_lug.toml"))
+    mesh = result.to_meshio(step=0)
+    assert np.array_equal(mesh.points, result.mesh.points)
+    assert np.array_equal(mesh.point_data["u"], result.displacement(0))
+    assert sum(len(block.data) for block in mesh.cells) == sum(len(c) for _, c, _ in result.mesh.cells)
+    # meshio can write it (VTU) and read it back.
+    mesh.write(tmp_path / "pin_lug.vtu")
+    assert np.array_equal(meshio.read(tmp_path / "pin_lug.vtu").point_data["u"], result.displacement(0))
