@@ -105,7 +105,10 @@ def sweep(
         cluster = LocalCluster(processes=True, threads_per_worker=1, dashboard_address=None)
         client = Client(cluster)
     try:
-        shipped = client.scatter(payload, broadcast=True)
+        # hash=False: a key of its own per call. A content-hashed key would be shared with an
+        # earlier sweep of the same scene on the same client, whose release then cancels this one's
+        # tasks ("lost dependencies").
+        shipped = client.scatter(payload, broadcast=True, hash=False)
         futures = [client.submit(run_case, shipped, keys, case, cols, pure=False) for case in cases]
         records = client.gather(futures)
     finally:

@@ -43,3 +43,14 @@ def test_local_cluster_sweep_equals_cli_sweep(tmp_path: Path) -> None:
             assert row[c] == float(expected[c]), (c, row[c], expected[c])
         assert row["iterations"] == int(expected["iterations"])
     assert (frame["status"] == "error").sum() == 2
+
+
+def test_sweeps_of_one_scene_on_one_client_follow_each_other() -> None:
+    from dask.distributed import Client, LocalCluster
+
+    scene = contact2d.Scene.load(ROOT / "scenes" / "generic" / "pin_lug.toml")
+    with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster, Client(cluster) as client:
+        first = contact2d.sweep(scene, {"contact.bore.friction": [0.0, 0.1]}, client=client)
+        second = contact2d.sweep(scene, {"contact.bore.friction": [0.0, 0.1, 0.2]}, client=client)
+    assert (first["status"] == "converged").all() and (second["status"] == "converged").all()
+    assert first["contacts.bore.normal_force"].tolist() == second["contacts.bore.normal_force"].tolist()[:2]
