@@ -120,6 +120,14 @@ enum Command {
         /// No progress bar and no table on stdout (the list of files written only).
         #[arg(long)]
         quiet: bool,
+        /// Run only shard I (from 0) of --shards N: the I-th of N disjoint, contiguous slices of
+        /// the combinations in their order, so that N jobs (a Slurm job array) share a sweep;
+        /// the shards' sweep.csv rows in shard order are the unsharded rows (docs/python.md).
+        #[arg(long, value_name = "I", default_value_t = 0, requires = "shards")]
+        shard: usize,
+        /// The number of shards (default 1: the whole sweep).
+        #[arg(long, value_name = "N", default_value_t = 1)]
+        shards: usize,
     },
     /// Wall time against discretisation error: flagship cases × mesh levels × algorithms.
     ///
@@ -231,7 +239,10 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 }
             }
         }
-        Command::Sweep { scene, vary, set, plot, out, quiet } => sweep(&scene, &vary, &set, &plot, out, quiet)?,
+        Command::Sweep { scene, vary, set, plot, out, quiet, shard, shards } => {
+            let shard = contact2d::sweep::Shard::new(shard, shards)?;
+            sweep(&scene, &vary, &set, &plot, (out, shard), quiet)?;
+        }
         Command::Bench(args) => writeln!(std::io::stdout().lock(), "{}", contact2d::bench::run_command(&args)?)?,
         Command::Verify(args) => {
             let (table, passed) = contact2d::verify::run_command(&args)?;
@@ -324,15 +335,15 @@ fn sweep(
     vary: &[String],
     set: &[String],
     plot: &str,
-    out: Option<std::path::PathBuf>,
+    (out, shard): (Option<std::path::PathBuf>, contact2d::sweep::Shard),
     quiet: bool,
 ) -> anyhow::Result<()> {
-    use contact2d::sweep::{Variation, check_variations, csv_header, csv_row, markdown, run_sweep, write_sweep};
+    use contact2d::sweep::{Variation, check_variations, csv_header, csv_row, markdown, run_sweep_shard, write_sweep};
     use std::io::IsTerminal;
     let variations = vary.iter().map(|v| Variation::parse(v)).collect::<Result<Vec<_>, _>>()?;
     // Unknown or repeated keys and oversized grids fail before any run, and so does a scene that
     // does not load at all (each combination is checked in its run).
-    let runs = check_variations(scene, &variations, set)?;
+    let runs = shard.range(check_variations(scene, &variations, set)?).len();
     let base = contact2d::subject::Subject::load(scene, set)?;
     let plots: Vec<String> = if plot == DEFAULT_PLOT {
         base.sweep_plots()
@@ -342,7 +353,8 @@ fn sweep(
     let mut columns = base.sweep_columns();
     columns.extend(plots.iter().filter(|p| !columns.contains(p)).cloned().collect::<Vec<_>>());
     let stem = scene.file_stem().map_or("scene".into(), |s| s.to_string_lossy().into_owned());
-    let dir = out.unwrap_or_else(|| std::path::PathBuf::from("out").join(format!("sweep_{stem}")));
+    let suffix = if shard.count() > 1 { format!("_shard{}of{}", shard.index(), shard.count()) } else { String::new() };
+    let dir = out.unwrap_or_else(|| std::path::PathBuf::from("out").join(format!("sweep_{stem}{suffix}")));
     let mut folder = contact2d::output::OutputDir::prepare(&dir, None)?;
     // Rows go to sweep.csv.partial as they finish (flushed), so an interrupted sweep keeps them.
     let mut partial = folder.stream("sweep.csv")?;
@@ -358,7 +370,7 @@ fn sweep(
             .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
     let append_error = std::sync::Mutex::new(None);
-    let rows = run_sweep(scene, &variations, set, |row| {
+    let rows = run_sweep_shard(scene, &variations, set, shard, |row| {
         if let Ok(mut file) = partial.lock()
             && let Err(e) = file.append(&csv_row(row, &columns))
             && let Ok(mut slot) = append_error.lock()

@@ -48,7 +48,8 @@ mod limits;
 
 use crate::schema::parse_scene_toml;
 pub use crate::schema::{
-    SceneError, SolverEntry, algorithm_from_key, deserialize_algorithm, read_scene_text, serialize_algorithm,
+    SceneError, SolverEntry, algorithm_from_key, deserialize_algorithm, overridden_scene_text, read_scene_text,
+    serialize_algorithm,
 };
 pub use limits::{MAGNITUDE_RANGE, MAX_FRICTION, MAX_ITERATIONS, MAX_STEPS, STIFFNESS_RATIO_RANGE};
 

@@ -8,6 +8,7 @@ mod parse;
 mod solver;
 
 pub(crate) use overrides::apply_override;
+pub use overrides::overridden_scene_text;
 pub(crate) use parse::parse_scene_toml;
 pub use parse::read_scene_text;
 pub use solver::{SolverEntry, algorithm_from_key, deserialize_algorithm, serialize_algorithm};

@@ -39,6 +39,22 @@ fn excluded_by(table: &[&str], key: &str) -> Option<&'static str> {
     }
 }
 
+/// The TOML text of a scene with `overrides` applied through the same engine as `--set`
+/// (`apply_override`): what a caller holding a scene as text plus overrides (the Python
+/// package) shows as the scene. Comments and layout are not kept.
+///
+/// # Errors
+/// [`SceneError::Invalid`] naming `path` if `text` is not TOML; [`SceneError::Override`] for an
+/// override that does not apply.
+pub fn overridden_scene_text(text: &str, path: &std::path::Path, overrides: &[String]) -> Result<String, SceneError> {
+    let invalid = |reason: String| SceneError::Invalid { path: path.display().to_string(), reason };
+    let mut root = toml::Value::Table(toml::from_str::<toml::Table>(text).map_err(|e| invalid(e.to_string()))?);
+    for assignment in overrides {
+        apply_override(&mut root, assignment)?;
+    }
+    toml::to_string(&root).map_err(|e| invalid(e.to_string()))
+}
+
 /// Sets `a.b.c = value` in a TOML tree; the key must exist (unknown keys are errors). An array
 /// of tables (`[[contact]]` of a generic scene) is entered by index (`contact.0.friction`) or by
 /// the entry's `name`, `region` or `group` (`contact.hertz.friction`, `body.block.thickness`).
@@ -109,5 +125,18 @@ mod tests {
         // Words and paths stay strings.
         assert!(load(&["plate_insert.mesh=other.msh".into()]).is_ok());
         assert_eq!(load(&["name=1e5x".into()]).unwrap().name, "1e5x", "not a number: a string");
+    }
+
+    #[test]
+    fn the_overridden_text_loads_as_the_overrides_do() {
+        let sets = ["plate_insert.friction=0.3".to_string()];
+        let text = super::overridden_scene_text(SCENE, Path::new("t.toml"), &sets).unwrap();
+        let reloaded = Scene::from_toml_str(&text, Path::new("t.toml"), &[]).unwrap();
+        assert_eq!(reloaded.plate_insert.friction, 0.3);
+        assert_eq!(reloaded.plate_insert, load(&sets).unwrap().plate_insert);
+        let bad = super::overridden_scene_text(SCENE, Path::new("t.toml"), &["plate_insert.friction".into()]);
+        assert!(matches!(bad, Err(super::SceneError::Override { .. })), "{bad:?}");
+        let e = super::overridden_scene_text("x = [", Path::new("t.toml"), &[]).unwrap_err().to_string();
+        assert!(e.starts_with("scene t.toml: "), "{e}");
     }
 }

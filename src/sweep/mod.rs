@@ -24,7 +24,9 @@ use rayon::prelude::*;
 use crate::output::OutputError;
 use crate::subject::Subject;
 
+mod shard;
 mod writers;
+pub use shard::Shard;
 pub use writers::{csv_header, csv_row, markdown, write_sweep};
 
 /// Errors of a sweep's set-up or of writing its files (failed runs are rows, not errors).
@@ -58,6 +60,16 @@ pub enum SweepError {
     TooManyRuns {
         /// The number of combinations asked for (saturated at `usize::MAX`).
         runs: usize,
+    },
+    /// A `--shard`/`--shards` pair that names no shard.
+    #[error("--shard {index} --shards {count}: {reason}")]
+    Shard {
+        /// The shard asked for (from 0).
+        index: usize,
+        /// The number of shards.
+        count: usize,
+        /// What is wrong.
+        reason: String,
     },
     /// Writing a file failed.
     #[error(transparent)]
@@ -181,7 +193,23 @@ pub fn run_sweep(
     base: &[String],
     on_row: impl Fn(&SweepRow) + Sync,
 ) -> Vec<SweepRow> {
-    combinations(variations)
+    run_sweep_shard(scene, variations, base, Shard::WHOLE, on_row)
+}
+
+/// [`run_sweep`] of one shard's cases only (see [`Shard`]): its rows are those of the unsharded
+/// sweep at the shard's indices, in the same order.
+pub fn run_sweep_shard(
+    scene: &Path,
+    variations: &[Variation],
+    base: &[String],
+    shard: Shard,
+    on_row: impl Fn(&SweepRow) + Sync,
+) -> Vec<SweepRow> {
+    let mut cases = combinations(variations);
+    let range = shard.range(cases.len());
+    cases.truncate(range.end);
+    cases.drain(..range.start);
+    cases
         .into_par_iter()
         .map(|values| {
             let mut overrides = base.to_vec();

@@ -1,0 +1,118 @@
+"""Parameter sweeps on Dask: one task per case, each shipping the scene's TOML text and its mesh's
+bytes (no path that exists on one machine only) and returning a small record."""
+
+from __future__ import annotations
+
+import itertools
+import sys
+import tempfile
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+from . import _core
+from .result import solve
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # Python 3.10
+    import tomli as tomllib
+
+#: The paper's quantities a sweep of a preset scene tabulates (as `contact2d sweep` does).
+PAPER_COLUMNS = ("l", "b", "P", "Phi_E1", "Phi_E2", "Phi_f", "W", "sigma_star", "K", "insert_hoop_max")
+
+
+def default_columns(scene: _core.Scene) -> list[str]:
+    """The columns `contact2d sweep` tabulates for `scene`: each interface's normal force and
+    contact length, or the paper's quantities for a preset scene."""
+    if scene.is_preset:
+        return list(PAPER_COLUMNS)
+    contacts = tomllib.loads(scene.to_toml()).get("contact", [])
+    return [f"contacts.{c['name']}.{q}" for c in contacts for q in ("normal_force", "contact_length")]
+
+
+def quantity(summary: dict[str, Any], path: str) -> float | None:
+    """The number at a dotted path of a summary (`contacts.bore.normal_force`,
+    `reactions.lug_fixed.1`), looked up in the `paper` block when the top level has none (`P` is
+    `paper.P`), or `energy` (the bodies' strain energies summed); `None` if there is none."""
+    if path == "energy":
+        return float(sum(summary.get("energies", {}).values()))
+
+    def at(value: Any) -> float | None:
+        for part in path.split("."):
+            if isinstance(value, list) and part.isdigit() and int(part) < len(value):
+                value = value[int(part)]
+            elif isinstance(value, dict) and part in value:
+                value = value[part]
+            else:
+                return None
+        return value if isinstance(value, (int, float)) and not isinstance(value, bool) else None
+
+    found = at(summary)
+    return found if found is not None or "paper" not in summary else at(summary["paper"])
+
+
+def run_case(payload: tuple[str, str, bytes, str], keys: Sequence[str], values: Sequence[Any], columns: Sequence[str]) -> dict[str, Any]:
+    """One case on a worker: the scene text and mesh bytes written to a temporary folder, the
+    varied keys set, solved; the record holds the varied values, status, columns, iterations and
+    error (a failed case is a record with status `error`)."""
+    text, mesh_name, mesh_bytes, mesh_key = payload
+    record: dict[str, Any] = dict(zip(keys, values, strict=True))
+    with tempfile.TemporaryDirectory(prefix="contact2d-case-") as tmp:
+        (Path(tmp) / mesh_name).write_bytes(mesh_bytes)
+        (Path(tmp) / "scene.toml").write_text(text)
+        try:
+            scene = _core.Scene.load(Path(tmp) / "scene.toml").set(mesh_key, mesh_name)
+            for key, value in zip(keys, values, strict=True):
+                scene = scene.set(key, value)
+            summary = solve(scene).json
+        except _core.Contact2dError as e:
+            record.update({"status": "error", **{c: None for c in columns}, "iterations": None, "error": str(e)})
+            return record
+    record.update({"status": summary["status"], **{c: quantity(summary, c) for c in columns}})
+    record.update({"iterations": summary["iterations"], "error": ""})
+    return record
+
+
+def sweep(
+    scene: _core.Scene,
+    vary: Mapping[str, Sequence[Any]],
+    *,
+    client: Any = None,
+    columns: Sequence[str] | None = None,
+) -> pd.DataFrame:
+    """Solve `scene` over the Cartesian product of `vary`'s values ({`--set` path: values}; the
+    last key varies fastest, as in `contact2d sweep`) on Dask and return one row per case:
+    the varied values, `status`, the columns (default: those of `contact2d sweep`; any dotted
+    path of the summary), `iterations`, `error` (a failed case is a row with status `error`).
+
+    `client=None` starts a `dask.distributed.LocalCluster` on this machine's cores for the call;
+    any `dask.distributed.Client` (a scheduler with workers on other machines, a
+    `dask_jobqueue.SLURMCluster`) runs the same call there: each task receives the scene's TOML
+    text and mesh bytes, not paths. Dask re-runs the tasks of a worker that dies.
+    """
+    from dask.distributed import Client, LocalCluster  # noqa: PLC0415 (optional dependency)
+
+    keys = list(vary)
+    cases = list(itertools.product(*(list(vary[k]) for k in keys)))
+    mesh = Path(scene.mesh_path)
+    payload = (scene.to_toml(), mesh.name, mesh.read_bytes(), "plate_insert.mesh" if scene.is_preset else "mesh")
+    cols = list(columns) if columns is not None else default_columns(scene)
+    cluster = None
+    if client is None:
+        cluster = LocalCluster(processes=True, threads_per_worker=1, dashboard_address=None)
+        client = Client(cluster)
+    try:
+        # hash=False: a key of its own per call. A content-hashed key would be shared with an
+        # earlier sweep of the same scene on the same client, whose release then cancels this one's
+        # tasks ("lost dependencies").
+        shipped = client.scatter(payload, broadcast=True, hash=False)
+        futures = [client.submit(run_case, shipped, keys, case, cols, pure=False) for case in cases]
+        records = client.gather(futures)
+    finally:
+        if cluster is not None:
+            client.close()
+            cluster.close()
+    return pd.DataFrame(records, columns=[*keys, "status", *cols, "iterations", "error"])

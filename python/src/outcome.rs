@@ -1,0 +1,187 @@
+//! `solve`: one run through the CLI's pipeline (`contact2d run`), the GIL released while it
+//! solves; `Outcome`: what it returns — the JSON summary as the CLI prints it, numpy arrays of the
+//! mesh and the displacements, and the CLI's output files.
+
+use std::path::PathBuf;
+use std::sync::Mutex;
+
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyArray2};
+use pyo3::exceptions::{PyIndexError, PyOSError, PyRuntimeError, PyValueError};
+use pyo3::prelude::*;
+
+use crate::errors::{ContactError, MeshError, generic_error, scene_error};
+use crate::scene::{Loaded, Scene};
+
+/// A solved run of either kind.
+#[derive(Debug)]
+enum Solved {
+    Generic(Box<contact2d::generic::GenericOutcome>),
+    Paper(Box<contact2d::scene::Scene>, Box<contact2d::run::RunOutcome>),
+}
+
+impl Solved {
+    fn mesh(&self) -> &contact2d::mesh::Mesh {
+        match self {
+            Solved::Generic(o) => &o.built.problem.model.mesh,
+            Solved::Paper(_, o) => match o.steps.first() {
+                Some(step) => &step.case.built.problem.model.mesh,
+                None => &EMPTY_MESH,
+            },
+        }
+    }
+
+    /// Each solved step's displacement vector (DOF 2·node + component).
+    fn displacements(&self) -> Vec<&[f64]> {
+        match self {
+            Solved::Generic(o) => o.history.steps.iter().map(|s| s.solution.displacement.as_slice()).collect(),
+            Solved::Paper(_, o) => o.steps.iter().map(|s| s.solution.displacement.as_slice()).collect(),
+        }
+    }
+}
+
+static EMPTY_MESH: contact2d::mesh::Mesh =
+    contact2d::mesh::Mesh { points: vec![], node_tags: vec![], blocks: vec![], groups: vec![] };
+
+/// A solved scene (what `contact2d.solve` wraps in its `Result`).
+#[pyclass(module = "contact2d._core", frozen)]
+#[derive(Debug)]
+pub struct Outcome {
+    json: String,
+    solved: Mutex<Solved>,
+}
+
+/// Solves `scene` as `contact2d run SCENE --json` does and returns its outcome; the GIL is
+/// released while solving, so threads solve concurrently. `profiles` is "last" (default) or
+/// "all" (the CLI's `--profiles`). A non-converged solve is a status in the summary, not an
+/// exception; SceneError, MeshError and ContactError carry the CLI's messages.
+#[pyfunction]
+#[pyo3(signature = (scene, profiles = "last"))]
+pub fn solve(py: Python<'_>, scene: &Scene, profiles: &str) -> PyResult<Outcome> {
+    let every_profile = match profiles {
+        "last" => false,
+        "all" => true,
+        other => return Err(PyValueError::new_err(format!("profiles: expected \"last\" or \"all\", not {other:?}"))),
+    };
+    let loaded = scene.parse().map_err(scene_error)?;
+    py.detach(move || run(loaded, every_profile))
+}
+
+/// The run of [`solve`], without the GIL.
+fn run(loaded: Loaded, every_profile: bool) -> PyResult<Outcome> {
+    let json_of = |report: &contact2d::generic::GenericReport| {
+        serde_json::to_string_pretty(report).map_err(|e| PyRuntimeError::new_err(e.to_string()))
+    };
+    match loaded {
+        Loaded::Generic(mut scene) => {
+            scene.every_profile = every_profile;
+            let outcome = contact2d::generic::solve_generic(&scene, &mut |_, _| {}).map_err(generic_error)?;
+            let json = json_of(&outcome.report)?;
+            Ok(Outcome { json, solved: Mutex::new(Solved::Generic(Box::new(outcome))) })
+        }
+        Loaded::Paper(mut scene) => {
+            // The CLI's order: the mesh file checked, its geometry checked against the scene,
+            // then the run; set-up failures name both files.
+            scene.every_profile = every_profile;
+            scene.check_mesh_file().map_err(scene_error)?;
+            let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
+            let mesh = contact2d::mesh::read_msh(scene.mesh_path())
+                .map_err(|e| MeshError::new_err(format!("scene {scene_name}: mesh {mesh_name}: {e}")))?;
+            scene.check_mesh_geometry(&mesh).map_err(scene_error)?;
+            let outcome = contact2d::run::solve_scene(&scene)
+                .map_err(|e| ContactError::new_err(format!("scene {scene_name}, mesh {mesh_name}: {e}")))?;
+            let json = json_of(&outcome.report)?;
+            Ok(Outcome { json, solved: Mutex::new(Solved::Paper(scene, Box::new(outcome))) })
+        }
+    }
+}
+
+impl Outcome {
+    fn with<T>(&self, f: impl FnOnce(&Solved) -> T) -> PyResult<T> {
+        let solved = self.solved.lock().map_err(|_| PyRuntimeError::new_err("outcome lock poisoned"))?;
+        Ok(f(&solved))
+    }
+}
+
+#[pymethods]
+impl Outcome {
+    /// The JSON summary, the exact text `contact2d run SCENE --json` prints.
+    #[getter]
+    fn json_text(&self) -> &str {
+        &self.json
+    }
+
+    /// The number of solved steps whose displacement is kept.
+    #[getter]
+    fn n_steps(&self) -> PyResult<usize> {
+        self.with(|s| s.displacements().len())
+    }
+
+    /// The displacement of solved step `step` (negative counts from the end), an
+    /// (n_nodes, 2) float array of (u1, u2) per mesh node.
+    #[pyo3(signature = (step = -1))]
+    fn displacement<'py>(&self, py: Python<'py>, step: isize) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let (u, n) = self.with(|s| {
+            let all = s.displacements();
+            let n = s.mesh().num_nodes();
+            let k = if step < 0 { all.len() as isize + step } else { step };
+            (usize::try_from(k).ok().and_then(|k| all.get(k)).map(|u| u.to_vec()), n)
+        })?;
+        let u = u.ok_or_else(|| PyIndexError::new_err(format!("step {step}: no such solved step")))?;
+        let array = Array2::from_shape_vec((n, 2), u).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+        Ok(array.into_pyarray(py))
+    }
+
+    /// The mesh nodes' coordinates, an (n_nodes, 2) float array.
+    fn points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let points = self.with(|s| s.mesh().points.iter().flatten().copied().collect::<Vec<f64>>())?;
+        let n = points.len() / 2;
+        let array = Array2::from_shape_vec((n, 2), points).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+        Ok(array.into_pyarray(py))
+    }
+
+    /// The cell blocks in file order as (meshio cell type, (n_cells, nodes per cell) int64 array
+    /// of node indices from 0, physical tags).
+    #[allow(clippy::type_complexity)]
+    fn cells<'py>(&self, py: Python<'py>) -> PyResult<Vec<(String, Bound<'py, PyArray2<i64>>, Vec<i32>)>> {
+        let blocks = self.with(|s| {
+            s.mesh()
+                .blocks
+                .iter()
+                .map(|b| {
+                    let nodes: Vec<i64> = b.nodes.iter().map(|n| n.0 as i64).collect();
+                    (b.kind.name().to_string(), b.kind.nodes_per_cell(), nodes, b.physical_tags.clone())
+                })
+                .collect::<Vec<_>>()
+        })?;
+        blocks
+            .into_iter()
+            .map(|(kind, per, nodes, tags)| {
+                let rows = nodes.len() / per.max(1);
+                let array =
+                    Array2::from_shape_vec((rows, per), nodes).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+                Ok((kind, array.into_pyarray(py), tags))
+            })
+            .collect()
+    }
+
+    /// The named physical groups as (name, dimension, tag).
+    fn groups(&self) -> PyResult<Vec<(String, usize, i32)>> {
+        self.with(|s| s.mesh().groups.iter().map(|g| (g.name.clone(), g.dim, g.tag)).collect())
+    }
+
+    /// Writes the CLI's outputs (`contact2d run --out DIR`: summary.json, figures, CSV, VTU)
+    /// into `out_dir` and returns the paths written. Raises OSError naming the file at fault.
+    fn write(&self, py: Python<'_>, out_dir: PathBuf) -> PyResult<Vec<PathBuf>> {
+        py.detach(|| {
+            let solved = self.solved.lock().map_err(|_| PyRuntimeError::new_err("outcome lock poisoned"))?;
+            let folder = contact2d::output::OutputDir::prepare(&out_dir, Some(contact2d::output::SUMMARY_FILE))
+                .map_err(|e| PyOSError::new_err(e.to_string()))?;
+            match &*solved {
+                Solved::Generic(o) => contact2d::generic::outputs::write_generic_outputs_into(folder, o),
+                Solved::Paper(scene, o) => contact2d::plate_insert::outputs::write_outputs_into(folder, scene, o),
+            }
+            .map_err(|e| PyOSError::new_err(e.to_string()))
+        })
+    }
+}
