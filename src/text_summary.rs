@@ -41,7 +41,7 @@ pub(crate) fn print_summary(
         )?;
         let [f1, f2] = c.resultant;
         writeln!(out, "  contact {name}: resultant on the slave side [{f1:.6e}, {f2:.6e}]")?;
-        let where_ = |z: &contact2d::generic::results::ZoneEnds| match &z.angles_deg {
+        let where_ = |z: &contact2d::generic::zones::ZoneEnds| match &z.angles_deg {
             // + 0.0: an angle of −1e-15° prints as 0.0°, not −0.0°.
             Some(a) => a
                 .chunks(2)

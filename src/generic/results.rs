@@ -30,6 +30,7 @@ use serde::Serialize;
 
 use contact2d_contact::{BuiltProblem, ContactError, ContactSolution, History, InterfaceInfo, PairState, SolvedStep};
 
+use super::zones::{ZoneEnds, zone_ends, zone_length};
 use crate::output::step_view::state_label;
 
 /// The profile of one interface along its master curve, pair by pair in order of `s`.
@@ -84,21 +85,6 @@ pub struct ContactResult {
     /// holds this field, and a profile's room in each would grow a long history's memory.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile: Option<Box<Profile>>,
-}
-
-/// The ends of the zones of an interface, two per zone (start, end) in order along the master
-/// curve: each end interpolated between the last pair inside and the next one outside as
-/// `contact_length` is (see the module docs).
-#[derive(Debug, Clone, PartialEq, Serialize, Default)]
-pub struct ZoneEnds {
-    /// Arc length along the master curve.
-    pub s: Vec<f64>,
-    /// The points `[x, y]` on the master curve (undeformed).
-    pub points: Vec<[f64; 2]>,
-    /// For a master curve that is a circular arc (every node within 1e-6 of its radius of one
-    /// circle): the angles of the ends about its centre, degrees in (−180, 180]; absent otherwise.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub angles_deg: Option<Vec<f64>>,
 }
 
 /// KKT residuals of a step.
@@ -498,58 +484,6 @@ fn slave_resultant(built: &BuiltProblem, iface: &InterfaceInfo, s: &ContactSolut
     })
 }
 
-/// The ends of every zone of consecutive pairs where `inside` holds (see [`ZoneEnds`]), each
-/// end placed as in [`zone_length`]; `curve` holds the pairs' master nodes in the order of `arc`.
-fn zone_ends(arc: &[f64], curve: &[[f64; 2]], inside: &[bool], opening: &[f64], in_contact: &[bool]) -> ZoneEnds {
-    let mut s = vec![];
-    let mut k = 0;
-    while k < inside.len() {
-        if !inside[k] {
-            k += 1;
-            continue;
-        }
-        let first = k;
-        while k + 1 < inside.len() && inside[k + 1] {
-            k += 1;
-        }
-        s.extend(zone_between(arc, inside, opening, in_contact, first, k));
-        k += 1;
-    }
-    let points: Vec<[f64; 2]> = s.iter().map(|at| point_at(arc, curve, *at)).collect();
-    let angles_deg = circle_through(curve)
-        .map(|[cx, cy]| points.iter().map(|p| (p[1] - cy).atan2(p[0] - cx).to_degrees()).collect());
-    ZoneEnds { s, points, angles_deg }
-}
-
-/// The point at arc length `at`, linear between the two nodes around it.
-fn point_at(arc: &[f64], points: &[[f64; 2]], at: f64) -> [f64; 2] {
-    let i = arc.partition_point(|s| *s < at).clamp(1, arc.len().max(2) - 1);
-    let (Some(a), Some(b)) = (points.get(i - 1), points.get(i)) else {
-        return points.first().copied().unwrap_or([f64::NAN; 2]);
-    };
-    let t = if arc[i] > arc[i - 1] { ((at - arc[i - 1]) / (arc[i] - arc[i - 1])).clamp(0.0, 1.0) } else { 0.0 };
-    [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
-}
-
-/// The centre of the circle through every point (the circumcircle of the first, middle and
-/// last, every point within 1e-6 of its radius), or `None`.
-fn circle_through(points: &[[f64; 2]]) -> Option<[f64; 2]> {
-    let n = points.len();
-    if n < 3 {
-        return None;
-    }
-    let (a, b, c) = (points[0], points[n / 2], points[n - 1]);
-    let d = 2.0 * (a[0] * (b[1] - c[1]) + b[0] * (c[1] - a[1]) + c[0] * (a[1] - b[1]));
-    if d.abs() < f64::EPSILON {
-        return None;
-    }
-    let sq = |p: [f64; 2]| p[0] * p[0] + p[1] * p[1];
-    let cx = (sq(a) * (b[1] - c[1]) + sq(b) * (c[1] - a[1]) + sq(c) * (a[1] - b[1])) / d;
-    let cy = (sq(a) * (c[0] - b[0]) + sq(b) * (a[0] - c[0]) + sq(c) * (b[0] - a[0])) / d;
-    let r = (a[0] - cx).hypot(a[1] - cy);
-    points.iter().all(|p| ((p[0] - cx).hypot(p[1] - cy) - r).abs() <= 1e-6 * r).then_some([cx, cy])
-}
-
 /// The force a rigid obstacle exerts on the bodies through the interface's pairs, `Σ_k R_k`
 /// ([`contact2d_contact::ContactProblem::pair_resultant`]; NaN, caught as a non-finite summary,
 /// if a pair were out of range).
@@ -558,51 +492,6 @@ fn rigid_resultant(built: &BuiltProblem, iface: &InterfaceInfo, s: &ContactSolut
         let r = built.problem.pair_resultant(k, s.normal_force[k], s.tangential_force[k]).unwrap_or([f64::NAN; 2]);
         [a[0] + r[0], a[1] + r[1]]
     })
-}
-
-/// The length of the zone of pairs where `inside` holds (first to last such pair along `arc`),
-/// each end moved into the neighbouring interval where the quantity `opening` of the next two
-/// outside pairs opens like the 3/2 power; an end whose neighbour is outside the contact
-/// (`in_contact` false while measuring a stick zone) or missing stays at the last inside pair.
-fn zone_length(arc: &[f64], inside: &[bool], opening: &[f64], in_contact: &[bool]) -> f64 {
-    let (Some(first), Some(last)) = (inside.iter().position(|v| *v), inside.iter().rposition(|v| *v)) else {
-        return 0.0;
-    };
-    let [lo, hi] = zone_between(arc, inside, opening, in_contact, first, last);
-    (hi - lo).abs()
-}
-
-/// The two ends `[start, end]` (arc length) of the zone from pair `first` to pair `last`, each
-/// moved into the neighbouring interval where the `opening` of the next two outside pairs opens
-/// like the 3/2 power (see [`zone_length`]).
-fn zone_between(
-    arc: &[f64],
-    inside: &[bool],
-    opening: &[f64],
-    in_contact: &[bool],
-    first: usize,
-    last: usize,
-) -> [f64; 2] {
-    let end = |at: usize, next: Option<usize>, after: Option<usize>| -> f64 {
-        let (Some(f), Some(f2)) = (next, after) else { return arc[at] };
-        if inside[f] || inside[f2] || (!in_contact[f] && in_contact[at] && opening_is_slip(in_contact, inside)) {
-            return arc[at];
-        }
-        let (d1, d2) = (opening[f].powf(2.0 / 3.0), opening[f2].powf(2.0 / 3.0));
-        let e = if d2 > d1 { arc[f] - d1 * (arc[f2] - arc[f]) / (d2 - d1) } else { arc[f] };
-        let (lo, hi) = if arc[at] < arc[f] { (arc[at], arc[f]) } else { (arc[f], arc[at]) };
-        e.clamp(lo, hi)
-    };
-    let n = arc.len();
-    let hi = end(last, (last + 1 < n).then_some(last + 1), (last + 2 < n).then_some(last + 2));
-    let lo = end(first, first.checked_sub(1), first.checked_sub(2));
-    [lo, hi]
-}
-
-/// Whether `inside` is a strict part of the contact zone (a stick zone), so that a free
-/// neighbour ends it at the contact end rather than by interpolating a slip.
-fn opening_is_slip(in_contact: &[bool], inside: &[bool]) -> bool {
-    inside != in_contact
 }
 
 /// The friction work of the interface's slipping pairs in one step (trapezoid rule; `previous`:
@@ -617,22 +506,4 @@ fn interface_dissipation(iface: &InterfaceInfo, s: &ContactSolution, previous: O
             -0.5 * (start + s.tangential_force[k]) * s.slip_increment[k]
         })
         .sum()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_zone_from_the_start_ends_where_the_gap_opens_like_three_halves() {
-        // Gap (s − 0.25)^{3/2} beyond the end 0.25: the interpolation over the next two free
-        // pairs recovers the end exactly.
-        let arc = [0.0, 0.1, 0.2, 0.3, 0.4];
-        let inside = [true, true, true, false, false];
-        let opening: Vec<f64> = arc.iter().map(|s: &f64| (s - 0.25f64).max(0.0).powf(1.5)).collect();
-        let l = zone_length(&arc, &inside, &opening, &inside);
-        assert!((l - 0.25).abs() < 1e-12, "{l}");
-        assert_eq!(zone_length(&arc, &[false; 5], &opening, &[false; 5]), 0.0);
-        assert_eq!(zone_length(&arc, &[true; 5], &opening, &[true; 5]), 0.4);
-    }
 }

@@ -12,6 +12,9 @@
 use contact2d_element::{Material, PlaneCondition};
 use contact2d_fem::{CholeskySolver, Component, Model, assemble};
 
+/// A factorisation of `K`.
+type Factor = fn(&contact2d_fem::Csc) -> Result<CholeskySolver, contact2d_fem::FemError>;
+
 fn main() {
     let path = std::env::args().nth(1).expect("usage: long_interface_factor <mesh.msh>");
     let mesh = contact2d_mesh::read_msh(&path).expect("a readable mesh");
@@ -25,7 +28,7 @@ fn main() {
     model.fix("upper_top", Component::Y, -0.001).expect("group upper_top");
     let system = assemble(&model).expect("assembly");
     let rhs = system.rhs(system.dofs.prescribed_values());
-    let factors: [(&str, fn(&contact2d_fem::Csc) -> Result<CholeskySolver, contact2d_fem::FemError>); 2] =
+    let factors: [(&str, Factor); 2] =
         [("automatic", CholeskySolver::factor), ("supernodal", CholeskySolver::factor_supernodal)];
     for (name, factor) in factors {
         let mut best = f64::INFINITY;

@@ -1,0 +1,229 @@
+//! The summary of a solved history, the one JSON contract of every run: each step's row made as
+//! the step is solved ([`SummaryRows`]), then the worst step's status, the last step's interfaces
+//! with profiles, the notes, and the check that no number in it is non-finite ([`summarise`]).
+
+use std::collections::BTreeMap;
+use web_time::Instant;
+
+use contact2d_contact::{BuiltProblem, ContactError, SolvedStep, check_energy_balance, energy_scale};
+
+use super::results::{self, FixedGroup, StepResult};
+use super::{FloatingReport, GenericReport, GenericScene, GroupReport, Times, scene, setup_notes};
+
+/// The summary rows of a history, made one step at a time as each is solved (see
+/// [`results::StepResults`]), with the first non-finite number found in them.
+pub struct SummaryRows<'a> {
+    results: results::StepResults<'a>,
+    every_profile: bool,
+    rows: Vec<StepResult>,
+    first_non_finite: Option<String>,
+}
+
+impl<'a> SummaryRows<'a> {
+    /// Before the first step of a history of `built`, reporting the reactions of `fixed`, each
+    /// row with the interfaces' profiles if `every_profile`.
+    pub fn new(built: &'a BuiltProblem, fixed: &'a [FixedGroup], every_profile: bool) -> Self {
+        SummaryRows {
+            results: results::StepResults::new(built, fixed),
+            every_profile,
+            rows: vec![],
+            first_non_finite: None,
+        }
+    }
+
+    /// The row of the next step, solved on `built` (the history's problem, or one of the same
+    /// topology whose nodes moved).
+    ///
+    /// # Errors
+    /// [`ContactError::InvalidInput`] when the step does not fit the problem.
+    pub fn push(&mut self, built: &'a BuiltProblem, step: &SolvedStep) -> Result<(), ContactError> {
+        self.results.rebase(built);
+        let row = self.results.push(step, self.every_profile)?;
+        // Checked one row at a time: the whole summary as one JSON value grows with the steps.
+        if self.first_non_finite.is_none() {
+            let value = serde_json::to_value(&row).unwrap_or(serde_json::Value::Null);
+            self.first_non_finite = non_finite(&value, &format!("steps.{}", self.rows.len()));
+        }
+        self.rows.push(row);
+        Ok(())
+    }
+}
+
+/// What a summary needs besides its rows: the scene, the last step and its problem, and the
+/// run's facts.
+pub struct SummaryInput<'s> {
+    /// The scene (expanded, for a preset).
+    pub scene: &'s GenericScene,
+    /// The problem the last step was solved on.
+    pub built: &'s BuiltProblem,
+    /// The last solved step.
+    pub last: &'s SolvedStep,
+    /// The groups the scene names.
+    pub groups: BTreeMap<String, GroupReport>,
+    /// Whether the history was solved once and scaled.
+    pub scaled: bool,
+    /// The number of steps the schedule asked for.
+    pub total_steps: usize,
+    /// Where the time went (`total` and `post` are completed here).
+    pub times: Times,
+    /// When the run started.
+    pub clock: Instant,
+}
+
+/// The summary of a solved history from its rows: the worst step's status, the last step's
+/// interfaces with profiles, reactions and energies, and the notes.
+///
+/// # Errors
+/// [`ContactError::InvalidInput`] without a solved step, [`ContactError::NotFinite`] naming the
+/// first non-finite number.
+pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<GenericReport, ContactError> {
+    let post_clock = Instant::now();
+    let SummaryInput { scene, built, last: last_step, groups, scaled, total_steps: total, mut times, clock } = input;
+    let SummaryRows { results, rows: summary_steps, first_non_finite, .. } = rows;
+    let Some(last) = summary_steps.last() else {
+        return Err(ContactError::InvalidInput("no load step solved".into()));
+    };
+    let last = StepResult { contacts: results.contacts_with_profiles(&last_step.solution), ..last.clone() };
+    // A body held only by contact that crosses a gap under a force moves rigidly first: the work
+    // of the force on that travel is stored nowhere in a quasi-static model (there is no kinetic
+    // energy), so the energy balance is no check of the numbers there.
+    // An interference (a negative initial gap) stores energy that no load put in: no balance
+    // either.
+    let extent = built.problem.model.mesh.bounding_box().map_or(1.0, |[lo, hi]| (hi[0] - lo[0]).max(hi[1] - lo[1]));
+    let interference = built.problem.gap.iter().any(|g| *g < -1e-9 * extent);
+    // Gaps below 1e-9 of the extent (round-off of a turned or morphed geometry) close with no
+    // rigid travel worth counting.
+    let touching = built.problem.gap.iter().all(|g| g.abs() <= 1e-9 * extent);
+    let balance_checked = !interference && (scaled || built.problem.system.floating.is_empty() || touching);
+    let (status, failed_check) = certified_status(scaled, &summary_steps, balance_checked);
+    let floating_bodies = built
+        .problem
+        .system
+        .floating
+        .iter()
+        .map(|p| FloatingReport { body: p.body.clone(), free_modes: p.mode_names() })
+        .collect();
+    let mut notes = scene.element_warnings();
+    let regions: Vec<String> = scene.body.iter().map(|b| b.region.clone()).collect();
+    notes.extend(setup_notes::shared_node_notes(&built.problem.model.mesh, &regions));
+    notes.extend(setup_notes::deep_interference_notes(built));
+    notes.extend(setup_notes::held_pair_notes(built, &last_step.solution.gap));
+    let node_to_segment: Vec<bool> =
+        scene.contact.iter().map(|c| c.pairing == scene::PairingKey::NodeToSegment).collect();
+    notes.extend(setup_notes::quadratic_node_to_segment_notes(built, &node_to_segment));
+    let (poor, count) = crate::mesh_summary::poor_cells(&built.problem.model.mesh);
+    if count > 0 {
+        let worst: Vec<String> = poor.iter().take(3).map(ToString::to_string).collect();
+        notes.push(format!(
+            "{count} cells below quality {} (det J varies more than 20-fold inside; stresses near them are not to \
+             be trusted), the worst: {}",
+            crate::mesh_summary::MIN_QUALITY,
+            worst.join("; ")
+        ));
+    }
+    if interference {
+        notes.push(
+            "energy balance not checked: the initial interference (negative gaps) stores energy that no load put in"
+                .into(),
+        );
+    } else if !balance_checked {
+        notes.push(
+            "energy balance not checked: a body held only by contact meets initial gaps under a force, and the work \
+             of the force on any rigid travel before contact is stored nowhere in a quasi-static model"
+                .into(),
+        );
+    }
+    if summary_steps.len() < total {
+        notes.push(format!(
+            "the history stopped after step {} of {total}: it did not converge ({status})",
+            summary_steps.len()
+        ));
+    }
+    times.post += post_clock.elapsed().as_secs_f64();
+    times.total = clock.elapsed().as_secs_f64();
+    let report = GenericReport {
+        scene: scene.name.clone(),
+        status,
+        failed_check,
+        algorithm: scene.solver.algorithm,
+        dofs: built.problem.system.dofs.num_free(),
+        pairs: built.problem.num_pairs(),
+        iterations: summary_steps.iter().map(|s| s.iterations).sum(),
+        scaled,
+        pairing_used: built.interfaces.iter().map(|i| (i.name.clone(), i.pairing.key())).collect(),
+        steps: summary_steps,
+        contacts: last.contacts,
+        reactions: last.reactions,
+        reactions_total: last.reactions_total,
+        energies: last.energies,
+        kkt: last.kkt,
+        floating_bodies,
+        groups,
+        time_s: times,
+        notes,
+        post: BTreeMap::new(),
+    };
+    match non_finite_report(&report, first_non_finite) {
+        Some(path) => Err(ContactError::NotFinite(format!("{path} of the summary"))),
+        None => Ok(report),
+    }
+}
+
+/// The dotted path of the first non-finite number of `report` (as [`non_finite`] of the whole
+/// summary), its step rows already checked one by one (`in_steps`: the first path found there),
+/// so that the summary is never one JSON value with every step.
+fn non_finite_report(report: &GenericReport, in_steps: Option<String>) -> Option<String> {
+    let head = report.without_steps();
+    let serde_json::Value::Object(map) = serde_json::to_value(&head).unwrap_or(serde_json::Value::Null) else {
+        return Some("the summary".into());
+    };
+    let mut in_steps = in_steps;
+    map.into_iter().find_map(|(k, v)| {
+        if k == "steps" {
+            return in_steps.take();
+        }
+        non_finite(&serde_json::Value::Object(std::iter::once((k, v)).collect()), "")
+    })
+}
+
+/// The dotted path of the first non-finite number in a serialised summary (serde_json writes
+/// NaN and ±∞ as `null`). The only other `null` is a group reaction's component that the group
+/// does not prescribe (`reactions.<group>.<c>`): it is skipped, a NaN there being caught in
+/// `reactions_total`, which sums every constrained DOF.
+fn non_finite(value: &serde_json::Value, at: &str) -> Option<String> {
+    let join = |k: &str| if at.is_empty() { k.to_string() } else { format!("{at}.{k}") };
+    match value {
+        serde_json::Value::Null => Some(if at.is_empty() { "the summary".into() } else { at.to_string() }),
+        serde_json::Value::Array(items) => {
+            items.iter().enumerate().find_map(|(i, v)| non_finite(v, &join(&i.to_string())))
+        }
+        serde_json::Value::Object(map) => map.iter().find_map(|(k, v)| match (k.as_str(), v) {
+            ("reactions", serde_json::Value::Object(groups)) => groups.iter().find_map(|(g, f)| {
+                let components = f.as_array().map(|c| c.iter().filter(|v| !v.is_null()).cloned().collect());
+                non_finite(&serde_json::Value::Array(components.unwrap_or_default()), &join(&format!("reactions.{g}")))
+            }),
+            _ => non_finite(v, &join(k)),
+        }),
+        _ => None,
+    }
+}
+
+/// The status of a history — its worst step's; `numerical` (with the check) when a step's
+/// solution fails [`contact2d_contact::certify`] or the history breaks its energy balance `W = Φ_E + Φ_f`
+/// ([`check_energy_balance`]: tight when solved once and scaled, where W is exact; the
+/// trapezoid rule's tolerance otherwise; `scaled`: whether the history was).
+fn certified_status(scaled: bool, steps: &[StepResult], balance: bool) -> (&'static str, Option<String>) {
+    let converged = results::status_name(contact2d_contact::ContactStatus::Converged);
+    if let Some((i, step)) = steps.iter().enumerate().find(|(_, s)| s.status != converged) {
+        let why = step.failed_check.as_deref().unwrap_or("no check named");
+        return (step.status, Some(format!("step {}: {why}", i + 1)));
+    }
+    let stored = |step: &StepResult| step.energies.values().sum::<f64>();
+    let scale = energy_scale(steps.iter().map(|s| (s.work, stored(s), s.dissipated)));
+    for (i, step) in steps.iter().enumerate().filter(|_| balance) {
+        if let Err(f) = check_energy_balance(step.work, stored(step), step.dissipated, scaled, scale) {
+            return ("numerical", Some(format!("step {}: {f}", i + 1)));
+        }
+    }
+    ("converged", None)
+}
