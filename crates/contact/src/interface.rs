@@ -216,6 +216,13 @@ impl Interface {
         self.condensed
     }
 
+    /// This interface if it holds the compliances, else the problem's condensed one: for the
+    /// algorithms that work on the compliances (Boussinesq, Clarabel) when the sparse path's
+    /// interface, which holds none, is handed to them.
+    pub fn condensed<'a>(&'a self, problem: &ContactProblem) -> std::borrow::Cow<'a, Interface> {
+        if self.condensed { std::borrow::Cow::Borrowed(self) } else { std::borrow::Cow::Owned(Interface::new(problem)) }
+    }
+
     /// Recomputes the load terms `u0` and `h` after the problem's load changed
     /// ([`ContactProblem::apply_load`]): one solve; the compliances are kept.
     pub fn update_load(&mut self, problem: &ContactProblem) {

@@ -85,13 +85,8 @@ pub fn solve_boussinesq_step(
     max_iterations: usize,
 ) -> BoussinesqStep {
     // The sparse path's interface holds no compliances: condense here (this algorithm works on them).
-    let condensed;
-    let interface = if interface.is_condensed() {
-        interface
-    } else {
-        condensed = Interface::new(problem);
-        &condensed
-    };
+    let condensed = interface.condensed(problem);
+    let interface = &*condensed;
     let clock = Instant::now();
     let m = problem.num_pairs();
     let frictional = interface.c_tt.nrows() == m && problem.is_frictional();
@@ -184,13 +179,8 @@ pub fn solve_given_zones(
     start: &StepStart,
 ) -> Option<ZoneForces> {
     // The sparse path's interface holds no compliances: condense here (this algorithm works on them).
-    let condensed;
-    let interface = if interface.is_condensed() {
-        interface
-    } else {
-        condensed = Interface::new(problem);
-        &condensed
-    };
+    let condensed = interface.condensed(problem);
+    let interface = &*condensed;
     let frictional = interface.c_tt.nrows() == problem.num_pairs() && problem.is_frictional();
     let loading = match load {
         Some(w) => BoussinesqLoading::Fixed { contact_end: zones.contact_end, load: w },

@@ -264,13 +264,8 @@ pub fn solve_frictionless_qp(problem: &ContactProblem, w: f64) -> ContactSolutio
 /// docs): the dual QP, then the polishing of its contact set.
 pub fn solve_frictionless_qp_on(problem: &ContactProblem, interface: &Interface, w: f64) -> ContactSolution {
     // The sparse path's interface holds no compliances: condense here (this algorithm works on them).
-    let condensed;
-    let interface = if interface.is_condensed() {
-        interface
-    } else {
-        condensed = Interface::new(problem);
-        &condensed
-    };
+    let condensed = interface.condensed(problem);
+    let interface = &*condensed;
     let clock = Instant::now();
     let m = problem.num_pairs();
     let start = StepStart::initial(m);

@@ -53,13 +53,8 @@ pub fn solve_frictional_qp_on(
     max_fixed_point: usize,
 ) -> ContactSolution {
     // The sparse path's interface holds no compliances: condense here (this algorithm works on them).
-    let condensed;
-    let interface = if interface.is_condensed() {
-        interface
-    } else {
-        condensed = Interface::new(problem);
-        &condensed
-    };
+    let condensed = interface.condensed(problem);
+    let interface = &*condensed;
     let clock = Instant::now();
     let m = problem.num_pairs();
     let dual = DualProblem::new(problem, interface, w, start);
