@@ -19,6 +19,7 @@ extern crate self as contact2d_contact;
 #[path = "../tests/fixtures/two_blocks.rs"]
 mod test_fixtures;
 
+pub mod algorithm;
 pub mod algorithms;
 pub mod builder;
 pub mod certify;

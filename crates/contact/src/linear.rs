@@ -16,8 +16,8 @@
 //! condensed path reuses the LU of repeated states, is faster condensed at every size measured
 //! (up to 1,521 pairs). 2,000 lies between the two crossovers.
 
+use crate::algorithm::ContactAlgorithm;
 use crate::error::ContactError;
-use crate::solve::ContactAlgorithm;
 
 /// The pair count from which [`LinearSolver::Auto`] takes the sparse path for the active set
 /// (and from which a problem factors `K` without the pair rows,

@@ -34,48 +34,7 @@ use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_displacement};
 use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
 
-/// Which algorithm solves each step. Adding an algorithm is one file plus one variant here.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[non_exhaustive]
-pub enum ContactAlgorithm {
-    /// Primal-dual active set on the condensed interface (frictional or not).
-    ActiveSet,
-    /// Clarabel: frictionless QP, or Tresca QPs to the Coulomb fixed point (the independent
-    /// check).
-    Clarabel,
-    /// The paper's paired-node Boussinesq algorithm: one contact zone growing from the end of
-    /// the master curve where the initial gap is smallest, stick inside slip. Loads must grow.
-    Boussinesq,
-    /// The penalty method with a regularised Coulomb law on the full system (penalties from
-    /// [`SolverSettings::penalty`]); status [`ContactStatus::Penalised`] where its penetration
-    /// fails the exact certificate.
-    Penalty,
-    /// The augmented Lagrangian of Alart and Curnier by a semi-smooth Newton method on the full
-    /// (not condensed) system: one sparse LU per iteration.
-    AugmentedLagrangian,
-}
-
-impl ContactAlgorithm {
-    /// Every algorithm, in declaration order (for comparisons that run them all).
-    pub const ALL: [ContactAlgorithm; 5] = [
-        ContactAlgorithm::ActiveSet,
-        ContactAlgorithm::Clarabel,
-        ContactAlgorithm::Boussinesq,
-        ContactAlgorithm::Penalty,
-        ContactAlgorithm::AugmentedLagrangian,
-    ];
-
-    /// The name scene files use (`solver.algorithm`).
-    pub fn key(self) -> &'static str {
-        match self {
-            ContactAlgorithm::ActiveSet => "active_set",
-            ContactAlgorithm::Clarabel => "clarabel",
-            ContactAlgorithm::Boussinesq => "boussinesq",
-            ContactAlgorithm::Penalty => "penalty",
-            ContactAlgorithm::AugmentedLagrangian => "augmented_lagrangian",
-        }
-    }
-}
+pub use crate::algorithm::ContactAlgorithm;
 
 /// The largest iteration limit per step: every iteration of the condensed algorithms factors a
 /// dense matrix of the pairs, so the bound keeps a run's time finite and known up front.
