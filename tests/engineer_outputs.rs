@@ -7,6 +7,7 @@
 //!   arc length the contact length is measured by;
 //! * every step's profile (`--profiles all`), against the last step's own profile;
 //! * the pairing that ran (`pairing_used`), against a run that names it;
+//! * the linear path that ran (`linear_used`), against a run that forces the other one;
 //! * help texts against what the commands write; `-v` logs iterations on a generic scene.
 
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -116,6 +117,24 @@ fn the_pairing_used_is_recorded_and_is_what_ran() {
     }
     let (paper, _) = run(&["scenes/plate_insert_nogap_mu0.toml", "--json"]);
     assert_eq!(paper["pairing_used"]["hole"], "node_to_node");
+}
+
+/// The recorded linear path is the one that ran: the pin in the lug (a few dozen pairs) takes the
+/// condensed path, and forcing the sparse one is recorded and gives the same resultant to 1e-9 of
+/// its size (both paths end in the same contact states and solve them to round-off,
+/// `crates/contact/tests/sparse_path.rs` checks 1e-10 per field; 1e-9 leaves room for the
+/// floating pin's proximal iteration, stopped at its default 1e-10).
+#[test]
+fn the_linear_path_used_is_recorded_and_is_what_ran() {
+    let (auto, _) = run(&[PIN, "--json"]);
+    assert_eq!(auto["linear_used"], "condensed");
+    let (sparse, _) = run(&[PIN, "--json", "--set", "solver.linear=\"sparse\""]);
+    assert_eq!(sparse["linear_used"], "sparse");
+    let [a, b] = [pair(&auto["contacts"]["bore"]["resultant"]), pair(&sparse["contacts"]["bore"]["resultant"])];
+    let size = a[0].hypot(a[1]);
+    assert!((a[0] - b[0]).hypot(a[1] - b[1]) <= 1e-9 * size, "condensed {a:?}, sparse {b:?}");
+    let (paper, _) = run(&["scenes/plate_insert_nogap_mu0.toml", "--json", "--set", "solver.algorithm=\"clarabel\""]);
+    assert_eq!(paper["linear_used"], "condensed");
 }
 
 /// `-v` logs the algorithm's iterations of every step on a generic scene (a table row per

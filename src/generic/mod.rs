@@ -133,6 +133,10 @@ pub struct GenericReport {
     pub scaled: bool,
     /// The pairing each interface used: as the scene gives it, or what `automatic` chose.
     pub pairing_used: BTreeMap<String, &'static str>,
+    /// The linear algebra the contact states were solved with (`solver.linear` resolved for this
+    /// algorithm and pair count): `condensed` (the interface's dense compliances) or `sparse`
+    /// (the full system, no dense block).
+    pub linear_used: &'static str,
     /// Every step, without profiles.
     pub steps: Vec<StepResult>,
     /// The last step's interfaces, with profiles.
@@ -174,6 +178,7 @@ impl GenericReport {
             iterations: self.iterations,
             scaled: self.scaled,
             pairing_used: self.pairing_used.clone(),
+            linear_used: self.linear_used,
             steps: vec![],
             contacts: self.contacts.clone(),
             reactions: self.reactions.clone(),

@@ -5,7 +5,7 @@
 use std::collections::BTreeMap;
 use web_time::Instant;
 
-use contact2d_contact::{BuiltProblem, ContactError, SolvedStep, check_energy_balance, energy_scale};
+use contact2d_contact::{BuiltProblem, ContactError, LinearSolver, SolvedStep, check_energy_balance, energy_scale};
 
 use super::results::{self, FixedGroup, StepResult};
 use super::{FloatingReport, GenericReport, GenericScene, GroupReport, Times, scene, setup_notes};
@@ -151,6 +151,13 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
         iterations: summary_steps.iter().map(|s| s.iterations).sum(),
         scaled,
         pairing_used: built.interfaces.iter().map(|i| (i.name.clone(), i.pairing.key())).collect(),
+        // The solve already refused a path the algorithm cannot take, so the error arm is unreachable
+        // for a solved history; it names the only other path.
+        linear_used: scene
+            .solver
+            .linear
+            .resolve(scene.solver.algorithm, built.problem.num_pairs())
+            .map_or(LinearSolver::Condensed.key(), LinearSolver::key),
         steps: summary_steps,
         contacts: last.contacts,
         reactions: last.reactions,

@@ -3,6 +3,8 @@
 
 use std::fmt::Write as _;
 
+use contact2d_contact::ContactAlgorithm;
+
 use crate::generic::GenericReport;
 
 /// What the file `name` of a generic run's folder holds (one line).
@@ -52,7 +54,23 @@ pub fn method_line(report: &GenericReport) -> String {
     let pairings: Vec<String> = report.pairing_used.iter().map(|(name, p)| format!("{name}: {p}")).collect();
     let history =
         if report.scaled { "solved once and scaled (no gap, proportional loads)" } else { "solved step by step" };
-    format!("Method: {}, {history}; pairing {}.", report.algorithm.key(), pairings.join(", "))
+    format!(
+        "Method: {}, {history}; pairing {}; {}.",
+        report.algorithm.key(),
+        pairings.join(", "),
+        linear_phrase(report)
+    )
+}
+
+/// What the contact states' linear algebra was, in words (`linear_used` of the summary).
+fn linear_phrase(report: &GenericReport) -> &'static str {
+    match (report.algorithm, report.linear_used) {
+        (ContactAlgorithm::Penalty | ContactAlgorithm::AugmentedLagrangian, _) => {
+            "Newton on the full system (sparse LU)"
+        }
+        (_, "sparse") => "linear path sparse (each state on the full system, no dense block)",
+        _ => "linear path condensed (the interface's dense compliances)",
+    }
 }
 
 #[cfg(test)]

@@ -382,28 +382,9 @@ fn numeric_ldlt(symbolic: &SymbolicCholesky<usize>, a: &Csc, n: usize) -> Result
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
-    use faer::sparse::Triplet;
 
     use super::*;
-
-    /// The lower triangle of the 5-point Laplacian on an `m × m` grid plus `shift` on the
-    /// diagonal (SPD).
-    fn grid_laplacian(m: usize, shift: f64) -> Csc {
-        let id = |i: usize, j: usize| i * m + j;
-        let mut t = vec![];
-        for i in 0..m {
-            for j in 0..m {
-                t.push(Triplet::new(id(i, j), id(i, j), 4.0 + shift));
-                if i + 1 < m {
-                    t.push(Triplet::new(id(i + 1, j), id(i, j), -1.0));
-                }
-                if j + 1 < m {
-                    t.push(Triplet::new(id(i, j + 1), id(i, j), -1.0));
-                }
-            }
-        }
-        SparseColMat::try_new_from_triplets(m * m, m * m, &t).expect("valid triplets")
-    }
+    use crate::test_matrices::grid_laplacian;
 
     /// Rows like contact pairs: a node against a weighted pair of neighbours, along the edge.
     fn edge_rows(m: usize) -> Vec<Vec<(usize, f64)>> {

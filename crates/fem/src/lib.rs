@@ -25,6 +25,8 @@ pub mod saddle;
 pub mod solution;
 pub mod solve;
 mod sparse;
+#[cfg(test)]
+mod test_matrices;
 
 pub use assembly::{Csc, FLOATING_PIN_STIFFNESS, LinearSystem, assemble, assemble_body_forces, assemble_edge_loads};
 pub use dof::{Component, Dof, DofKind, DofMap};

@@ -251,29 +251,10 @@ fn saddle_lower(k: &Csc, rows: &[&[(usize, f64)]]) -> Result<(Csc, RowEntries, V
 #[cfg(test)]
 mod tests {
     #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
-    use faer::sparse::Triplet;
 
     use super::*;
     use crate::CholeskySolver;
-
-    /// The lower triangle of the 5-point Laplacian on an `m × m` grid plus `shift` on the
-    /// diagonal (SPD).
-    fn grid_laplacian(m: usize, shift: f64) -> Csc {
-        let id = |i: usize, j: usize| i * m + j;
-        let mut t = vec![];
-        for i in 0..m {
-            for j in 0..m {
-                t.push(Triplet::new(id(i, j), id(i, j), 4.0 + shift));
-                if i + 1 < m {
-                    t.push(Triplet::new(id(i + 1, j), id(i, j), -1.0));
-                }
-                if j + 1 < m {
-                    t.push(Triplet::new(id(i, j + 1), id(i, j), -1.0));
-                }
-            }
-        }
-        SparseColMat::try_new_from_triplets(m * m, m * m, &t).expect("valid triplets")
-    }
+    use crate::test_matrices::grid_laplacian;
 
     /// The saddle-point solution against the bordered factor's condensation (a second
     /// elimination): `u = K⁻¹(f − Bᵀy)`, `C y = B K⁻¹ f − g` on the rows switched on.

@@ -25,6 +25,7 @@ use web_time::Instant;
 
 use nalgebra::{DMatrix, DVector};
 
+use crate::algorithms::semi_smooth::{Iterate, admissible, next_state};
 use crate::algorithms::sparse_active_set::solve_sparse_active_set;
 use crate::algorithms::state_equations::{combine, solve_state_equations};
 use crate::interface::Interface;
@@ -72,7 +73,9 @@ pub fn solve_frictional_active_set(
             break;
         };
         (lambda, tau) = (l, t);
-        let next = update_state(problem, interface, w, start, &lambda, &tau, c_n, c_t, frictional);
+        let (gap, slip) = interface_values(interface, w, &problem.gap, &lambda, &tau, frictional);
+        let iterate = Iterate { normal_force: &lambda, tangential_force: &tau, gap: &gap, slip: &slip };
+        let next = next_state(problem, &iterate, start, (c_n, c_t), frictional);
         trace.push(IterationRecord {
             iteration: it,
             changed: next.iter().zip(&state).filter(|(a, b)| a != b).count(),
@@ -83,7 +86,7 @@ pub fn solve_frictional_active_set(
         // Converged when the state repeats, or when the iterate already satisfies every
         // condition to round-off (a degenerate pair — λ = gap = 0 or |τ| = μλ with Δs = 0 —
         // may otherwise flip forever on round-off).
-        if next == state || admissible(problem, interface, w, start, &state, &lambda, &tau, frictional) {
+        if next == state || admissible(problem, &state, &iterate, start) {
             status = ContactStatus::Converged;
             break;
         }
@@ -136,64 +139,4 @@ fn solve_state(
 ) -> Option<(Vec<f64>, Vec<f64>)> {
     let x = solve_state_equations(problem, interface, start, state, frictional)?;
     Some(combine(&x, w))
-}
-
-#[allow(clippy::too_many_arguments)]
-fn update_state(
-    problem: &ContactProblem,
-    interface: &Interface,
-    w: f64,
-    start: &StepStart,
-    lambda: &[f64],
-    tau: &[f64],
-    c_n: f64,
-    c_t: f64,
-    frictional: bool,
-) -> Vec<PairState> {
-    let (gap, s) = interface_values(interface, w, &problem.gap, lambda, tau, frictional);
-    (0..lambda.len())
-        .map(|k| {
-            let normal = lambda[k] - c_n * gap[k];
-            if normal <= 0.0 || !problem.normal[k] {
-                return PairState::Free;
-            }
-            let mu = problem.friction[k];
-            if !frictional || !problem.tangential[k] || mu == 0.0 {
-                return PairState::Stick;
-            }
-            let theta = tau[k] - c_t * (s[k] - start.slip[k]);
-            PairState::from_trial(normal, theta, mu, true)
-        })
-        .collect()
-}
-
-/// Whether the solution of `state` satisfies all contact and friction conditions to round-off
-/// (1e-10 of the force and length scales).
-#[allow(clippy::too_many_arguments)]
-fn admissible(
-    problem: &ContactProblem,
-    interface: &Interface,
-    w: f64,
-    start: &StepStart,
-    state: &[PairState],
-    lambda: &[f64],
-    tau: &[f64],
-    frictional: bool,
-) -> bool {
-    let (gap, s) = interface_values(interface, w, &problem.gap, lambda, tau, frictional);
-    let force = lambda.iter().chain(tau).fold(0.0f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
-    // The length scale is the motion (gap − g0), not the gaps: a clearance of 1e12 must not make
-    // a penetration of 0.4 look like round-off.
-    let length = gap.iter().zip(&problem.gap).fold(0.0f64, |a, (v, g0)| a.max((v - g0).abs())).max(f64::MIN_POSITIVE);
-    let (tf, tg) = (1e-10 * force, 1e-10 * length);
-    (0..lambda.len()).all(|k| {
-        let ds = s[k] - start.slip[k];
-        let mu_lambda = problem.friction[k] * lambda[k];
-        match state[k] {
-            PairState::Free => gap[k] >= -tg,
-            PairState::Stick => lambda[k] >= -tf && tau[k].abs() <= mu_lambda + tf,
-            PairState::SlipPositive => lambda[k] >= -tf && ds >= -tg,
-            PairState::SlipNegative => lambda[k] >= -tf && ds <= tg,
-        }
-    })
 }

@@ -13,6 +13,7 @@
 //! full_system               contact stiffness scale and fixed-pattern sparse LU (shared)
 //! state_equations           the linear system of a given zone configuration (shared)
 //! sparse_active_set         the active set on the sparse full system (crate::kkt), no condensation
+//! semi_smooth               the state update and admissibility test of both active-set paths (shared)
 //! ```
 
 pub mod augmented_lagrangian;
@@ -23,5 +24,6 @@ pub mod frictional_active_set;
 pub mod frictionless_active_set;
 pub mod full_system;
 pub mod penalty;
+pub(crate) mod semi_smooth;
 pub(crate) mod sparse_active_set;
 pub(crate) mod state_equations;

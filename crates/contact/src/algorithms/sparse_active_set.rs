@@ -19,8 +19,9 @@
 use web_time::Instant;
 
 use crate::algorithms::full_system::{contact_stiffness, dot_free, row_offsets};
+use crate::algorithms::semi_smooth::{Iterate, admissible, next_state};
 use crate::interface::Interface;
-use crate::kkt::{Accuracy, StateKkt, StateSolution};
+use crate::kkt::{Accuracy, StateKkt};
 use crate::problem::{ContactProblem, PairRow};
 use crate::report::{RawSolution, finish_from_displacement};
 use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
@@ -103,8 +104,14 @@ pub(crate) fn solve_sparse_active_set(
         let gap: Vec<f64> = (0..m).map(|k| g_hat[k] + dot_free(&problem.normal_rows[k], u)).collect();
         let slip: Vec<f64> =
             (0..m).map(|k| if frictional { s_hat[k] + dot_free(&problem.tangent_rows[k], u) } else { 0.0 }).collect();
-        let next = next_state(problem, &solution, &gap, &slip, start, (c_n, c_t), frictional);
-        let settled = next == state || admissible(problem, state, &solution, &gap, &slip, start);
+        let iterate = Iterate {
+            normal_force: &solution.normal_force,
+            tangential_force: &solution.tangential_force,
+            gap: &gap,
+            slip: &slip,
+        };
+        let next = next_state(problem, &iterate, start, (c_n, c_t), frictional);
+        let settled = next == state || admissible(problem, state, &iterate, start);
         Some((solution, next, settled))
     };
     for it in 1..=max_iterations {
@@ -159,57 +166,4 @@ pub(crate) fn solve_sparse_active_set(
     let mut solution = finish_from_displacement(problem, &u, raw, start);
     solution.trace = trace;
     solution
-}
-
-/// The state the semi-smooth update picks from a state's solution (module docs).
-fn next_state(
-    problem: &ContactProblem,
-    solution: &StateSolution,
-    gap: &[f64],
-    slip: &[f64],
-    start: &StepStart,
-    (c_n, c_t): (f64, f64),
-    frictional: bool,
-) -> Vec<PairState> {
-    let (lambda, tau) = (&solution.normal_force, &solution.tangential_force);
-    (0..lambda.len())
-        .map(|k| {
-            let normal = lambda[k] - c_n * gap[k];
-            if normal <= 0.0 || !problem.normal[k] {
-                return PairState::Free;
-            }
-            let mu = problem.friction[k];
-            if !frictional || !problem.tangential[k] || mu == 0.0 {
-                return PairState::Stick;
-            }
-            let theta = tau[k] - c_t * (slip[k] - start.slip[k]);
-            PairState::from_trial(normal, theta, mu, true)
-        })
-        .collect()
-}
-
-/// Whether the solution of `state` satisfies all contact and friction conditions to round-off
-/// (1e-10 of the force and length scales; as `frictional_active_set.rs` decides it).
-fn admissible(
-    problem: &ContactProblem,
-    state: &[PairState],
-    solution: &StateSolution,
-    gap: &[f64],
-    slip: &[f64],
-    start: &StepStart,
-) -> bool {
-    let (lambda, tau) = (&solution.normal_force, &solution.tangential_force);
-    let force = lambda.iter().chain(tau).fold(0.0f64, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE);
-    let length = gap.iter().zip(&problem.gap).fold(0.0f64, |a, (v, g0)| a.max((v - g0).abs())).max(f64::MIN_POSITIVE);
-    let (tf, tg) = (1e-10 * force, 1e-10 * length);
-    (0..lambda.len()).all(|k| {
-        let ds = slip[k] - start.slip[k];
-        let mu_lambda = problem.friction[k] * lambda[k];
-        match state[k] {
-            PairState::Free => gap[k] >= -tg,
-            PairState::Stick => lambda[k] >= -tf && tau[k].abs() <= mu_lambda + tf,
-            PairState::SlipPositive => lambda[k] >= -tf && ds >= -tg,
-            PairState::SlipNegative => lambda[k] >= -tf && ds <= tg,
-        }
-    })
 }
