@@ -4,8 +4,9 @@
 //! ```text
 //! scenes: plate_insert_nogap_mu03 (one proportional step) and plate_insert_gap_v1_mu03 (three load
 //!         steps with clearance), both on the N = 16 meshes so that each run takes well under a second
-//! files:  CHART_API.md's list: summary.json, README.txt, figures (.png, .svg), hole_edge.csv,
-//!         insert_edge.csv, steps.csv, step_NNN.vtu (one per step), steps.pvd
+//! files:  every scene's (summary.json, README.txt, figures .png and .svg, contact_hole.csv,
+//!         steps.csv, step_NNN.vtu one per step, steps.pvd) and the preset's (hole_edge and
+//!         insert_hoop figures, zone_ends for more than one step, hole_edge.csv, insert_edge.csv)
 //! check:  Σ_hole-edge nodes traction_x1 · weight + P = 0   (the plate's free-body balance in x1)
 //! ```
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -47,9 +48,9 @@ fn column(header: &[String], rows: &[Vec<String>], name: &str) -> Vec<Option<f64
 
 /// Every documented file is there and well formed; returns the summary.
 fn check_folder(dir: &Path, steps: usize, mesh: &str) -> serde_json::Value {
-    let mut figures = vec!["mesh", "hole_edge", "insert_hoop", "von_mises"];
+    let mut figures = vec!["mesh", "contact_hole", "hole_edge", "insert_hoop", "von_mises"];
     if steps > 1 {
-        figures.push("history");
+        figures.extend(["history", "zone_ends"]);
     }
     for f in &figures {
         let png = std::fs::read(dir.join(format!("{f}.png"))).unwrap();
@@ -59,7 +60,9 @@ fn check_folder(dir: &Path, steps: usize, mesh: &str) -> serde_json::Value {
         assert!(svg.contains("plate_insert_"), "{f}.svg has the scene name in its title");
     }
     if steps == 1 {
-        assert!(!dir.join("history.png").exists(), "no history figure for one step");
+        for f in ["history.png", "zone_ends.png"] {
+            assert!(!dir.join(f).exists(), "no {f} for one step");
+        }
     }
 
     let summary: serde_json::Value =

@@ -18,12 +18,12 @@ use contact2d_contact::{BuiltProblem, ContactSolution};
 
 use serde::ser::{Serialize, SerializeMap, SerializeSeq, Serializer};
 
-use super::{GenericOutcome, StepResult};
+use super::{GenericOutcome, GenericReport, StepResult};
 use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::step_view::{NodeValues, StepView, state_code};
 use crate::output::{
-    FIGURE_EXTENSIONS, OutputDir, OutputError, SUMMARY_FILE, atomic, field_plot, figure, mesh_plot, readme,
-    step_file_name, vtu,
+    FIGURE_EXTENSIONS, OutputDir, OutputError, PresetFiles, SUMMARY_FILE, atomic, field_plot, figure, mesh_plot,
+    readme, step_file_name, vtu,
 };
 
 /// Writes every output of `outcome` into the prepared folder `out` (each file atomically, stale
@@ -60,58 +60,108 @@ pub fn write_step_vtu(
     out.write_with(&step_file_name(k), |tmp| vtu::write_step_vtu(tmp, &built_step_view(built, solution)))
 }
 
+/// A solved run as the one writer sees it: the summary, the problem of the last step and that
+/// step's view, and the time of each step in `steps.pvd`.
+pub struct RunFolder<'a> {
+    /// The scene's description (the README's second line).
+    pub description: &'a str,
+    /// The problem of the last step (its load patterns and interfaces name the table's columns).
+    pub built: &'a BuiltProblem,
+    /// The summary, with every step row.
+    pub report: &'a GenericReport,
+    /// The last step as the figures draw it.
+    pub last: StepView<'a>,
+    /// The time of each step in `steps.pvd` (the step number; the load w of the paper's case).
+    pub step_times: Vec<f64>,
+}
+
+impl<'a> RunFolder<'a> {
+    /// The folder of a generic run: its last step's view, times = step numbers.
+    ///
+    /// # Errors
+    /// [`OutputError::MissingData`] at `path` without a solved step.
+    pub fn of(outcome: &'a GenericOutcome, path: &Path) -> Result<RunFolder<'a>, OutputError> {
+        let Some(last) = outcome.history.steps.last() else {
+            return Err(OutputError::MissingData { path: path.to_path_buf(), reason: "no solved step".into() });
+        };
+        Ok(RunFolder {
+            description: &outcome.scene.description,
+            built: &outcome.built,
+            report: &outcome.report,
+            last: step_view(outcome, &last.solution),
+            step_times: (1..=outcome.report.steps.len()).map(|k| k as f64).collect(),
+        })
+    }
+}
+
 /// Writes the outputs of `outcome` other than the step files, which [`write_step_vtu`] wrote for
-/// each of the report's steps: figures and profiles of the last step, `steps.csv`, `steps.pvd`
-/// and `summary.json` last. The manifest and the returned paths list the step files before
-/// `steps.pvd`, whenever they were written.
+/// each of the report's steps (see [`finish_outputs`]).
 ///
 /// # Errors
 /// As [`write_generic_outputs_into`].
-pub fn finish_generic_outputs(mut out: OutputDir, outcome: &GenericOutcome) -> Result<Vec<PathBuf>, OutputError> {
-    let name = &outcome.scene.name;
-    let Some(last) = outcome.history.steps.last() else {
-        return Err(OutputError::MissingData { path: out.path().to_path_buf(), reason: "no solved step".into() });
-    };
-    let n = outcome.report.steps.len();
-    let view = step_view(outcome, &last.solution);
+pub fn finish_generic_outputs(out: OutputDir, outcome: &GenericOutcome) -> Result<Vec<PathBuf>, OutputError> {
+    let folder = RunFolder::of(outcome, out.path())?;
+    finish_outputs(out, &folder, None)
+}
+
+/// Writes every run's files but the step files (written before, one per step, as
+/// `step_<k>.vtu`): figures and profiles of the last step, `steps.csv`, `steps.pvd`, the
+/// preset's own files, `README.txt` and `summary.json` last. The manifest and the returned paths
+/// list the step files before `steps.pvd`, whenever they were written.
+///
+/// # Errors
+/// As [`write_generic_outputs_into`].
+pub fn finish_outputs(
+    mut out: OutputDir,
+    folder: &RunFolder,
+    preset: Option<&dyn PresetFiles>,
+) -> Result<Vec<PathBuf>, OutputError> {
+    let report = folder.report;
+    let name = &report.scene;
+    let n = report.steps.len();
+    let view = &folder.last;
     let mut skipped = vec![];
     for ext in FIGURE_EXTENSIONS {
         figure(&mut out, &format!("mesh.{ext}"), &mut skipped, |p| {
-            mesh_plot::draw_mesh(p, &format!("{name}: mesh (step {n}/{n})"), &view)
+            mesh_plot::draw_mesh(p, &format!("{name}: mesh (step {n}/{n})"), view)
         })?;
-        for (iface, result) in &outcome.report.contacts {
+        for (iface, result) in &report.contacts {
             figure(&mut out, &format!("contact_{}.{ext}", file_safe(iface)), &mut skipped, |p| {
                 draw_profile(p, &format!("{name}: contact \"{iface}\" (step {n}/{n})"), result)
             })?;
         }
         figure(&mut out, &format!("von_mises.{ext}"), &mut skipped, |p| {
-            field_plot::draw_von_mises(p, &format!("{name}: von Mises stress (step {n}/{n})"), &view)
+            field_plot::draw_von_mises(p, &format!("{name}: von Mises stress (step {n}/{n})"), view)
         })?;
         if n > 1 {
             figure(&mut out, &format!("history.{ext}"), &mut skipped, |p| {
-                draw_history(
-                    p,
-                    &format!("{name}: contact forces over the steps (resultant on the slave side)"),
-                    outcome,
-                )
+                draw_history(p, &format!("{name}: contact forces over the steps (resultant on the slave side)"), folder)
             })?;
         }
     }
-    for (iface, result) in &outcome.report.contacts {
+    for (iface, result) in &report.contacts {
         out.write_bytes(&format!("contact_{}.csv", file_safe(iface)), profile_csv(result).as_bytes())?;
     }
-    out.write_bytes("steps.csv", steps_csv(outcome).as_bytes())?;
-    write_step_profiles(&mut out, &outcome.report.steps)?;
+    out.write_bytes("steps.csv", steps_csv(folder, preset).as_bytes())?;
+    write_step_profiles(&mut out, &report.steps)?;
+    if let Some(preset) = preset {
+        preset.write(&mut out, &mut skipped)?;
+    }
     let step_files: Vec<String> = (0..n).map(step_file_name).collect();
-    let collection: Vec<(f64, String)> =
-        step_files.iter().enumerate().map(|(k, f)| ((k + 1) as f64, f.clone())).collect();
+    let collection: Vec<(f64, String)> = folder.step_times.iter().copied().zip(step_files.iter().cloned()).collect();
     out.write_with(PVD_FILE, |p| vtu::write_pvd(p, &collection))?;
     let mut names = steps_before_pvd(out.written().to_vec(), |f| f.as_str(), |f| step_files.iter().any(|s| s == f));
     names.extend(["README.txt".to_string(), SUMMARY_FILE.to_string()]);
-    let description = &outcome.scene.description;
-    out.write_bytes("README.txt", readme::generic_readme_text(&outcome.report, description, &names).as_bytes())?;
-    // The summary but its step rows, which are printed from the outcome (no copy of them).
-    let mut head = outcome.report.without_steps();
+    let mut text = readme::generic_readme_text(report, folder.description, &names, preset);
+    if !skipped.is_empty() {
+        text.push_str("\nNot drawn (the data cannot be plotted; the CSV and VTU files hold the values):\n");
+        for note in &skipped {
+            let _ = writeln!(text, "  {note}");
+        }
+    }
+    out.write_bytes("README.txt", text.as_bytes())?;
+    // The summary but its step rows, which are printed from the report (no copy of them).
+    let mut head = report.without_steps();
     head.notes.extend(skipped);
     let summary_path = out.path().join(SUMMARY_FILE);
     let is_step = |f: &str| step_files.iter().any(|s| s == f);
@@ -124,7 +174,7 @@ pub fn finish_generic_outputs(mut out: OutputDir, outcome: &GenericOutcome) -> R
         let value = serde_json::to_value(&head).map_err(serialize)?;
         let files = steps_before_pvd(files.to_vec(), |f| f.as_str(), is_step);
         let head = atomic::manifest_object(value, &files);
-        serde_json::to_writer_pretty(&mut *file, &SortedSummary { head: &head, steps: &outcome.report.steps })
+        serde_json::to_writer_pretty(&mut *file, &SortedSummary { head: &head, steps: &report.steps })
             .map_err(serialize)?;
         file.write_all(b"\n").map_err(|e| OutputError::io(&summary_path, e))
     })?;
@@ -263,11 +313,11 @@ fn draw_profile(path: &Path, title: &str, result: &super::ContactResult) -> Resu
     line_chart(path, &axes, &series)
 }
 
-fn draw_history(path: &Path, title: &str, outcome: &GenericOutcome) -> Result<(), OutputError> {
+fn draw_history(path: &Path, title: &str, folder: &RunFolder) -> Result<(), OutputError> {
     let mut series = vec![];
-    for iface in &outcome.built.interfaces {
+    for iface in &folder.built.interfaces {
         let at = |f: fn(&super::ContactResult) -> f64| -> Vec<(f64, f64)> {
-            outcome
+            folder
                 .report
                 .steps
                 .iter()
@@ -309,12 +359,14 @@ fn profile_csv(result: &super::ContactResult) -> String {
     out
 }
 
-fn steps_csv(outcome: &GenericOutcome) -> String {
-    let patterns: Vec<String> = outcome.built.problem.patterns().iter().map(|p| p.name.clone()).collect();
+/// The step table: the generic columns, then the preset's.
+fn steps_csv(folder: &RunFolder, preset: Option<&dyn PresetFiles>) -> String {
+    let (preset_header, preset_rows) = preset.map(|p| p.step_columns()).unwrap_or_default();
+    let patterns: Vec<String> = folder.built.problem.patterns().iter().map(|p| p.name.clone()).collect();
     let mut header = vec!["step".to_string()];
     header.extend(patterns.iter().map(|p| format!("factor_{p}")));
     header.extend(["status".into(), "iterations".into()]);
-    for i in &outcome.built.interfaces {
+    for i in &folder.built.interfaces {
         for q in [
             "normal_force",
             "tangential_force",
@@ -328,12 +380,13 @@ fn steps_csv(outcome: &GenericOutcome) -> String {
             header.push(format!("{}_{q}", i.name));
         }
     }
+    header.extend(preset_header.iter().map(|h| h.to_string()));
     let mut out = header.join(",") + "\n";
-    for (k, s) in outcome.report.steps.iter().enumerate() {
+    for (k, s) in folder.report.steps.iter().enumerate() {
         let mut row = vec![(k + 1).to_string()];
         row.extend(patterns.iter().map(|p| format!("{:e}", s.factors.get(p).copied().unwrap_or(0.0))));
         row.extend([s.status.to_string(), s.iterations.to_string()]);
-        for i in &outcome.built.interfaces {
+        for i in &folder.built.interfaces {
             if let Some(c) = s.contacts.get(&i.name) {
                 for v in [
                     c.normal_force,
@@ -349,6 +402,7 @@ fn steps_csv(outcome: &GenericOutcome) -> String {
                 }
             }
         }
+        row.extend(preset_rows.get(k).into_iter().flatten().cloned());
         out += &(row.join(",") + "\n");
     }
     out

@@ -1,20 +1,10 @@
 //! Writers of (problem, solution) every scene's outputs use: the output folder written whole
 //! ([`atomic`]), line charts ([`chart`]), the mesh and von Mises figures, VTU files for ParaView,
-//! and the README's descriptions. The generic run's folder is written by
-//! `crate::generic::outputs`; the plate-insert preset's own figures and tables by its
-//! post-processor (`crate::plate_insert::outputs`), which writes this folder:
-//!
-//! ```text
-//! summary.json                     the run's summary (the --json object) plus "files", the list of
-//!                                  this run's files: written last, so a folder without it is
-//!                                  incomplete (see [`atomic`])
-//! mesh, hole_edge, insert_hoop,    figures (.png and .svg) of the last step; insert_hoop only for an
-//! von_mises, history               elastic insert, history only for more than one step
-//! hole_edge.csv, insert_edge.csv   contour profiles of the last step
-//! steps.csv                        the step table
-//! step_000.vtu, ..., steps.pvd     one VTK file per step and their ParaView collection
-//! README.txt                       what each file is
-//! ```
+//! and the README's descriptions. Every run's folder is written by one writer,
+//! `crate::generic::outputs`; a preset adds its own files through [`PresetFiles`] (the
+//! plate-insert preset's hole-edge and insert figures and tables, `crate::plate_insert::outputs`).
+//! `summary.json`, the run's summary with `"files"` (the list of this run's files), is written
+//! last, so a folder without it is incomplete (see [`atomic`]).
 //! Library code here writes files and returns what it wrote; it never prints.
 //! [`chart`] is the shared line-chart API every figure of the project draws with.
 
@@ -26,6 +16,7 @@ mod error;
 pub mod field_plot;
 #[cfg(feature = "native")]
 pub mod mesh_plot;
+pub mod preset_files;
 pub mod readme;
 pub mod step_view;
 #[cfg(feature = "native")]
@@ -36,6 +27,7 @@ use std::path::Path;
 
 pub use atomic::OutputDir;
 pub use error::OutputError;
+pub use preset_files::PresetFiles;
 
 /// The figure formats written for every figure.
 pub const FIGURE_EXTENSIONS: [&str; 2] = ["png", "svg"];

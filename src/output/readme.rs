@@ -5,6 +5,7 @@ use std::fmt::Write as _;
 
 use contact2d_contact::ContactAlgorithm;
 
+use super::PresetFiles;
 use crate::generic::GenericReport;
 
 /// What the file `name` of a generic run's folder holds (one line).
@@ -34,16 +35,30 @@ pub fn describe_generic(name: &str) -> &'static str {
     }
 }
 
-/// The README text of a generic run's folder with the files `written`.
-pub fn generic_readme_text(report: &GenericReport, description: &str, written: &[String]) -> String {
+/// The README text of a run's folder with the files `written`, described by the preset where it
+/// has its own words for them.
+pub fn generic_readme_text(
+    report: &GenericReport,
+    description: &str,
+    written: &[String],
+    preset: Option<&dyn PresetFiles>,
+) -> String {
     let mut t = format!("contact2d outputs of scene \"{}\"\n", report.scene);
     if !description.is_empty() {
         let _ = writeln!(t, "{description}");
     }
     let _ = writeln!(t, "{}", method_line(report));
-    t.push_str("Units: those of the scene (forces per unit thickness where the thickness is 1).\n\nFiles:\n");
+    if preset.is_none() {
+        t.push_str("Units: those of the scene (forces per unit thickness where the thickness is 1).\n");
+    }
+    t.push_str("\nFiles:\n");
     for file in written {
-        let _ = writeln!(t, "  {file:<24} {}", describe_generic(file));
+        let what = preset.and_then(|p| p.describe(file)).unwrap_or_else(|| describe_generic(file));
+        let _ = writeln!(t, "  {file:<24} {what}");
+    }
+    if let Some(p) = preset {
+        t.push('\n');
+        t.push_str(&p.readme_notes());
     }
     t
 }

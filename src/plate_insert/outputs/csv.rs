@@ -1,4 +1,4 @@
-//! CSV tables: the contour profiles of a step and the step table of a run.
+//! CSV tables: the contour profiles of a step and the paper's columns of the run's step table.
 //!
 //! Plain comma-separated text with one header line; numbers in Rust's shortest round-trip form
 //! (reading them back gives the same `f64`); an empty field where a value does not exist (a node
@@ -17,8 +17,8 @@ pub const HOLE_EDGE_HEADER: &str =
 /// Header of `insert_edge.csv`.
 pub const INSERT_EDGE_HEADER: &str =
     "node,eta,theta_deg,x1,x2,s_thetatheta,p,q,traction_x1,traction_x2,weight,n1,n2,gap,slip,state";
-/// Header of `steps.csv`.
-pub const STEPS_HEADER: &str = "step,w,l,b,P,Phi_E1,Phi_E2,Phi_f,W,status,iterations";
+/// The paper's columns of `steps.csv` (after every scene's columns).
+pub const STEP_COLUMNS: [&str; 8] = ["w", "l", "b", "P", "Phi_E1", "Phi_E2", "Phi_f", "W"];
 
 /// Writes one contour profile (`header` is [`HOLE_EDGE_HEADER`] or [`INSERT_EDGE_HEADER`]);
 /// `node_tags` maps node indices to the mesh's node tags.
@@ -53,29 +53,25 @@ pub fn write_profile_csv(path: &Path, header: &str, rows: &[ProfileRow], node_ta
     std::fs::write(path, text).map_err(|e| OutputError::io(path, e))
 }
 
-/// Writes the step table of a run: load, zone ends, force, energies, status per step.
-///
-/// # Errors
-/// [`OutputError::Io`] if the file cannot be written.
-pub fn write_steps_csv(path: &Path, outcome: &RunOutcome) -> Result<(), OutputError> {
-    let mut text = format!("{STEPS_HEADER}\n");
-    for (k, (row, solved)) in outcome.paper.steps.iter().zip(&outcome.steps).enumerate() {
-        let fields = [
-            k.to_string(),
-            num(row.w),
-            opt(row.l),
-            opt(row.b),
-            num(row.P),
-            num(row.Phi_E1),
-            num(row.Phi_E2),
-            num(row.Phi_f),
-            num(row.W),
-            format!("{:?}", solved.solution.status).to_lowercase(),
-            solved.solution.iterations.to_string(),
-        ];
-        let _ = writeln!(text, "{}", fields.join(","));
-    }
-    std::fs::write(path, text).map_err(|e| OutputError::io(path, e))
+/// The paper's values of [`STEP_COLUMNS`] per step: load, zone ends, force, energies, work.
+pub fn step_rows(outcome: &RunOutcome) -> Vec<Vec<String>> {
+    outcome
+        .paper
+        .steps
+        .iter()
+        .map(|row| {
+            vec![
+                num(row.w),
+                opt(row.l),
+                opt(row.b),
+                num(row.P),
+                num(row.Phi_E1),
+                num(row.Phi_E2),
+                num(row.Phi_f),
+                num(row.W),
+            ]
+        })
+        .collect()
 }
 
 /// A number in shortest round-trip form; non-finite values as an empty field.

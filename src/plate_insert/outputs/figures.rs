@@ -71,7 +71,7 @@ pub fn draw_insert_hoop(path: &Path, title: &str, insert: &[ProfileRow]) -> Resu
 ///
 /// # Errors
 /// As [`line_chart`].
-pub fn draw_history(path: &Path, title: &str, outcome: &RunOutcome) -> Result<(), OutputError> {
+pub fn draw_zone_ends(path: &Path, title: &str, outcome: &RunOutcome) -> Result<(), OutputError> {
     let steps = &outcome.paper.steps;
     let points = |pick: fn(&crate::plate_insert::report::StepReport) -> Option<f64>| -> Vec<(f64, f64)> {
         steps.iter().filter_map(|s| pick(s).map(|v| (s.w, v))).collect()

@@ -1,17 +1,15 @@
-//! The plate-insert preset's outputs: the flagship's figures and tables of a solved run,
-//! written through the same [`OutputDir`] as every scene's:
+//! The plate-insert preset's post-processor outputs: the flagship's figures and tables, added
+//! through [`PresetFiles`] to the folder every scene's run writes
+//! (`crate::generic::outputs::finish_outputs`: mesh, contact_hole, von_mises, history, steps.csv
+//! with the paper's columns, step files, README.txt, summary.json):
 //!
 //! ```text
-//! summary.json                     the run's summary (the --json object) plus "files", the list of
-//!                                  this run's files: written last, so a folder without it is
-//!                                  incomplete (see crate::output::atomic)
-//! mesh, hole_edge, insert_hoop,    figures (.png and .svg) of the last step; insert_hoop only for an
-//! von_mises, history               elastic insert, history only for more than one step
+//! hole_edge.png/.svg               s_φφ, p, q along the hole edge against η (last step)
+//! insert_hoop.png/.svg             the insert's hoop stress (elastic insert only)
+//! zone_ends.png/.svg               l(w) and b(w) over the steps (more than one step)
 //! hole_edge.csv, insert_edge.csv   contour profiles of the last step
-//! steps.csv                        the step table
-//! contact_hole_step_<k>.csv        every step's interface profile (run --profiles all)
-//! step_000.vtu, ..., steps.pvd     one VTK file per step and their ParaView collection
-//! README.txt                       what each file is
+//! steps.csv                        + w, l, b, P, Φ_E1, Φ_E2, Φ_f, W per step
+//! step_000.vtu ...                 the flagship's view: both edges' p, q (paper's signs); time = w
 //! ```
 
 pub mod csv;
@@ -24,8 +22,10 @@ pub mod readme;
 use std::path::{Path, PathBuf};
 
 #[cfg(feature = "native")]
+use crate::generic::outputs::{RunFolder, finish_outputs};
+#[cfg(feature = "native")]
 use crate::output::{
-    FIGURE_EXTENSIONS, OutputDir, OutputError, SUMMARY_FILE, atomic, field_plot, figure, mesh_plot, step_file_name, vtu,
+    FIGURE_EXTENSIONS, OutputDir, OutputError, PresetFiles, SUMMARY_FILE, figure, step_file_name, vtu,
 };
 #[cfg(feature = "native")]
 use crate::run::RunOutcome;
@@ -34,8 +34,8 @@ use crate::scene::Scene;
 
 #[cfg(feature = "native")]
 /// Writes every output of a solved scene into `dir` (see [`write_outputs_into`]); the folder is
-/// prepared (created, checked, locked) here. Prefer [`atomic::OutputDir::prepare`] before
-/// solving and [`write_outputs_into`] after, so that a bad folder fails before the work.
+/// prepared (created, checked, locked) here. Prefer [`crate::output::atomic::OutputDir::prepare`]
+/// before solving and [`write_outputs_into`] after, so that a bad folder fails before the work.
 ///
 /// # Errors
 /// [`OutputError`] naming the folder or the first file that could not be written.
@@ -45,9 +45,8 @@ pub fn write_outputs(dir: &Path, scene: &Scene, outcome: &RunOutcome) -> Result<
 
 #[cfg(feature = "native")]
 /// Writes every output of a solved scene into the prepared folder `out` and returns the paths
-/// written, the summary last: each file atomically, stale files of an earlier run removed, the
-/// summary (with `"files"`, the manifest) last. A figure that cannot be drawn (non-finite or
-/// unrepresentable values) is skipped with a note in the summary's `notes` and the README.
+/// written: the step files in the flagship's view, then every scene's files with the preset's
+/// ([`PaperFiles`]), the summary last (see `crate::generic::outputs::finish_outputs`).
 ///
 /// # Errors
 /// [`OutputError`] naming the first file that could not be written; the folder then holds no
@@ -57,83 +56,83 @@ pub fn write_outputs_into(
     scene: &Scene,
     outcome: &RunOutcome,
 ) -> Result<Vec<PathBuf>, OutputError> {
-    let dir = out.path().to_path_buf();
-    let last = outcome
-        .steps
-        .last()
-        .ok_or_else(|| OutputError::MissingData { path: dir.clone(), reason: "the run has no solved step".into() })?;
-    let mut skipped: Vec<String> = vec![];
-
-    let n = outcome.steps.len();
-    let step_label = format!("step {n}/{n}, w = {:.4}", last.solution.load_factor);
-    let title = |what: &str| format!("{}: {what} ({step_label})", scene.name);
+    let missing = |reason: &str| OutputError::MissingData { path: out.path().to_path_buf(), reason: reason.into() };
+    let last = outcome.steps.last().ok_or_else(|| missing("the run has no solved step"))?;
     let profiles: Vec<profiles::Profiles> =
         outcome.steps.iter().map(profiles::contour_profiles).collect::<Result<_, _>>()?;
-    let final_profiles = profiles
-        .last()
-        .ok_or_else(|| OutputError::MissingData { path: dir.clone(), reason: "no contour profile".into() })?;
-    let elastic_insert = last.case.problem.model.body("insert").is_some();
-    let last_view = profiles::flagship_view(last, final_profiles);
+    let final_profiles = profiles.last().ok_or_else(|| missing("no contour profile"))?;
+    for (k, (step, p)) in outcome.steps.iter().zip(&profiles).enumerate() {
+        out.write_with(&step_file_name(k), |tmp| vtu::write_step_vtu(tmp, &profiles::flagship_view(step, p)))?;
+    }
+    let folder = RunFolder {
+        description: &scene.description,
+        built: &last.case.built,
+        report: &outcome.report,
+        last: profiles::flagship_view(last, final_profiles),
+        step_times: outcome.steps.iter().map(|s| s.solution.load_factor).collect(),
+    };
+    let files = PaperFiles { scene, outcome, profiles: final_profiles };
+    finish_outputs(out, &folder, Some(&files))
+}
 
-    for ext in FIGURE_EXTENSIONS {
-        figure(&mut out, &format!("mesh.{ext}"), &mut skipped, |p| {
-            mesh_plot::draw_mesh(p, &title("mesh"), &last_view)
-        })?;
+#[cfg(feature = "native")]
+/// The plate-insert preset's own files of a run (module docs).
+pub struct PaperFiles<'a> {
+    /// The scene.
+    pub scene: &'a Scene,
+    /// The solved run.
+    pub outcome: &'a RunOutcome,
+    /// The last step's contour profiles.
+    pub profiles: &'a profiles::Profiles,
+}
+
+#[cfg(feature = "native")]
+impl PresetFiles for PaperFiles<'_> {
+    fn write(&self, out: &mut OutputDir, skipped: &mut Vec<String>) -> Result<(), OutputError> {
+        let (scene, outcome, last_profiles) = (self.scene, self.outcome, self.profiles);
+        let Some(last) = outcome.steps.last() else { return Ok(()) };
+        let n = outcome.steps.len();
+        let step_label = format!("step {n}/{n}, w = {:.4}", last.solution.load_factor);
+        let title = |what: &str| format!("{}: {what} ({step_label})", scene.name);
+        let elastic_insert = last.case.problem.model.body("insert").is_some();
         let ends: Vec<(&str, f64)> = [("l", last.results.contact_end), ("b", last.results.stick_end)]
             .into_iter()
             .filter_map(|(name, v)| Some((name, v?)))
             .collect();
-        figure(&mut out, &format!("hole_edge.{ext}"), &mut skipped, |p| {
-            figures::draw_hole_edge(p, &title("hole edge"), &final_profiles.hole, &ends)
-        })?;
-        if elastic_insert {
-            figure(&mut out, &format!("insert_hoop.{ext}"), &mut skipped, |p| {
-                figures::draw_insert_hoop(p, &title("insert hoop stress"), &final_profiles.insert)
+        for ext in FIGURE_EXTENSIONS {
+            figure(out, &format!("hole_edge.{ext}"), skipped, |p| {
+                figures::draw_hole_edge(p, &title("hole edge"), &last_profiles.hole, &ends)
             })?;
+            if elastic_insert {
+                figure(out, &format!("insert_hoop.{ext}"), skipped, |p| {
+                    figures::draw_insert_hoop(p, &title("insert hoop stress"), &last_profiles.insert)
+                })?;
+            }
+            if n > 1 {
+                figure(out, &format!("zone_ends.{ext}"), skipped, |p| {
+                    figures::draw_zone_ends(p, &format!("{}: zone ends over the loading", scene.name), outcome)
+                })?;
+            }
         }
-        figure(&mut out, &format!("von_mises.{ext}"), &mut skipped, |p| {
-            field_plot::draw_von_mises(p, &title("von Mises stress"), &last_view)
+        let tags = &last.case.problem.model.mesh.node_tags;
+        out.write_with("hole_edge.csv", |p| {
+            csv::write_profile_csv(p, csv::HOLE_EDGE_HEADER, &last_profiles.hole, tags)
         })?;
-        if n > 1 {
-            figure(&mut out, &format!("history.{ext}"), &mut skipped, |p| {
-                figures::draw_history(p, &format!("{}: zone ends over the loading", scene.name), outcome)
-            })?;
-        }
+        out.write_with("insert_edge.csv", |p| {
+            csv::write_profile_csv(p, csv::INSERT_EDGE_HEADER, &last_profiles.insert, tags)
+        })?;
+        Ok(())
     }
 
-    let tags = &last.case.problem.model.mesh.node_tags;
-    out.write_with("hole_edge.csv", |p| csv::write_profile_csv(p, csv::HOLE_EDGE_HEADER, &final_profiles.hole, tags))?;
-    out.write_with("insert_edge.csv", |p| {
-        csv::write_profile_csv(p, csv::INSERT_EDGE_HEADER, &final_profiles.insert, tags)
-    })?;
-    out.write_with("steps.csv", |p| csv::write_steps_csv(p, outcome))?;
-    crate::generic::outputs::write_step_profiles(&mut out, &outcome.report.steps)?;
-
-    let mut collection = vec![];
-    for (k, (step, p)) in outcome.steps.iter().zip(&profiles).enumerate() {
-        let name = step_file_name(k);
-        out.write_with(&name, |tmp| vtu::write_step_vtu(tmp, &profiles::flagship_view(step, p)))?;
-        collection.push((step.solution.load_factor, name));
+    fn step_columns(&self) -> (Vec<&'static str>, Vec<Vec<String>>) {
+        (csv::STEP_COLUMNS.to_vec(), csv::step_rows(self.outcome))
     }
-    out.write_with("steps.pvd", |p| vtu::write_pvd(p, &collection))?;
 
-    let mut names: Vec<String> = out.written().to_vec();
-    names.extend(["README.txt".to_string(), SUMMARY_FILE.to_string()]);
-    let mut readme = readme::readme_text(scene, outcome, &names);
-    if !skipped.is_empty() {
-        readme.push_str("\nNot drawn (the data cannot be plotted; the CSV and VTU files hold the values):\n");
-        for note in &skipped {
-            readme.push_str(&format!("  {note}\n"));
-        }
+    fn describe(&self, name: &str) -> Option<&'static str> {
+        readme::describe(name)
     }
-    out.write_bytes("README.txt", readme.as_bytes())?;
 
-    let mut report = outcome.report.clone();
-    report.notes.extend(skipped);
-    let summary_path = dir.join(SUMMARY_FILE);
-    out.finish(|files| {
-        let value = serde_json::to_value(&report)
-            .map_err(|e| OutputError::Serialize { path: summary_path.clone(), reason: e.to_string() })?;
-        atomic::manifest_json(value, files, &summary_path)
-    })
+    fn readme_notes(&self) -> String {
+        readme::notes()
+    }
 }
