@@ -110,12 +110,19 @@ function solveNow() {
     const t0 = performance.now();
     let view;
     if (scene.user) {
-      if (!state.userFiles) { setError(""); page.run = "idle"; clearFigures("Choose or drop a scene .toml and its .msh."); return; }
+      if (!state.userFiles) {
+        setError("");
+        clearFigures("Nothing solved yet: choose or drop a scene .toml and its .msh.");
+        page.updates += 1;
+        return;
+      }
       view = solveUser(state.userFiles);
     } else {
       view = scene.solve(values);
     }
     const t1 = performance.now();
+    // The published case of the controls' set-up (a history's steps keep showing it).
+    state.published = view.published || null;
     const shows = { kind: "solve", scene: state.scene, text: `One solve of the controls' set-up: ${scene.user
       ? `${state.userFiles.sceneName} on ${state.userFiles.meshName}` : scene.describe(values)}.` };
     draw(view, values, shows);
@@ -149,7 +156,7 @@ async function runHistory() {
   page.run = "history";
   $("history").textContent = "Stop the loading history";
   const values = { ...state.values }, w = Number(values.load);
-  const published = state.view && state.view.published;
+  const published = state.published;
   state.history = [];
   page.history = state.history;
   for (let k = 1; k <= HISTORY_STEPS; k++) {

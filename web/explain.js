@@ -26,8 +26,8 @@ export const EXPLAIN = {
   flagship: `${sketch(`${HEAD}<rect x="20" y="20" width="270" height="110" fill="#eee" stroke="#555"/>
     <circle cx="110" cy="130" r="45" fill="#fff" stroke="#555"/><circle cx="110" cy="130" r="43" fill="#e7d8b8" stroke="#8a6d3b"/>
     <circle cx="110" cy="130" r="11" fill="#fff" stroke="#8a6d3b"/>${arrow(290, 75, 315, 75)}
-    <text x="292" y="65" font-size="14">w</text><text x="30" y="40" font-size="13">plate E1</text>
-    <text x="92" y="115" font-size="13">insert E2</text>`, "Upper half of a plate pulled by w at its right edge, an insert in its hole")}
+    <text x="292" y="65" font-size="16">w</text><text x="30" y="40" font-size="15">plate E1</text>
+    <text x="92" y="115" font-size="15">insert E2</text>`, "Upper half of a plate pulled by w at its right edge, an insert in its hole")}
   <h3>The set-up</h3>
   <p>A plate (width 2H, hole radius R) holds an elastic insert (outer radius R1 = R − ε R, clamped on its
   inner circle R2 = 0.25 R). The plate's right edge is pulled by the displacement w; the plate bears on the
@@ -53,7 +53,7 @@ export const EXPLAIN = {
 
   hertz: `${sketch(`${HEAD}<circle cx="160" cy="55" r="45" fill="#e7d8b8" stroke="#8a6d3b"/>
     <rect x="40" y="100" width="240" height="40" fill="#eee" stroke="#555"/>${arrow(160, 2, 160, 20)}
-    <text x="168" y="16" font-size="14">F</text><text x="150" y="60" font-size="13">R</text>`,
+    <text x="168" y="16" font-size="16">F</text><text x="150" y="60" font-size="15">R</text>`,
     "A steel roller pressed on an aluminium block")}
   <h3>The set-up</h3>
   <p>NAFEMS benchmark (Code_Aster SSNP154): a roller of radius R = 50 mm, steel E = 210 GPa, ν = 0.3, pressed
@@ -68,7 +68,7 @@ export const EXPLAIN = {
 
   cattaneo_mindlin: `${sketch(`${HEAD}<circle cx="160" cy="55" r="45" fill="#e7d8b8" stroke="#8a6d3b"/>
     <rect x="40" y="100" width="240" height="40" fill="#eee" stroke="#555"/>${arrow(160, 2, 160, 20)}
-    ${arrow(205, 20, 240, 20)}<text x="168" y="16" font-size="14">P</text><text x="244" y="24" font-size="14">Q</text>`,
+    ${arrow(205, 20, 240, 20)}<text x="168" y="16" font-size="16">P</text><text x="244" y="24" font-size="16">Q</text>`,
     "A roller pressed (P) then pushed sideways (Q)")}
   <h3>The set-up</h3>
   <p>A steel roller R = 50 mm on a steel block (E = 210 GPa, ν = 0.3, plane strain, μ = 0.3, full model),
@@ -85,7 +85,7 @@ export const EXPLAIN = {
 
   pin_lug: `${sketch(`${HEAD}<rect x="60" y="20" width="240" height="120" fill="#eee" stroke="#555"/>
     <circle cx="130" cy="80" r="42" fill="#fff" stroke="#555"/><circle cx="130" cy="80" r="38" fill="#e7d8b8" stroke="#8a6d3b"/>
-    ${arrow(60, 80, 100, 80)}<text x="66" y="72" font-size="14">F</text>`, "A pin pushed through the hole of a lug")}
+    ${arrow(60, 80, 100, 80)}<text x="66" y="72" font-size="16">F</text>`, "A pin pushed through the hole of a lug")}
   <h3>The set-up</h3><p>A steel pin (E = 210 GPa, ν = 0.3, radius 9.9 mm) in the 10 mm hole of an aluminium lug
   (E = 70 GPa, ν = 0.33): radial clearance 0.1 mm, plane stress, half model, 4 load steps
   (scenes/generic/pin_lug.toml on the coarser mesh pin_lug_L1.msh). The pin is held only by the contact: it
@@ -95,8 +95,8 @@ export const EXPLAIN = {
   <h3>Caveats</h3><ul><li>The stick zone depends on the 4 load steps (friction is path-dependent).</li></ul>`,
 
   interference_fit: `${sketch(`<circle cx="160" cy="150" r="130" fill="#eee" stroke="#555"/>
-    <circle cx="160" cy="150" r="66" fill="#e7d8b8" stroke="#8a6d3b"/><text x="150" y="120" font-size="13">disk a</text>
-    <text x="210" y="60" font-size="13">ring b</text>`, "A disk shrunk into a ring (quarter model)")}
+    <circle cx="160" cy="150" r="66" fill="#e7d8b8" stroke="#8a6d3b"/><text x="150" y="120" font-size="15">disk a</text>
+    <text x="210" y="60" font-size="15">ring b</text>`, "A disk shrunk into a ring (quarter model)")}
   <h3>The set-up</h3><p>A solid disk a = 500 mm shrunk into a ring b = 1000 mm of the same steel (E = 200 GPa,
   ν = 0.3), radial interference δ (a negative gap), plane stress, quarter model. Lamé's closed form:
   p = E δ (b² − a²)/(2 a b²) (100 MPa at δ = 0.6667 mm).</p>${COULOMB}
@@ -105,7 +105,7 @@ export const EXPLAIN = {
 
   incline_push: `${sketch(`${HEAD}<polygon points="20,140 300,140 300,112" fill="#ddd" stroke="#000"/>
     <polygon points="120,124 200,116 203,96 123,104" fill="#e7d8b8" stroke="#8a6d3b"/>${arrow(80, 110, 118, 110)}
-    <text x="84" y="102" font-size="14">F</text>`, "An elastic block on a rigid incline, pushed up the slope")}
+    <text x="84" y="102" font-size="16">F</text>`, "An elastic block on a rigid incline, pushed up the slope")}
   <h3>The set-up</h3><p>A rubber-like block (40 × 10 mm, E = 10 MPa, ν = 0.3, plane strain) under its weight G
   rests on a rigid incline tan α = 0.1 and is pushed horizontally by F. Two load steps: the weight, then the
   push. Statics with Coulomb: the block slides up when F/G ≥ (tan α + μ)/(1 − μ tan α) (0.4124 at μ = 0.3).</p>

@@ -18,9 +18,12 @@ export const check = (ok, what) => {
   if (!ok) failures.push(what);
 };
 
+/** Serves web/ (or PAGE_DIR: another copy of the page, e.g. the one before issue 24, to see
+ * the defect tests fail on it). */
 export async function serve() {
+  const root = process.env.PAGE_DIR || web;
   const port = 8000 + Math.floor(Math.random() * 1000);
-  const server = spawn("python3", ["-m", "http.server", String(port), "--bind", "127.0.0.1", "--directory", web], {
+  const server = spawn("python3", ["-m", "http.server", String(port), "--bind", "127.0.0.1", "--directory", root], {
     stdio: "ignore",
   });
   const base = `http://127.0.0.1:${port}`;
