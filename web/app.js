@@ -14,6 +14,7 @@ import { GENERIC_SCENES, readUserFiles, solveUser } from "./scenes_generic.js";
 import { chart, chartCsv, drawMesh, setFontPx } from "./chart.js";
 import { readUrl, urlOf } from "./url.js";
 import { EXPLAIN } from "./explain.js";
+import { drawCycleStep, solveCycle } from "./cycle.js";
 
 const $ = (id) => document.getElementById(id);
 const SCENES = { ...PAPER_SCENES, ...GENERIC_SCENES };
@@ -78,12 +79,15 @@ function showValues() {
 // ---------------------------------------------------------------------------------------------
 // The run state machine.
 
+const HISTORY_LABEL = "Loading history: step w from 0 and draw l(w), b(w)";
+const CYCLE_LABEL = "Mindlin–Deresiewicz cycle: +A → −A → +A";
+
+/** Stops a history or cycle in flight: its loop sees the new generation and never draws again. */
 function cancelHistory() {
   state.generation += 1;
-  if (page.run === "history") {
-    page.run = "idle";
-    $("history").textContent = "Loading history: step w from 0 and draw l(w), b(w)";
-  }
+  if (page.run === "history" || page.run === "cycle") page.run = "idle";
+  $("history").textContent = HISTORY_LABEL;
+  $("cycle").textContent = CYCLE_LABEL;
 }
 
 /** Any input: cancel a history, schedule one solve for the next frame (coalescing inputs). */
@@ -190,6 +194,41 @@ async function runHistory() {
   }
 }
 
+// The Mindlin–Deresiewicz cycle: one solve of the whole path, then its steps played one per
+// 150 ms; stopped like a history.
+async function runCycle() {
+  if (page.run === "cycle") { cancelHistory(); return; }
+  if (state.frame) { cancelAnimationFrame(state.frame); state.frame = 0; solveNow(); }
+  const generation = ++state.generation;
+  page.run = "cycle";
+  $("cycle").textContent = "Stop the cycle";
+  const values = { ...state.values };
+  let view;
+  try {
+    const t0 = performance.now();
+    view = solveCycle(values);
+    record(view, { scene: "cycle", solve_ms: performance.now() - t0, total_ms: performance.now() - t0 });
+    $("timing").textContent = `cycle of ${view.summary.steps.length} load steps solved in ` +
+      `${(performance.now() - t0).toFixed(1)} ms (mesh ${view.mesh_file})`;
+  } catch (e) {
+    setError(`cycle: ${e.message || e}`);
+    cancelHistory();
+    return;
+  }
+  page.cycle = view;
+  const last = view.summary.steps.length - 1;
+  for (let k = 1; k <= last; k++) {
+    if (generation !== state.generation) return;
+    const shows = { kind: "cycle", scene: "cattaneo_mindlin", step: k,
+      text: `Mindlin–Deresiewicz cycle, step ${k} of ${last}: the top at δ = ${view.cycle_shear[k]} × 0.01 mm ` +
+        `(press ${values.press}, amplitude ${values.amp}); the mesh's shape is the last step's.` };
+    draw(view, values, shows, (ui) => drawCycleStep(view, k, ui, $("history-plot"), chart));
+    page.cycleStep = k;
+    await new Promise((r) => setTimeout(r, 150));
+  }
+  if (generation === state.generation) cancelHistory();
+}
+
 // ---------------------------------------------------------------------------------------------
 // Drawing the view: the scene draws through `ui`.
 
@@ -205,7 +244,8 @@ function clearFigures(message) {
 const fmt = (v) => (v === null || v === undefined ? "—" : typeof v !== "number" ? String(v) : Number.isInteger(v) ? String(v)
   : Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0) ? v.toExponential(4) : v.toPrecision(5));
 
-function draw(view, values, shows) {
+function draw(view, values, shows, custom = null) {
+  state.lastDraw = [view, values, shows, custom];
   page.shows = shows;
   const published = shows.kind === "history" ? shows.published : view.published;
   const ui = {
@@ -250,8 +290,13 @@ function draw(view, values, shows) {
     },
   };
   $("banner").hidden = true;
+  if (custom) { custom(ui); return; }
   SCENES[shows.scene].draw(view, ui, values);
   if (shows.scene === "flagship") drawHistory(values);
+  if (shows.scene === "cattaneo_mindlin") {
+    chart($("history-plot"), { series: [{ x: [], y: [], colour: "#6b4c9a", label: "Q(δ): run the cycle" }],
+      xlabel: "δ: sideways displacement of the roller's top, mm", ylabel: "Q, N/mm" });
+  }
 }
 
 function drawHistory(values) {
@@ -277,6 +322,9 @@ function showScene(name, values) {
     el.hidden = !el.dataset.for.split(" ").includes(name);
   });
   $("explain-body").innerHTML = EXPLAIN[name] || "";
+  $("history-caption").textContent = name === "flagship"
+    ? "Loading history: contact end l(w) and stick end b(w) on η = 1 − φ/π."
+    : "Mindlin–Deresiewicz cycle: the tangential force Q against the top's sideways displacement δ (the hysteresis loop).";
   $("banner").hidden = true;
   showValues();
   schedule();
@@ -362,13 +410,15 @@ function build() {
     schedule();
   });
   $("history").addEventListener("click", runHistory);
+  $("cycle").addEventListener("click", runCycle);
   $("reset").addEventListener("click", () => { $("url-notes").hidden = true; showScene(state.scene, defaults(state.scene)); });
   $("export-png").addEventListener("click", exportPng);
   $("export-csv").addEventListener("click", exportCsv);
   $("user-input").addEventListener("change", (e) => takeFiles(e.target.files));
   document.addEventListener("dragover", (e) => e.preventDefault());
   document.addEventListener("drop", (e) => { e.preventDefault(); takeFiles(e.dataTransfer.files); });
-  window.addEventListener("resize", () => { if (page.run === "idle" && state.view) schedule(); });
+  // A new window size redraws what is shown (the canvases follow their CSS size); nothing is solved.
+  window.addEventListener("resize", () => { if (state.lastDraw) draw(...state.lastDraw); });
 }
 
 // Switching tabs keeps the common controls (β, projector) and starts the scene at its defaults.

@@ -80,6 +80,11 @@ export const EXPLAIN = {
   <dt>a, p0</dt><dd>Hertz's half-width and peak pressure at the measured P</dd>
   <dt>c</dt><dd>the stick half-width: closed form c/a = √(1 − Q/(μP)); FE: stick length / contact length (≤ 1)</dd>
   <dt>q(x)</dt><dd>μ p0 [√(1 − x²/a²) − (c/a) √(1 − x²/c²)] (Cattaneo 1938, Mindlin 1949)</dd></dl>
+  <h3>The Mindlin–Deresiewicz cycle</h3><p>The button moves the top to +A, back to −A and up to +A again
+  (ten steps each way, the press held). After each reversal the shear must change by 2μp before a pair slips
+  the other way, so reverse slip (orange) grows in from both edges while the middle sticks, and Q(δ) traces a
+  hysteresis loop: by Masing's rule its unloading branch is the loading curve doubled and reflected, so
+  Q(−A) = −Q(+A) and the loop closes at +A. Its area is the energy friction dissipates per cycle.</p>
   <h3>Caveats</h3><ul><li>When Q reaches μP no pair sticks: the page says “full sliding”; moving further only adds slip.</li>
   <li>L0 places the stick ends to about one cell (a/4): c/a runs 0.03–0.09 below the closed form.</li></ul>`,
 

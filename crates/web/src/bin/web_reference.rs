@@ -57,9 +57,23 @@ fn hertz_cases() -> Vec<Value> {
 }
 
 /// The Cattaneo–Mindlin cases: the page's default (the scene's press, shear 0.3: Q/(μP) ≈ 0.5,
-/// where the browser test moves the slider to) and a lighter press sheared less.
+/// where the browser test moves the slider to), a lighter press sheared less, and a cycle.
 fn cattaneo_mindlin_cases() -> Vec<Value> {
-    vec![json!({"press": 1.0, "shear": 0.3, "level": "L0"}), json!({"press": 0.75, "shear": 0.18, "level": "L0"})]
+    vec![
+        json!({"press": 1.0, "shear": 0.3, "level": "L0"}),
+        json!({"press": 0.75, "shear": 0.18, "level": "L0"}),
+        // A Mindlin–Deresiewicz cycle as the page runs it (amplitude 0.3: down to −0.3, back up).
+        json!({"press": 1.0, "shear": 0.3, "level": "L0", "cycle": cycle_path(0.3)}),
+    ]
+}
+
+/// The page's Mindlin–Deresiewicz path after the first loading to `amplitude`: ten equal steps
+/// down to −amplitude and ten back up (the same rounding as `web/scenes_paper.js`).
+fn cycle_path(amplitude: f64) -> Vec<f64> {
+    let round = |v: f64| (v * 1e4).round() / 1e4;
+    let down = (1..=10).map(|k| round(amplitude - 2.0 * amplitude * f64::from(k) / 10.0));
+    let up = (1..=10).map(|k| round(-amplitude + 2.0 * amplitude * f64::from(k) / 10.0));
+    down.chain(up).collect()
 }
 
 /// The bundled generic scenes: each as the page opens it (its sliders at their defaults, the
