@@ -49,12 +49,13 @@ export function drawCycleStep(view, k, ui, loopCanvas, chart) {
       { x: xs, y: profile.pressure.map((p) => mu * p), colour: "#888", label: "+μp" },
       { x: xs, y: profile.pressure.map((p) => -mu * p), colour: "#bbb", label: "−μp" },
       { x: xs, y: pick((s) => s === "stick"), colour: "#1f77b4", label: "q, stick", points: true },
-      { x: xs, y: pick((s) => s === loading), colour: "#d62728", label: "q, slip", points: true },
-      { x: xs, y: pick((s) => s === reverse), colour: "#ff7f0e", label: "q, reverse slip", points: true },
+      { x: xs, y: pick((s) => s === loading), colour: "#d62728", label: "q, slip as first loaded", points: true },
+      { x: xs, y: pick((s) => s === reverse), colour: "#ff7f0e", label: "q, slip the other way", points: true },
     ],
     xlabel: "x / a", ylabel: "shear q, MPa", xrange: [-1.5, 1.5],
   }, `Mindlin–Deresiewicz cycle, step ${k} of ${steps.length - 1}: the shear q along the contact between ±μp; ` +
-    "after each reversal slip in the new direction (orange) grows in from both edges while the middle sticks.");
+    "after each reversal, slip in the new direction (orange on the way back, red on the way up again) grows in " +
+    "from both edges while the middle sticks.");
   const delta = view.cycle_shear.map((s) => s * SHEAR_MM);
   chart(loopCanvas, {
     series: [
@@ -69,7 +70,7 @@ export function drawCycleStep(view, k, ui, loopCanvas, chart) {
   ui.table([
     ["step of the cycle", "cycle_step", k], ["δ, mm", "delta", delta[k]], ["Q, N/mm", "Q", Q[k]],
     ["Q/(μP)", "ratio", Q[k] / (mu * P)], ["stick pairs", "stick", count("stick")],
-    ["slip pairs (loading direction)", "slip", count(loading)], ["reverse-slip pairs", "reverse", count(reverse)],
+    ["pairs slipping as first loaded", "slip", count(loading)], ["pairs slipping the other way", "reverse", count(reverse)],
     ["status", "status", view.summary.status],
   ]);
 }
