@@ -53,79 +53,82 @@ try {
 
   // --- state -----------------------------------------------------------------------------
   await section("history + tab switch", async () => {
-  // Before: the history kept running after a tab switch and drew the plate into the Hertz tab.
-  await open(page, "?eps=0.05&mu=0.3&load=0.3838");
-  await page.click("#history");
-  await historyStep(page, 2);
-  await page.click('[data-scene="hertz"]');
-  const afterSwitch = (await pageState(page)).history.length;
-  await sleep(1500);
-  s = await pageState(page);
-  check(s.shows.scene === "hertz" && s.run === "idle" && s.history.length === afterSwitch
-    && (await page.$('td[data-key="a"]')) !== null && (await page.$('td[data-key="l"]')) === null,
-  `a tab switch stops the history: Hertz shown, history stayed at ${afterSwitch} points, run ${s.run}`);
-
+    // Before: the history kept running after a tab switch and drew the plate into the Hertz tab.
+    await open(page, "?eps=0.05&mu=0.3&load=0.3838");
+    await page.click("#history");
+    await historyStep(page, 2);
+    await page.click('[data-scene="hertz"]');
+    const afterSwitch = (await pageState(page)).history.length;
+    await sleep(1500);
+    s = await pageState(page);
+    check(s.shows.scene === "hertz" && s.run === "idle" && s.history.length === afterSwitch
+      && (await page.$('td[data-key="a"]')) !== null && (await page.$('td[data-key="l"]')) === null,
+    `a tab switch stops the history: Hertz shown, history stayed at ${afterSwitch} points, run ${s.run}`);
   });
   await section("history clicked twice", async () => {
-  // Before: a second click started a second run and the two interleaved (l(w), b(w) zig-zag).
-  await open(page, "?eps=0.05&mu=0.3&load=0.3838");
-  await page.click("#history");
-  await historyStep(page, 1);
-  check((await page.$eval("#history", (b) => b.textContent)).startsWith("Stop"), "the history button reads \"Stop\" while running");
-  await page.click("#history");
-  await sleep(800);
-  s = await pageState(page);
-  const stopped = s.history.length;
-  check(s.run === "idle" && stopped < 10, `the second click stops the run (${stopped} points, run ${s.run})`);
-  await page.click("#history");
-  await page.waitForFunction(() => window.contact2dPage.run === "idle" && window.contact2dPage.history.length === 10,
-    { timeout: 60000 });
-  s = await pageState(page);
-  const ws = s.history.map((p) => p.w);
-  check(ws.every((w, i) => i === 0 || w > ws[i - 1]), `a complete history has 10 points in increasing w (${ws.join(", ")})`);
+    // Before: a second click started a second run and the two interleaved (l(w), b(w) zig-zag).
+    await open(page, "?eps=0.05&mu=0.3&load=0.3838");
+    await page.click("#history");
+    await historyStep(page, 1);
+    check((await page.$eval("#history", (b) => b.textContent)).startsWith("Stop"), "the history button reads \"Stop\" while running");
+    await page.click("#history");
+    await sleep(800);
+    s = await pageState(page);
+    const stopped = s.history.length;
+    check(s.run === "idle" && stopped < 10, `the second click stops the run (${stopped} points, run ${s.run})`);
+    await page.click("#history");
+    await page.waitForFunction(() => window.contact2dPage.run === "idle" && window.contact2dPage.history.length === 10,
+      { timeout: 60000 });
+    s = await pageState(page);
+    const ws = s.history.map((p) => p.w);
+    check(ws.every((w, i) => i === 0 || w > ws[i - 1]), `a complete history has 10 points in increasing w (${ws.join(", ")})`);
 
-  // Before: after a run the "published" column vanished and the table silently showed the
-  // 10-step solution.
-  const published = await page.$eval("#published-head", (th) => th.textContent);
-  const caption = await page.$eval("#table-caption", (p) => p.textContent);
-  const label = await page.$eval("#published-label", (p) => p.textContent);
-  check(published === "published" && caption.includes("step 10 of 10") && label.includes("load steps"),
-    `after a history the table says so ("${caption.slice(0, 60)}…") and keeps the published column with the load-step caveat`);
-
+    // Before: after a run the "published" column vanished and the table silently showed the
+    // 10-step solution.
+    const published = await page.$eval("#published-head", (th) => th.textContent);
+    const caption = await page.$eval("#table-caption", (p) => p.textContent);
+    const label = await page.$eval("#published-label", (p) => p.textContent);
+    check(published === "published" && caption.includes("step 10 of 10") && label.includes("load steps"),
+      `after a history the table says so ("${caption.slice(0, 60)}…") and keeps the published column with the load-step caveat`);
   });
   await section("control moved during a history", async () => {
-  // Before: moving a control during a run left the table showing the run's answer (ε = 0.05's
-  // l = 0.154 under a slider at ε = 0).
-  await page.click("#history");
-  await historyStep(page, 2);
-  await page.select("#eps", "0");
-  await sleep(1500);
-  const eps0 = nativeFlagship({ friction: 0.3, stiffness_ratio: 1, eps: 0, refinement: 16, load: 0.3838, variant: "hole_master" });
-  const l = Number((await cell(page, "l")).value);
-  s = await pageState(page);
-  check(s.run === "idle" && s.shows.kind === "solve" && close(l, eps0.summary.paper.l),
-    `a control moved during a history: the table shows ε = 0's l = ${l.toFixed(4)} (native ${eps0.summary.paper.l.toFixed(4)})`);
-
+    // Before: moving a control during a run left the table showing the run's answer (ε = 0.05's
+    // l = 0.154 under a slider at ε = 0).
+    await page.click("#history");
+    await historyStep(page, 2);
+    await page.select("#eps", "0");
+    await page.waitForFunction(() => window.contact2dPage.run === "idle" && window.contact2dPage.shows.kind === "solve",
+      { timeout: 30000 });
+    await sleep(1000); // a history still running would draw its next step within 120 ms
+    const eps0 = nativeFlagship({ friction: 0.3, stiffness_ratio: 1, eps: 0, refinement: 16, load: 0.3838, variant: "hole_master" });
+    const l = Number((await cell(page, "l")).value);
+    s = await pageState(page);
+    check(s.run === "idle" && s.shows.kind === "solve" && close(l, eps0.summary.paper.l),
+      `a control moved during a history: the table shows ε = 0's l = ${l.toFixed(4)} (native ${eps0.summary.paper.l.toFixed(4)})`);
   });
   await section("b at μ = 0", async () => {
-  // Before: at μ = 0 the table showed b = l although nothing sticks.
-  before = await updates(page);
-  await page.click('[data-preset="nogap_mu0"]');
-  await updated(page, before);
-  check((await cell(page, "b")).text === "—", "at μ = 0 the stick end b is shown as \"—\"");
-
+    // Before: at μ = 0 the table showed b = l although nothing sticks.
+    before = await updates(page);
+    await page.click('[data-preset="nogap_mu0"]');
+    await updated(page, before);
+    check((await cell(page, "b")).text === "—", "at μ = 0 the stick end b is shown as \"—\"");
+    // Before: Table 2 U(1) showed b = 0.1544 beside the paper's 0.1309 without a word.
+    before = await updates(page);
+    await page.click('[data-preset="gap_v1_mu03"]');
+    await updated(page, before);
+    const note = await page.$eval("#published-label", (p) => p.textContent);
+    check(note.includes("b depends on the load steps"), `Table 2 U(1): "${note.slice(-75)}"`);
   });
   await section("full sliding, c/a", async () => {
-  // Before: full sliding (Q = μP) was not announced; c/a read above 1 at zero shear.
-  await open(page, "?scene=cattaneo_mindlin&shear=0.9");
-  const banner = await page.$eval("#banner", (b) => (b.hidden ? "" : b.textContent));
-  check(banner.includes("Full sliding"), `Cattaneo–Mindlin past Q = μP: "${banner.slice(0, 50)}…"`);
-  for (const press of ["0.5", "1", "1.5"]) {
-    await open(page, `?scene=cattaneo_mindlin&shear=0&press=${press}`);
-    const ca = Number((await cell(page, "c_over_a")).value);
-    check(ca <= 1, `c/a = ${ca} ≤ 1 at zero shear, press ${press}`);
-  }
-
+    // Before: full sliding (Q = μP) was not announced; c/a read above 1 at zero shear.
+    await open(page, "?scene=cattaneo_mindlin&shear=0.9");
+    const banner = await page.$eval("#banner", (b) => (b.hidden ? "" : b.textContent));
+    check(banner.includes("Full sliding"), `Cattaneo–Mindlin past Q = μP: "${banner.slice(0, 50)}…"`);
+    for (const press of ["0.5", "1", "1.5"]) {
+      await open(page, `?scene=cattaneo_mindlin&shear=0&press=${press}`);
+      const ca = Number((await cell(page, "c_over_a")).value);
+      check(ca <= 1, `c/a = ${ca} ≤ 1 at zero shear, press ${press}`);
+    }
   });
   // Before: no cycle. The Mindlin–Deresiewicz cycle (+A → −A → +A) against Masing's rule
   // (Mindlin and Deresiewicz 1953; Johnson §7.3): Q(−A) = −Q(+A) to 1e-3 of Q* (exact for the
@@ -154,145 +157,144 @@ try {
   });
 
   await section("readability and layout", async () => {
-  // --- readable ------------------------------------------------------------------------------
-  const texts = async (id) => (await page.evaluate((i) => window.__canvasLog(i), id)) || { texts: [] };
-  const readable = async (what, minPx) => {
-    for (const id of ["profile", "history-plot"]) {
-      const log = await texts(id);
-      if (!log.texts.length) continue;
-      const smallest = Math.min(...log.texts.map((t) => t.css_px));
-      check(smallest >= minPx, `${what}: ${id} text ≥ ${minPx} CSS px (smallest ${smallest.toFixed(1)})`);
-      const clash = [];
-      log.texts.forEach((a, i) => log.texts.slice(i + 1).forEach((b) => { if (overlap(a.box, b.box)) clash.push(`${a.text}/${b.text}`); }));
-      check(clash.length === 0, `${what}: no two ${id} labels overlap${clash.length ? ": " + clash.join(", ") : ""}`);
+    // --- readable ------------------------------------------------------------------------------
+    const texts = async (id) => (await page.evaluate((i) => window.__canvasLog(i), id)) || { texts: [] };
+    const readable = async (what, minPx) => {
+      for (const id of ["profile", "history-plot"]) {
+        const log = await texts(id);
+        if (!log.texts.length) continue;
+        const smallest = Math.min(...log.texts.map((t) => t.css_px));
+        check(smallest >= minPx, `${what}: ${id} text ≥ ${minPx} CSS px (smallest ${smallest.toFixed(1)})`);
+        const clash = [];
+        log.texts.forEach((a, i) => log.texts.slice(i + 1).forEach((b) => { if (overlap(a.box, b.box)) clash.push(`${a.text}/${b.text}`); }));
+        check(clash.length === 0, `${what}: no two ${id} labels overlap${clash.length ? ": " + clash.join(", ") : ""}`);
+      }
+    };
+    for (const dpr of [1, 2]) {
+      await page.setViewport({ width: 1366, height: 768, deviceScaleFactor: dpr });
+      await open(page, "?eps=0.05&mu=0.3&load=0.3838");
+      await page.click("#history");
+      await page.waitForFunction(() => window.contact2dPage.run === "idle" && window.contact2dPage.history.length === 10,
+        { timeout: 60000 });
+      const c = await page.$eval("#profile", (e) => ({ w: e.width, cw: e.clientWidth }));
+      check(c.w === Math.round(c.cw * dpr), `devicePixelRatio ${dpr}: the chart's backing store is ${c.w} px for ${c.cw} CSS px`);
+      await readable(`1366×768 at ratio ${dpr}`, 14);
     }
-  };
-  for (const dpr of [1, 2]) {
-    await page.setViewport({ width: 1366, height: 768, deviceScaleFactor: dpr });
-    await open(page, "?eps=0.05&mu=0.3&load=0.3838");
-    await page.click("#history");
-    await page.waitForFunction(() => window.contact2dPage.run === "idle" && window.contact2dPage.history.length === 10,
-      { timeout: 60000 });
-    const c = await page.$eval("#profile", (e) => ({ w: e.width, cw: e.clientWidth }));
-    check(c.w === Math.round(c.cw * dpr), `devicePixelRatio ${dpr}: the chart's backing store is ${c.w} px for ${c.cw} CSS px`);
-    await readable(`1366×768 at ratio ${dpr}`, 14);
-  }
-  await page.setViewport({ width: 1366, height: 768, deviceScaleFactor: 1 });
-  const smallDom = await page.evaluate(() => [...document.querySelectorAll("body *")].filter((e) => {
-    const own = [...e.childNodes].some((n) => n.nodeType === 3 && n.textContent.trim());
-    return own && e.offsetParent !== null && parseFloat(getComputedStyle(e).fontSize) < 14;
-  }).map((e) => `${e.tagName}#${e.id}: ${getComputedStyle(e).fontSize}`));
-  check(smallDom.length === 0, `every visible text on the page ≥ 14 CSS px${smallDom.length ? ": " + smallDom.slice(0, 5).join(", ") : ""}`);
-  for (const scene of ["hertz", "cattaneo_mindlin", "pin_lug"]) {
-    await open(page, `?scene=${scene}`);
-    await readable(`1366×768 ${scene}`, 14);
-  }
-  await open(page, "?eps=0.05&mu=0.3&load=0.3838&projector=1");
-  await readable("projector mode", 20);
-  const box = (sel) => page.$eval(sel, (e) => { const r = e.getBoundingClientRect(); return { l: r.left, r: r.right, t: r.top, b: r.bottom }; });
-  let [mesh, controls] = [await box("#mesh"), await box("#controls")];
-  check(mesh.r <= controls.l + 1, "projector mode: the figures come first (left of the controls)");
-  await page.screenshot({ path: join(out, "projector_1366x768.png") });
-  for (const [w, h] of [[1024, 768], [1366, 768], [1093, 615]]) {
-    await page.setViewport({ width: w, height: h });
+    await page.setViewport({ width: 1366, height: 768, deviceScaleFactor: 1 });
+    const smallDom = await page.evaluate(() => [...document.querySelectorAll("body *")].filter((e) => {
+      const own = [...e.childNodes].some((n) => n.nodeType === 3 && n.textContent.trim());
+      return own && e.offsetParent !== null && parseFloat(getComputedStyle(e).fontSize) < 14;
+    }).map((e) => `${e.tagName}#${e.id}: ${getComputedStyle(e).fontSize}`));
+    check(smallDom.length === 0, `every visible text on the page ≥ 14 CSS px${smallDom.length ? ": " + smallDom.slice(0, 5).join(", ") : ""}`);
+    for (const scene of ["hertz", "cattaneo_mindlin", "pin_lug"]) {
+      await open(page, `?scene=${scene}`);
+      await readable(`1366×768 ${scene}`, 14);
+    }
+    await open(page, "?eps=0.05&mu=0.3&load=0.3838&projector=1");
+    await readable("projector mode", 20);
+    const box = (sel) => page.$eval(sel, (e) => { const r = e.getBoundingClientRect(); return { l: r.left, r: r.right, t: r.top, b: r.bottom }; });
+    let [mesh, controls] = [await box("#mesh"), await box("#controls")];
+    check(mesh.r <= controls.l + 1, "projector mode: the figures come first (left of the controls)");
+    await page.screenshot({ path: join(out, "projector_1366x768.png") });
+    for (const [w, h] of [[1024, 768], [1366, 768], [1093, 615]]) {
+      await page.setViewport({ width: w, height: h });
+      await open(page);
+      [mesh, controls] = [await box("#mesh"), await box("#controls")];
+      check(mesh.l >= controls.r - 1 && mesh.t < h / 2, `${w}×${h}: the mesh beside the controls (left ${mesh.l} ≥ ${controls.r}), top at ${mesh.t}`);
+      if (w === 1024) await page.screenshot({ path: join(out, "projector_1024x768.png") });
+    }
+    await page.setViewport({ width: 390, height: 844, deviceScaleFactor: 3, isMobile: true, hasTouch: true });
     await open(page);
     [mesh, controls] = [await box("#mesh"), await box("#controls")];
-    check(mesh.l >= controls.r - 1 && mesh.t < h / 2, `${w}×${h}: the mesh beside the controls (left ${mesh.l} ≥ ${controls.r}), top at ${mesh.t}`);
-    if (w === 1024) await page.screenshot({ path: join(out, "projector_1024x768.png") });
-  }
-  await page.setViewport({ width: 390, height: 844, deviceScaleFactor: 3, isMobile: true, hasTouch: true });
-  await open(page);
-  [mesh, controls] = [await box("#mesh"), await box("#controls")];
-  check(mesh.b <= controls.t && mesh.t < 844 / 2, `phone 390×844: the mesh first (top ${mesh.t.toFixed(0)}, controls from ${controls.t.toFixed(0)})`);
-  await page.screenshot({ path: join(out, "phone_390x844.png") });
-  await page.setViewport({ width: 1366, height: 768, deviceScaleFactor: 1 });
-  for (const q of ["?mag=3&eps=0.2&mu=0.3&load=1", "?mag=3&eps=0&mu=0&load=1&ratio=0.25", "?scene=pin_lug&mag=3"]) {
-    await open(page, q);
-    const log = await page.evaluate(() => window.__canvasLog("mesh"));
-    check(log.x0 >= 0 && log.y0 >= 0 && log.x1 <= log.width && log.y1 <= log.height,
-      `β = 3 (${q}): the deformed mesh lies inside its canvas (x ${log.x0.toFixed(0)}…${log.x1.toFixed(0)} of ${log.width}, ` +
-      `y ${log.y0.toFixed(0)}…${log.y1.toFixed(0)} of ${log.height})`);
-  }
+    check(mesh.b <= controls.t && mesh.t < 844 / 2, `phone 390×844: the mesh first (top ${mesh.t.toFixed(0)}, controls from ${controls.t.toFixed(0)})`);
+    await page.screenshot({ path: join(out, "phone_390x844.png") });
+    await page.setViewport({ width: 1366, height: 768, deviceScaleFactor: 1 });
+    for (const q of ["?mag=3&eps=0.2&mu=0.3&load=1", "?mag=3&eps=0&mu=0&load=1&ratio=0.25", "?scene=pin_lug&mag=3"]) {
+      await open(page, q);
+      const log = await page.evaluate(() => window.__canvasLog("mesh"));
+      check(log.x0 >= 0 && log.y0 >= 0 && log.x1 <= log.width && log.y1 <= log.height,
+        `β = 3 (${q}): the deformed mesh lies inside its canvas (x ${log.x0.toFixed(0)}…${log.x1.toFixed(0)} of ${log.width}, ` +
+        `y ${log.y0.toFixed(0)}…${log.y1.toFixed(0)} of ${log.height})`);
+    }
 
-  // --- shareable -----------------------------------------------------------------------------
+    // --- shareable -----------------------------------------------------------------------------
   });
   await section("URL, reset, export", async () => {
-  // Before: controls never reached the URL; ?scene=foo, ?N=64, ?mu=abc broke the page or were
-  // silently changed.
-  await open(page);
-  await page.focus("#mu");
-  before = await updates(page);
-  await page.keyboard.press("ArrowRight");
-  await updated(page, before);
-  await page.select("#eps", "0.05");
-  await page.waitForFunction(() => location.search.includes("eps=0.05"));
-  const search = await page.evaluate(() => location.search);
-  check(/mu=0.05/.test(search) && /eps=0.05/.test(search) && /load=1/.test(search) && /N=16/.test(search),
-    `the URL holds the controls (${search})`);
-  await open(page, search);
-  check((await page.$eval("#mu", (e) => e.value)) === "0.05" && (await page.$eval("#eps", (e) => e.value)) === "0.05",
-    "opening that URL restores μ and ε");
-  for (const [q, key] of [["?scene=foo", "scene=foo"], ["?N=64", "N=64"], ["?mu=abc", "mu=abc"], ["?mu=0.33", "mu=0.33"],
-    ["?scene=hertz&force=1e9", "force=1e9"], ["?bogus=1", "bogus"]]) {
-    await open(page, q);
-    const notes = await page.$eval("#url-notes", (p) => (p.hidden ? "" : p.textContent));
-    const solved = await page.evaluate(() => !window.contact2dPage.error && window.contact2dPage.updates >= 1);
-    check(notes.includes(key) && solved, `${q}: reported ("${notes.slice(0, 70)}…") and the page solved with defaults`);
-  }
-  await open(page, "?N=64");
-  check((await page.$eval("#refinement", (e) => e.value)) === "16", "?N=64 is replaced by the default N = 16");
-  await open(page, "?mu=0.4&eps=0.05&load=0.5");
-  before = await updates(page);
-  await page.click("#reset");
-  await updated(page, before);
-  check((await page.$eval("#mu", (e) => e.value)) === "0" && !(await page.evaluate(() => location.search)).includes("mu=0.4"),
-    "reset returns the scene's controls to their defaults (and the URL with them)");
-  const downloads = join(out, "downloads");
-  rmSync(downloads, { recursive: true, force: true });
-  mkdirSync(downloads, { recursive: true });
-  const cdp = await page.createCDPSession();
-  await cdp.send("Browser.setDownloadBehavior", { behavior: "allow", downloadPath: downloads });
-  await page.click("#export-csv");
-  await page.click("#export-png");
-  for (let i = 0; i < 50 && readdirSync(downloads).filter((f) => !f.endsWith(".crdownload")).length < 3; i++) await sleep(100);
-  const files = readdirSync(downloads);
-  const csv = files.find((f) => f.endsWith(".csv"));
-  const lCell = (await cell(page, "l")).value;
-  check(csv && readFileSync(join(downloads, csv), "utf8").includes(`"contact end l","${lCell}"`)
-    && files.some((f) => f.endsWith("_mesh.png")) && files.some((f) => f.endsWith("_profile.png")),
-  `export: ${files.join(", ")} (the CSV holds the table's exact l)`);
+    // Before: controls never reached the URL; ?scene=foo, ?N=64, ?mu=abc broke the page or were
+    // silently changed.
+    await open(page);
+    await page.focus("#mu");
+    before = await updates(page);
+    await page.keyboard.press("ArrowRight");
+    await updated(page, before);
+    await page.select("#eps", "0.05");
+    await page.waitForFunction(() => location.search.includes("eps=0.05"));
+    const search = await page.evaluate(() => location.search);
+    check(/mu=0.05/.test(search) && /eps=0.05/.test(search) && /load=1/.test(search) && /N=16/.test(search),
+      `the URL holds the controls (${search})`);
+    await open(page, search);
+    check((await page.$eval("#mu", (e) => e.value)) === "0.05" && (await page.$eval("#eps", (e) => e.value)) === "0.05",
+      "opening that URL restores μ and ε");
+    for (const [q, key] of [["?scene=foo", "scene=foo"], ["?N=64", "N=64"], ["?mu=abc", "mu=abc"], ["?mu=0.33", "mu=0.33"],
+      ["?scene=hertz&force=1e9", "force=1e9"], ["?bogus=1", "bogus"]]) {
+      await open(page, q);
+      const notes = await page.$eval("#url-notes", (p) => (p.hidden ? "" : p.textContent));
+      const solved = await page.evaluate(() => !window.contact2dPage.error && window.contact2dPage.updates >= 1);
+      check(notes.includes(key) && solved, `${q}: reported ("${notes.slice(0, 70)}…") and the page solved with defaults`);
+    }
+    await open(page, "?N=64");
+    check((await page.$eval("#refinement", (e) => e.value)) === "16", "?N=64 is replaced by the default N = 16");
+    await open(page, "?mu=0.4&eps=0.05&load=0.5");
+    before = await updates(page);
+    await page.click("#reset");
+    await updated(page, before);
+    check((await page.$eval("#mu", (e) => e.value)) === "0" && !(await page.evaluate(() => location.search)).includes("mu=0.4"),
+      "reset returns the scene's controls to their defaults (and the URL with them)");
+    const downloads = join(out, "downloads");
+    rmSync(downloads, { recursive: true, force: true });
+    mkdirSync(downloads, { recursive: true });
+    const cdp = await page.createCDPSession();
+    await cdp.send("Browser.setDownloadBehavior", { behavior: "allow", downloadPath: downloads });
+    await page.click("#export-csv");
+    await page.click("#export-png");
+    for (let i = 0; i < 50 && readdirSync(downloads).filter((f) => !f.endsWith(".crdownload")).length < 3; i++) await sleep(100);
+    const files = readdirSync(downloads);
+    const csv = files.find((f) => f.endsWith(".csv"));
+    const lCell = (await cell(page, "l")).value;
+    check(csv && readFileSync(join(downloads, csv), "utf8").includes(`"contact end l","${lCell}"`)
+      && files.some((f) => f.endsWith("_mesh.png")) && files.some((f) => f.endsWith("_profile.png")),
+    `export: ${files.join(", ")} (the CSV holds the table's exact l)`);
   });
   await section("file://", async () => {
-  // Before: from file:// the page said "loading the solver…" forever.
-  const local = await newPage(browser, []);
-  await local.goto(pathToFileURL(join(process.env.PAGE_DIR || web, "index.html")).href, { waitUntil: "load" });
-  const warning = await local.$eval("#file-warning", (p) => (p.hidden ? "" : p.textContent));
-  check(warning.includes("python3 -m http.server"), "opened from file:// the page says how to serve it");
-  await local.close();
+    // Before: from file:// the page said "loading the solver…" forever.
+    const local = await newPage(browser, []);
+    await local.goto(pathToFileURL(join(process.env.PAGE_DIR || web, "index.html")).href, { waitUntil: "load" });
+    const warning = await local.$eval("#file-warning", (p) => (p.hidden ? "" : p.textContent));
+    check(warning.includes("python3 -m http.server"), "opened from file:// the page says how to serve it");
+    await local.close();
 
-  // --- a user's own scene ----------------------------------------------------------------------
+    // --- a user's own scene ----------------------------------------------------------------------
   });
   await section("a user's scene", async () => {
-  // Before: no way to solve a scene of one's own. The two blocks' scene and mesh chosen as files:
-  // once the whole joint slips, Coulomb gives Στ = μ Σλ = 0.3 × 1000 (the press).
-  await open(page, "?scene=user");
-  const input = await page.$("#user-input");
-  before = await updates(page);
-  await input.uploadFile(join(web, "../scenes/generic/two_blocks_press_slide.toml"), join(web, "../meshes/generic/two_blocks.msh"));
-  await updated(page, before);
-  const tangential = Math.abs(Number((await cell(page, "tangential_force")).value));
-  const normal = Number((await cell(page, "normal_force")).value);
-  check(close(normal, 1000, 1e-8) && close(tangential, 300, 1e-8),
-    `a user's scene: Σλ = ${normal}, Στ = ${tangential} = μ P (to 1e-8: a floating block, see wasm_matches_native.mjs)`);
-  const bad = join(out, "bad_scene.toml");
-  writeFileSync(bad, "name = \"bad\"\nmesh = \"x.msh\"\nplane = \"sideways\"\n");
-  before = await updates(page);
-  await input.uploadFile(bad, join(web, "../meshes/generic/two_blocks.msh"));
-  await updated(page, before);
-  const message = await page.$eval("#error", (p) => (p.hidden ? "" : p.textContent));
-  check(message.includes("bad_scene.toml") && message.includes("sideways"), `a bad scene's message names file and value: "${message.slice(0, 90)}…"`);
-  if (existsSync(bad)) rmSync(bad);
-
+    // Before: no way to solve a scene of one's own. The two blocks' scene and mesh chosen as files:
+    // once the whole joint slips, Coulomb gives Στ = μ Σλ = 0.3 × 1000 (the press).
+    await open(page, "?scene=user");
+    const input = await page.$("#user-input");
+    before = await updates(page);
+    await input.uploadFile(join(web, "../scenes/generic/two_blocks_press_slide.toml"), join(web, "../meshes/generic/two_blocks.msh"));
+    await updated(page, before);
+    const tangential = Math.abs(Number((await cell(page, "tangential_force")).value));
+    const normal = Number((await cell(page, "normal_force")).value);
+    check(close(normal, 1000, 1e-8) && close(tangential, 300, 1e-8),
+      `a user's scene: Σλ = ${normal}, Στ = ${tangential} = μ P (to 1e-8: a floating block, see wasm_matches_native.mjs)`);
+    const bad = join(out, "bad_scene.toml");
+    writeFileSync(bad, "name = \"bad\"\nmesh = \"x.msh\"\nplane = \"sideways\"\n");
+    before = await updates(page);
+    await input.uploadFile(bad, join(web, "../meshes/generic/two_blocks.msh"));
+    await updated(page, before);
+    const message = await page.$eval("#error", (p) => (p.hidden ? "" : p.textContent));
+    check(message.includes("bad_scene.toml") && message.includes("sideways"), `a bad scene's message names file and value: "${message.slice(0, 90)}…"`);
+    if (existsSync(bad)) rmSync(bad);
   });
   check(errors.length === 0, `no console or page error${errors.length ? ": " + errors.join("; ") : ""}`);
 } finally {
