@@ -6,7 +6,9 @@
 // lines are sharp on high-density screens. FONT_PX is the chart text size (≥ 14 CSS px; larger
 // in projector mode).
 
-export const COLOURS = { stick: "#1f77b4", "slip+": "#d62728", "slip-": "#d62728", contact: "#2ca02c", free: "#969696" };
+// Slip in the two tangential directions in two colours: after a reversal (the Mindlin–Deresiewicz
+// cycle) the slip the other way is seen growing from the edges.
+export const COLOURS = { stick: "#1f77b4", "slip+": "#d62728", "slip-": "#ff7f0e", contact: "#2ca02c", free: "#969696" };
 
 let fontPx = 16;
 /** Sets the chart text size in CSS px (16 normally, 22 in projector mode). */

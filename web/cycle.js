@@ -4,6 +4,7 @@
 // the contact (reverse slip growing in from the edges after each reversal), the shear beside
 // ±μp, and the Q–δ hysteresis loop drawn up to the current step.
 import { solve_cattaneo_mindlin_json } from "./pkg/contact2d_web.js";
+import { COLOURS } from "./chart.js";
 
 export const CYCLE_STEPS = 10;
 const SHEAR_MM = 0.01;
@@ -49,12 +50,12 @@ export function drawCycleStep(view, k, ui, loopCanvas, chart) {
       { x: xs, y: profile.pressure.map((p) => mu * p), colour: "#888", label: "+μp" },
       { x: xs, y: profile.pressure.map((p) => -mu * p), colour: "#bbb", label: "−μp" },
       { x: xs, y: pick((s) => s === "stick"), colour: "#1f77b4", label: "q, stick", points: true },
-      { x: xs, y: pick((s) => s === loading), colour: "#d62728", label: "q, slip as first loaded", points: true },
-      { x: xs, y: pick((s) => s === reverse), colour: "#ff7f0e", label: "q, slip the other way", points: true },
+      { x: xs, y: pick((s) => s === loading), colour: COLOURS[loading], label: "q, slip as first loaded", points: true },
+      { x: xs, y: pick((s) => s === reverse), colour: COLOURS[reverse], label: "q, slip the other way", points: true },
     ],
     xlabel: "x / a", ylabel: "shear q, MPa", xrange: [-1.5, 1.5],
   }, `Mindlin–Deresiewicz cycle, step ${k} of ${steps.length - 1}: the shear q along the contact between ±μp; ` +
-    "after each reversal, slip in the new direction (orange on the way back, red on the way up again) grows in " +
+    "after each reversal, slip in the new direction grows in " +
     "from both edges while the middle sticks.");
   const delta = view.cycle_shear.map((s) => s * SHEAR_MM);
   chart(loopCanvas, {

@@ -6,7 +6,8 @@ const COULOMB = `<h3>Coulomb's law at each pair</h3>
 Where the bodies touch, <b>|q| ≤ μ p</b>:</p>
 <ul>
 <li><span class="key stick">stick</span>: |q| &lt; μ p, no relative sliding;</li>
-<li><span class="key slip">slip</span>: |q| = μ p, the surfaces slide, q opposes the sliding;</li>
+<li><span class="key slip">slip +</span> <span class="key slipm">slip −</span>: |q| = μ p, the surfaces slide
+(in the + or − tangential direction of the pair), q opposes the sliding;</li>
 <li><span class="key free">free</span> (separation): a gap is open, p = q = 0;</li>
 <li><span class="key contact">contact</span>: touching without friction (μ = 0): q = 0, nothing can stick.</li>
 </ul>`;
@@ -21,6 +22,13 @@ const HEAD = `<defs><marker id="head" markerWidth="8" markerHeight="8" refX="6" 
 const GROUND = (x, y, w) => `<line x1="${x}" y1="${y}" x2="${x + w}" y2="${y}" stroke="#000" stroke-width="2"/>` +
   Array.from({ length: Math.floor(w / 12) }, (_, i) =>
     `<line x1="${x + 12 * i}" y1="${y}" x2="${x + 12 * i - 8}" y2="${y + 8}" stroke="#000"/>`).join("");
+
+const GENERIC_SYMBOLS = `<h3>Symbols</h3><dl>
+  <dt>p, q</dt><dd>the contact pressure and shear (tangential traction) along the interface's master curve, MPa</dd>
+  <dt>s</dt><dd>arc length along the master curve, mm</dd>
+  <dt>Σλ, Στ</dt><dd>the interface's total normal and tangential force, N per mm of thickness</dd>
+  <dt>contact length, stick length</dt><dd>the length of the master curve in contact, and of it the length that sticks</dd>
+  <dt>β</dt><dd>the drawing's displacement magnification (the drawing only)</dd></dl>`;
 
 export const EXPLAIN = {
   flagship: `${sketch(`${HEAD}<rect x="20" y="20" width="270" height="110" fill="#eee" stroke="#555"/>
@@ -95,8 +103,7 @@ export const EXPLAIN = {
   (E = 70 GPa, ν = 0.33): radial clearance 0.1 mm, plane stress, half model, 4 load steps
   (scenes/generic/pin_lug.toml on the coarser mesh pin_lug_L1.msh). The pin is held only by the contact: it
   crosses the clearance, then bears on the hole.</p>${COULOMB}
-  <h3>Symbols</h3><dl><dt>F</dt><dd>force on the half model's pin, N per mm of thickness</dd>
-  <dt>s</dt><dd>arc length along the pin's contact arc</dd><dt>Σλ, Στ</dt><dd>the interface's normal and tangential force</dd></dl>
+  ${GENERIC_SYMBOLS}<dl><dt>F</dt><dd>force on the half model's pin, N per mm of thickness</dd></dl>
   <h3>Caveats</h3><ul><li>The stick zone depends on the 4 load steps (friction is path-dependent).</li></ul>`,
 
   interference_fit: `${sketch(`<circle cx="160" cy="150" r="130" fill="#eee" stroke="#555"/>
@@ -105,7 +112,8 @@ export const EXPLAIN = {
   <h3>The set-up</h3><p>A solid disk a = 500 mm shrunk into a ring b = 1000 mm of the same steel (E = 200 GPa,
   ν = 0.3), radial interference δ (a negative gap), plane stress, quarter model. Lamé's closed form:
   p = E δ (b² − a²)/(2 a b²) (100 MPa at δ = 0.6667 mm).</p>${COULOMB}
-  <h3>Symbols</h3><dl><dt>δ</dt><dd>radial interference, mm</dd><dt>p</dt><dd>the fit pressure, uniform along the bore</dd></dl>
+  ${GENERIC_SYMBOLS}<dl><dt>δ</dt><dd>radial interference, mm (the contact's gap is −δ)</dd>
+  <dt>a, b</dt><dd>the disk's radius and the ring's outer radius</dd></dl>
   <h3>Caveats</h3><ul><li>Friction hardly matters here: the fit is axisymmetric, there is almost no sliding.</li></ul>`,
 
   incline_push: `${sketch(`${HEAD}<polygon points="20,140 300,140 300,112" fill="#ddd" stroke="#000"/>
@@ -114,7 +122,8 @@ export const EXPLAIN = {
   <h3>The set-up</h3><p>A rubber-like block (40 × 10 mm, E = 10 MPa, ν = 0.3, plane strain) under its weight G
   rests on a rigid incline tan α = 0.1 and is pushed horizontally by F. Two load steps: the weight, then the
   push. Statics with Coulomb: the block slides up when F/G ≥ (tan α + μ)/(1 − μ tan α) (0.4124 at μ = 0.3).</p>
-  ${COULOMB}<h3>Caveats</h3><ul><li>Past the threshold no equilibrium exists: the solve cannot converge — that is
+  ${COULOMB}${GENERIC_SYMBOLS}<dl><dt>F/G</dt><dd>the push over the block's weight</dd>
+  <dt>α</dt><dd>the incline's angle, tan α = 0.1</dd></dl><h3>Caveats</h3><ul><li>Past the threshold no equilibrium exists: the solve cannot converge — that is
   the physics, and the page says so.</li><li>The scene file climbs in 9 steps; the page's 2 steps give the
   same answer while the push grows monotonically, up to the path-dependence of partial slip.</li></ul>`,
 
@@ -123,7 +132,8 @@ export const EXPLAIN = {
     ${arrow(222, 45, 262, 45)}`, "A block pressed on another, then slid")}
   <h3>The set-up</h3><p>Two steel blocks (E = 200 GPa, ν = 0.3, plane strain): the upper one is pressed with
   P = 1000 N/mm, then its top is moved sideways while the force is held. Once the whole interface slips the
-  tangential force is μ P (300 N/mm at μ = 0.3).</p>${COULOMB}
+  tangential force is μ P (300 N/mm at μ = 0.3).</p>${COULOMB}${GENERIC_SYMBOLS}<dl>
+  <dt>P</dt><dd>the press, 1000 N per mm of thickness</dd><dt>slide</dt><dd>the top's sideways displacement, in units of 0.01 mm</dd></dl>
   <h3>Caveats</h3><ul><li>The upper block is held in x2 only by the contact (a floating body).</li></ul>`,
 
   user: `<h3>Your own scene</h3><p>Choose or drop a generic scene file (.toml, as <code>contact2d run</code>
@@ -131,5 +141,5 @@ export const EXPLAIN = {
   leaves the machine. The scene's <code>mesh</code> key is replaced by the file you give. The CLI's limits hold:
   a scene of at most 1 MiB of UTF-8, a mesh of at most 1 GiB (a browser will run out of memory long before), and
   errors carry the CLI's messages. A large mesh takes as long as it takes: the page stays busy until it is solved.</p>
-  ${COULOMB}`,
+  ${COULOMB}${GENERIC_SYMBOLS}`,
 };
