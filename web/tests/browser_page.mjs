@@ -295,6 +295,16 @@ try {
     const message = await page.$eval("#error", (p) => (p.hidden ? "" : p.textContent));
     check(message.includes("bad_scene.toml") && message.includes("sideways"), `a bad scene's message names file and value: "${message.slice(0, 90)}…"`);
     if (existsSync(bad)) rmSync(bad);
+    // The CLI's limit on a scene file (1 MiB) and its message.
+    const big = join(out, "big_scene.toml");
+    writeFileSync(big, "#".repeat((1 << 20) + 1));
+    before = await updates(page);
+    await input.uploadFile(big, join(web, "../meshes/generic/two_blocks.msh"));
+    await updated(page, before);
+    const tooBig = await page.$eval("#error", (p) => (p.hidden ? "" : p.textContent));
+    check(tooBig.includes("big_scene.toml") && tooBig.includes("1048577 bytes exceed the limit of 1048576 bytes"),
+      `a scene over the CLI's 1 MiB: "${tooBig.slice(0, 100)}"`);
+    rmSync(big);
   });
   check(errors.length === 0, `no console or page error${errors.length ? ": " + errors.join("; ") : ""}`);
 } finally {
