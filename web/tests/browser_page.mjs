@@ -156,6 +156,18 @@ try {
     await page.screenshot({ path: join(out, "cycle.png"), fullPage: true });
   });
 
+  // Before: no explanation. Every tab's panel names Coulomb's law and defines its symbols; every
+  // scene's panel has a sketch.
+  await section("explanation panels", async () => {
+    await open(page);
+    for (const scene of await page.$$eval("#scenes button", (bs) => bs.map((b) => b.dataset.scene))) {
+      await page.click(`[data-scene="${scene}"]`);
+      const panel = await page.$eval("#explain-body", (d) => ({ text: d.textContent, svg: d.querySelectorAll("svg").length }));
+      check(panel.text.includes("|q| ≤ μ p") && panel.text.includes("Symbols") && (scene === "user" || panel.svg === 1),
+        `${scene}: the panel has Coulomb's law, the symbols${scene === "user" ? "" : " and a sketch"}`);
+    }
+  });
+
   await section("readability and layout", async () => {
     // --- readable ------------------------------------------------------------------------------
     const texts = async (id) => (await page.evaluate((i) => window.__canvasLog(i), id)) || { texts: [] };
