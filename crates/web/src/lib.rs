@@ -16,6 +16,10 @@
 //! solve_cattaneo_mindlin({"press": 1, "shear": 0.293, "level": "L0"})
 //!   → {summary, measured {P, Q, Q/(μP), a, c}, closed_form {a, p0, c, x, pressure, shear},
 //!      pairs, mesh}
+//! solve_generic({"scene": "pin_lug", "overrides": ["contact.bore.friction=0.3"]})
+//!   → {scene, description, mesh_file, summary (with every interface's profile), pairs, mesh}
+//! solve_user_scene(scene name, scene bytes, mesh name, mesh bytes, ["--set" strings])
+//!   → the same view, for a scene and mesh dropped on the page (the CLI's limits and messages)
 //! ```
 //! The scenes are the facade's own ([`contact2d::run::solve_scene_on_mesh`],
 //! [`contact2d::generic::solve_generic_on_mesh`]) on meshes compiled into the module
@@ -31,11 +35,13 @@ use wasm_bindgen::prelude::*;
 pub mod bundled;
 pub mod cattaneo_mindlin;
 pub mod flagship;
+pub mod generic_scene;
 pub mod hertz;
 pub mod view;
 
 pub use cattaneo_mindlin::{CattaneoMindlinParams, CattaneoMindlinView, solve_cattaneo_mindlin};
 pub use flagship::{FlagshipParams, FlagshipView, solve_flagship};
+pub use generic_scene::{GenericParams, GenericView, solve_bundled_generic, solve_user_scene};
 pub use hertz::{HertzParams, HertzView, solve_hertz};
 
 /// Errors of the page's module.
@@ -93,6 +99,59 @@ pub fn cattaneo_mindlin_json(params: &str) -> Result<String, WebError> {
     Ok(serde_json::to_string(&solve_cattaneo_mindlin(&params)?)?)
 }
 
+/// Solves a bundled generic scene for the JSON [`GenericParams`] and returns the JSON
+/// [`GenericView`].
+///
+/// # Errors
+/// [`WebError`] for bad parameters or a failed solve.
+pub fn generic_json(params: &str) -> Result<String, WebError> {
+    let params: GenericParams = serde_json::from_str(params)?;
+    Ok(serde_json::to_string(&solve_bundled_generic(&params)?)?)
+}
+
+/// Solves a user's scene (file names and bytes as dropped on the page; `overrides` a JSON array
+/// of `--set` strings) and returns the JSON [`GenericView`].
+///
+/// # Errors
+/// [`WebError`] for input the CLI would refuse or a failed solve.
+pub fn user_scene_json(
+    scene_name: &str,
+    scene_bytes: &[u8],
+    mesh_name: &str,
+    mesh_bytes: &[u8],
+    overrides: &str,
+) -> Result<String, WebError> {
+    let overrides: Vec<String> = serde_json::from_str(overrides)?;
+    let view = solve_user_scene(scene_name, scene_bytes, mesh_name, mesh_bytes, &overrides)?;
+    Ok(serde_json::to_string(&view)?)
+}
+
+/// The page's entry point for the bundled generic scenes: [`generic_json`] with the error as a
+/// JavaScript `Error`.
+///
+/// # Errors
+/// The [`WebError`]'s message.
+#[wasm_bindgen]
+pub fn solve_generic_json(params: &str) -> Result<String, JsError> {
+    generic_json(params).map_err(|e| JsError::new(&e.to_string()))
+}
+
+/// The page's entry point for a user's scene: [`user_scene_json`] with the error as a
+/// JavaScript `Error`.
+///
+/// # Errors
+/// The [`WebError`]'s message.
+#[wasm_bindgen]
+pub fn solve_user_scene_json(
+    scene_name: &str,
+    scene_bytes: &[u8],
+    mesh_name: &str,
+    mesh_bytes: &[u8],
+    overrides: &str,
+) -> Result<String, JsError> {
+    user_scene_json(scene_name, scene_bytes, mesh_name, mesh_bytes, overrides).map_err(|e| JsError::new(&e.to_string()))
+}
+
 /// The page's entry point for the flagship: [`flagship_json`] with the error as a JavaScript
 /// `Error`.
 ///
@@ -125,7 +184,7 @@ pub fn solve_cattaneo_mindlin_json(params: &str) -> Result<String, JsError> {
 
 /// The bundled meshes and the page's fixed choices, as JSON: `{"flagship_eps": [...],
 /// "flagship_refinements": [...], "hertz_levels": [...], "cattaneo_mindlin_levels": [...],
-/// "clearance_per_eps": ω}`.
+/// "clearance_per_eps": ω, "generic": [{name, mesh_file}], "max_scene_bytes", "max_mesh_bytes"}`.
 #[wasm_bindgen]
 pub fn bundled_json() -> String {
     serde_json::json!({
@@ -134,6 +193,11 @@ pub fn bundled_json() -> String {
         "hertz_levels": bundled::HERTZ_LEVELS,
         "cattaneo_mindlin_levels": bundled::CATTANEO_MINDLIN_LEVELS,
         "clearance_per_eps": flagship::CLEARANCE_PER_EPS,
+        "generic": generic_scene::BUNDLED_GENERIC.iter().map(|b| serde_json::json!({
+            "name": b.name, "mesh_file": b.mesh_file,
+        })).collect::<Vec<_>>(),
+        "max_scene_bytes": contact2d::input_file::MAX_SCENE_BYTES,
+        "max_mesh_bytes": contact2d::input_file::MAX_MESH_BYTES,
     })
     .to_string()
 }

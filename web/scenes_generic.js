@@ -1,0 +1,168 @@
+// The bundled generic scenes (scenes/generic/*.toml) and a user's own scene, all through one
+// call: solve_generic_json({scene, overrides}) or solve_user_scene_json(files, overrides). The
+// sliders only write `--set` overrides, exactly as `contact2d run --set` takes them; the page has
+// no solve path of its own for any of these scenes. Closed forms shown beside the numbers come
+// from each scene file's own comment (Lamé, the incline's Coulomb threshold, μP).
+import { solve_generic_json, solve_user_scene_json } from "./pkg/contact2d_web.js";
+
+const num = (v) => String(+Number(v).toFixed(6));
+
+/** The request for a bundled generic scene. */
+export const genericParams = (scene, overrides) => ({ scene, overrides });
+
+// One interface's profile along its master curve: pressure and shear against arc length.
+function drawInterface(view, ui, name, caption) {
+  const c = view.summary.contacts[name];
+  const p = c.profile;
+  const stickX = [], slipX = [];
+  p.state.forEach((st, i) => { (st === "stick" ? stickX : st.startsWith("slip") ? slipX : []).push(p.s[i]); });
+  ui.chart({
+    series: [
+      { x: p.s, y: p.pressure, colour: "#d62728", label: "pressure p" },
+      { x: p.s, y: p.shear, colour: "#1f77b4", label: "shear q" },
+    ],
+    markers: [],
+    xlabel: `arc length s along ${name}'s master curve, mm`, ylabel: "traction, MPa",
+  }, caption);
+  return c;
+}
+
+function rows(view, name, extra = []) {
+  const s = view.summary, c = s.contacts[name];
+  return [
+    ...extra,
+    ["contact length, mm", "contact_length", c.contact_length],
+    // Without friction on the interface nothing sticks: no stick length.
+    ["stick length, mm", "stick_length", view.pairs.state.includes("contact") ? null : c.stick_length],
+    ["normal force Σλ, N/mm", "normal_force", c.normal_force],
+    ["tangential force Στ, N/mm", "tangential_force", c.tangential_force],
+    ["largest pressure, MPa", "max_pressure", c.max_pressure],
+    ["status", "status", s.status], ["load steps", "steps", s.steps.length], ["pairs", "pairs", s.pairs],
+  ];
+}
+
+const frictionSlider = (value) => ({ key: "mu", id: "g-mu", label: "friction μ", kind: "range", min: 0, max: 0.6,
+  step: 0.05, value, show: (v) => Number(v).toFixed(2) });
+
+const pinLug = {
+  title: "Pin in a lug",
+  controls: [
+    frictionSlider(0.2),
+    { key: "force", id: "g-force", label: "pin force on the half model, N/mm", kind: "range", min: 250, max: 2000,
+      step: 250, value: 1000, show: (v) => `${Number(v)} (whole pin ${2 * Number(v)})` },
+  ],
+  overrides: (v) => [`contact.bore.friction=${num(v.mu)}`, `load.pin_back.force=[${num(v.force)}, 0]`],
+  describe: (v) => `μ = ${num(v.mu)}, F = ${num(v.force)} N/mm on the half model, 4 load steps, mesh pin_lug_L1`,
+  draw(view, ui, v) {
+    ui.mesh(view, null);
+    drawInterface(view, ui, "bore", "Along the pin's contact arc: pressure and shear (the pin crosses the 0.1 mm " +
+      "clearance, then bears on the side of the lug's end).");
+    ui.table(rows(view, "bore", [["pin force (half model), N/mm", "force", Number(v.force)]]));
+  },
+};
+
+// Lamé: p = E δ (b² − a²) / (2 a b²) for a disk a = 500 mm in a ring b = 1000 mm of one material.
+const lame = (delta) => 2e5 * delta * (1000 ** 2 - 500 ** 2) / (2 * 500 * 1000 ** 2);
+
+const interferenceFit = {
+  title: "Interference fit",
+  controls: [
+    { key: "delta", id: "g-delta", label: "radial interference δ, mm", kind: "range", min: 0.05, max: 1.2, step: 0.05,
+      value: 0.65, show: (v) => Number(v).toFixed(2) },
+    { ...frictionSlider(0), max: 0.3 },
+  ],
+  overrides: (v) => [`contact.fit.gap=${num(-v.delta)}`, `contact.fit.friction=${num(v.mu)}`],
+  describe: (v) => `δ = ${num(v.delta)} mm, μ = ${num(v.mu)}, one load step`,
+  draw(view, ui, v) {
+    ui.mesh(view, null);
+    drawInterface(view, ui, "fit", "Along the bore: the contact pressure (uniform in Lamé's solution) and shear.");
+    ui.table(rows(view, "fit", [["Lamé pressure E δ (b² − a²)/(2 a b²), MPa", "p_lame", lame(Number(v.delta))]]));
+  },
+};
+
+// The incline's threshold (rigid-body statics with Coulomb): F/G = (tan α + μ)/(1 − μ tan α).
+const threshold = (mu) => (0.1 + mu) / (1 - mu * 0.1);
+
+const inclinePush = {
+  title: "Block on an incline",
+  controls: [
+    frictionSlider(0.3),
+    { key: "push", id: "g-push", label: "push F/G (horizontal force over weight)", kind: "range", min: 0, max: 0.7,
+      step: 0.01, value: 0.3, show: (v) => Number(v).toFixed(2) },
+  ],
+  overrides: (v) => [`contact.incline.friction=${num(v.mu)}`,
+    `loading.schedule=[{weight = 1}, {weight = 1, push = ${num(v.push)}}]`],
+  describe: (v) => `μ = ${num(v.mu)}, F/G = ${num(v.push)}: the weight, then the push (two load steps)`,
+  draw(view, ui, v) {
+    ui.mesh(view, null);
+    drawInterface(view, ui, "incline", "Along the block's base: pressure and shear (the stick zone shrinks as F grows).");
+    const limit = threshold(Number(v.mu));
+    ui.banner(Number(v.push) >= limit
+      ? `F/G = ${num(v.push)} is at or past the sliding threshold (tan α + μ)/(1 − μ tan α) = ${limit.toFixed(4)}: ` +
+        "no equilibrium exists, the block slides up the slope (a status other than converged is the expected answer)."
+      : null);
+    ui.table(rows(view, "incline", [["sliding threshold F/G (statics)", "threshold", limit]]));
+  },
+};
+
+const twoBlocks = {
+  title: "Two blocks: press, then slide",
+  controls: [
+    frictionSlider(0.3),
+    { key: "slide", id: "g-slide", label: "slide of the top, × 0.01 mm", kind: "range", min: 0, max: 1.5, step: 0.05,
+      value: 1, show: (v) => Number(v).toFixed(2) },
+  ],
+  overrides: (v) => [`contact.joint.friction=${num(v.mu)}`,
+    `loading.schedule=[{press = 1}, {press = 1, slide = ${num(v.slide)}}]`],
+  describe: (v) => `press 1000 N/mm, then slide ${num(v.slide)} × 0.01 mm with μ = ${num(v.mu)} (two load steps)`,
+  draw(view, ui, v) {
+    ui.mesh(view, null);
+    const c = drawInterface(view, ui, "joint", "Along the joint: pressure and shear.");
+    const slipping = view.pairs.state.every((st) => st === "free" || st.startsWith("slip"));
+    ui.banner(slipping && Number(v.mu) > 0 && Number(v.slide) > 0
+      ? `Full sliding: every pair slips and Στ = μ Σλ (${Math.abs(c.tangential_force).toPrecision(5)} = ` +
+        `${num(v.mu)} × ${c.normal_force.toPrecision(5)}).` : null);
+    ui.table(rows(view, "joint", [["μ P (full sliding), N/mm", "mu_p", Number(v.mu) * 1000]]));
+  },
+};
+
+/** A user's scene: the files chosen or dropped on the page, solved with the CLI's limits. */
+const userScene = {
+  title: "Your scene (.toml + .msh)",
+  controls: [],
+  user: true,
+  describe: () => "your scene as written in its file",
+  draw(view, ui) {
+    ui.mesh(view, null);
+    const names = Object.keys(view.summary.contacts);
+    if (names.length) drawInterface(view, ui, names[0], `Along interface ${names[0]}: pressure and shear.`);
+    ui.table(names.length ? rows(view, names[0]) : [["status", "status", view.summary.status]]);
+  },
+};
+
+export const GENERIC_SCENES = {
+  pin_lug: pinLug, interference_fit: interferenceFit, incline_push: inclinePush,
+  two_blocks_press_slide: twoBlocks, user: userScene,
+};
+
+for (const [name, scene] of Object.entries(GENERIC_SCENES)) {
+  // Element ids unique across scenes (the friction slider's spec is shared).
+  scene.controls = scene.controls.map((c) => ({ ...c, id: `${name}-${c.key}` }));
+  if (scene.user) continue;
+  scene.solve = (v) => JSON.parse(solve_generic_json(JSON.stringify(genericParams(name, scene.overrides(v)))));
+}
+
+/** Solves the user's files ({scene: File, mesh: File} read as bytes). */
+export async function readUserFiles(files) {
+  const scene = files.find((f) => f.name.toLowerCase().endsWith(".toml"));
+  const mesh = files.find((f) => f.name.toLowerCase().endsWith(".msh"));
+  if (!scene || !mesh) throw new Error("choose (or drop) one scene .toml and its .msh together");
+  return {
+    sceneName: scene.name, sceneBytes: new Uint8Array(await scene.arrayBuffer()),
+    meshName: mesh.name, meshBytes: new Uint8Array(await mesh.arrayBuffer()),
+  };
+}
+
+export function solveUser(files) {
+  return JSON.parse(solve_user_scene_json(files.sceneName, files.sceneBytes, files.meshName, files.meshBytes, "[]"));
+}
