@@ -133,7 +133,7 @@ pub fn finish_outputs(
         figure(&mut out, &format!("von_mises.{ext}"), &mut skipped, |p| {
             field_plot::draw_von_mises(p, &format!("{name}: von Mises stress (step {n}/{n})"), view)
         })?;
-        if n > 1 {
+        if n > 1 && !preset.is_some_and(|p| p.replaces("history")) {
             figure(&mut out, &format!("history.{ext}"), &mut skipped, |p| {
                 draw_history(p, &format!("{name}: contact forces over the steps (resultant on the slave side)"), folder)
             })?;

@@ -14,6 +14,10 @@ pub trait PresetFiles {
     /// [`OutputError`] naming the first file that could not be written.
     fn write(&self, out: &mut OutputDir, skipped: &mut Vec<String>) -> Result<(), OutputError>;
 
+    /// Whether the preset draws every scene's figure `stem` (`history`, ...) itself, under the same
+    /// name: the paper's `history` is l(w), b(w) (its figure 4), as it always was.
+    fn replaces(&self, stem: &str) -> bool;
+
     /// The preset's columns of `steps.csv`: their names, and one row of values per step (empty
     /// where a value does not exist).
     fn step_columns(&self) -> (Vec<&'static str>, Vec<Vec<String>>);

@@ -1,12 +1,13 @@
 //! The plate-insert preset's post-processor outputs: the flagship's figures and tables, added
 //! through [`PresetFiles`] to the folder every scene's run writes
-//! (`crate::generic::outputs::finish_outputs`: mesh, contact_hole, von_mises, history, steps.csv
-//! with the paper's columns, step files, README.txt, summary.json):
+//! (`crate::generic::outputs::finish_outputs`: mesh, contact_hole, von_mises, steps.csv with the
+//! paper's columns, step files, README.txt, summary.json):
 //!
 //! ```text
 //! hole_edge.png/.svg               s_φφ, p, q along the hole edge against η (last step)
 //! insert_hoop.png/.svg             the insert's hoop stress (elastic insert only)
-//! zone_ends.png/.svg               l(w) and b(w) over the steps (more than one step)
+//! history.png/.svg                 l(w) and b(w) over the steps (more than one step; in place of
+//!                                  every scene's force history)
 //! hole_edge.csv, insert_edge.csv   contour profiles of the last step
 //! steps.csv                        + w, l, b, P, Φ_E1, Φ_E2, Φ_f, W per step
 //! step_000.vtu ...                 the flagship's view: both edges' p, q (paper's signs); time = w
@@ -109,7 +110,7 @@ impl PresetFiles for PaperFiles<'_> {
                 })?;
             }
             if n > 1 {
-                figure(out, &format!("zone_ends.{ext}"), skipped, |p| {
+                figure(out, &format!("history.{ext}"), skipped, |p| {
                     figures::draw_zone_ends(p, &format!("{}: zone ends over the loading", scene.name), outcome)
                 })?;
             }
@@ -122,6 +123,10 @@ impl PresetFiles for PaperFiles<'_> {
             csv::write_profile_csv(p, csv::INSERT_EDGE_HEADER, &last_profiles.insert, tags)
         })?;
         Ok(())
+    }
+
+    fn replaces(&self, stem: &str) -> bool {
+        stem == "history"
     }
 
     fn step_columns(&self) -> (Vec<&'static str>, Vec<Vec<String>>) {

@@ -19,7 +19,7 @@ pub fn describe(name: &str) -> Option<&'static str> {
         ("insert_hoop", _) => {
             "the insert's hoop stress s_θθ along its edge vs η = 1 − θ/π (last step; not for a rigid insert)"
         }
-        ("zone_ends", _) => "contact end l and stick end b against the load w over the steps",
+        ("history", _) => "contact end l and stick end b against the load w over the steps",
         ("steps", Some("csv")) => {
             "one row per step: pattern factor, status, iterations, the interface's forces and zone lengths, then the paper's w, l, b, P, energies, work"
         }
@@ -74,7 +74,6 @@ mod tests {
             "mesh.svg",
             "hole_edge.png",
             "insert_hoop.svg",
-            "zone_ends.png",
             "history.png",
             "contact_hole.csv",
             "von_mises.svg",
