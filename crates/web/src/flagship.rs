@@ -1,5 +1,6 @@
 //! The flagship on the page: the plate with an insert (Solodovnikov 1998) on a bundled teaching
-//! mesh, set up from the sliders and solved by the facade's own run
+//! mesh, set up as the bundled scene `scenes/plate_insert_nogap_mu03.toml` with `--set`
+//! overrides from the sliders, and solved by the facade's own run
 //! ([`contact2d::run::solve_scene_on_mesh`], the same code as `contact2d run`).
 //!
 //! ```text
@@ -28,6 +29,11 @@ use contact2d_mesh::parse_msh;
 use crate::WebError;
 use crate::bundled::{PUBLISHED_SCENES, flagship_mesh};
 use crate::view::{MeshView, PairsView, mesh_view, pairs_view};
+
+/// The bundled scene the page's set-ups override: the paper's neat fit with friction (the
+/// defaults every slider leaves alone — ν = 0.3, the paper's gap model, the active set with at
+/// most 100 iterations — are this file's).
+pub const BASE_SCENE: &str = include_str!("../../../scenes/plate_insert_nogap_mu03.toml");
 
 /// ω = c / ε of the page: the paper's Table 2 has c = 1 at ε = 0.05.
 pub const CLEARANCE_PER_EPS: f64 = 20.0;
@@ -64,45 +70,36 @@ impl FlagshipParams {
         self.steps.unwrap_or(if self.clearance() > 0.0 && self.friction > 0.0 { 3 } else { 1 })
     }
 
-    /// The scene file text of these parameters on the mesh file `mesh` (numbers in Rust's
-    /// shortest round-trip spelling, so the scene holds exactly these values).
-    pub fn scene_text(&self, mesh: &str) -> String {
+    /// The `--set` overrides of these parameters on the mesh file `mesh`, applied to the bundled
+    /// scene [`BASE_SCENE`] (numbers in Rust's shortest round-trip spelling, so the scene holds
+    /// exactly these values): the page's set-up is that scene file with `contact2d run --set ...`.
+    pub fn overrides(&self, mesh: &str) -> Vec<String> {
         let variant = match self.variant {
             VariantKey::HoleMaster => "hole_master",
             VariantKey::InsertMaster => "insert_master",
         };
-        format!(
-            "name = \"teaching\"\n\
-             [plate_insert]\n\
-             mesh = {mesh:?}\n\
-             variant = \"{variant}\"\n\
-             stiffness_ratio = {:?}\n\
-             poissons_ratio = 0.3\n\
-             eps = {:?}\n\
-             clearance = {:?}\n\
-             gap = \"paper\"\n\
-             friction = {:?}\n\
-             load = {:?}\n\
-             steps = {}\n\
-             [solver]\n\
-             algorithm = \"active_set\"\n\
-             max_iterations = 100\n",
-            self.stiffness_ratio,
-            self.eps,
-            self.clearance(),
-            self.friction,
-            self.load,
-            self.steps()
-        )
+        vec![
+            "name=\"teaching\"".into(),
+            "description=\"the teaching page's set-up\"".into(),
+            format!("plate_insert.mesh={mesh:?}"),
+            format!("plate_insert.variant=\"{variant}\""),
+            format!("plate_insert.stiffness_ratio={:?}", self.stiffness_ratio),
+            format!("plate_insert.eps={:?}", self.eps),
+            format!("plate_insert.clearance={:?}", self.clearance()),
+            format!("plate_insert.friction={:?}", self.friction),
+            format!("plate_insert.load={:?}", self.load),
+            format!("plate_insert.steps={}", self.steps()),
+        ]
     }
 
     /// The checked scene of these parameters on the mesh file `mesh`, as if read from
-    /// `scene_file` (the mesh path is relative to its directory).
+    /// `scene_file` (the mesh path is relative to its directory): [`BASE_SCENE`] with
+    /// [`FlagshipParams::overrides`], through the scene files' one override engine and checks.
     ///
     /// # Errors
     /// [`WebError::Scene`] for a value out of range (the scene file's own checks).
     pub fn scene(&self, mesh: &str, scene_file: &Path) -> Result<Scene, WebError> {
-        Ok(Scene::from_toml_str(&self.scene_text(mesh), scene_file, &[])?)
+        Ok(Scene::from_toml_str(BASE_SCENE, scene_file, &self.overrides(mesh))?)
     }
 
     /// The published case these parameters set up (any refinement), if any.
