@@ -18,6 +18,7 @@ struct Cli {
 
 const TOP_EXAMPLES: &str = "\
 Examples:
+  contact2d run scenes/generic/pin_lug.toml
   contact2d run scenes/plate_insert_nogap_mu0.toml
   contact2d mesh meshes/plate_insert/plate_insert_eps0_N32.msh
 
@@ -54,7 +55,7 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Run a scene (TOML) and report the paper's quantities.
+    /// Run a scene (TOML): any geometry, or the paper's plate with an insert (its preset adds l, b, P, ... under `paper`).
     #[command(after_help = RUN_EXAMPLES)]
     Run {
         /// The scene file.
