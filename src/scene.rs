@@ -46,12 +46,12 @@ use crate::plate_insert::{GapModel, PairDiscretisation, PairingVariant, PlateIns
 
 mod limits;
 
+pub use crate::schema::limits::{MAGNITUDE_RANGE, MAX_FRICTION, MAX_ITERATIONS, MAX_STEPS, STIFFNESS_RATIO_RANGE};
 use crate::schema::parse_scene_toml;
 pub use crate::schema::{
     SceneError, SolverEntry, algorithm_from_key, deserialize_algorithm, overridden_scene_text, read_scene_text,
     serialize_algorithm,
 };
-pub use limits::{MAGNITUDE_RANGE, MAX_FRICTION, MAX_ITERATIONS, MAX_STEPS, STIFFNESS_RATIO_RANGE};
 
 /// The `[plate_insert]` section: the flagship problem's parameters.
 #[derive(Debug, Clone, PartialEq, Deserialize)]

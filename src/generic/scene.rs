@@ -45,6 +45,7 @@ use contact2d_element::{Formulation, PlaneCondition, locking_warning};
 use contact2d_fem::Component;
 use contact2d_mesh::Mesh;
 
+use crate::schema::limits::{MAX_FRICTION, STIFFNESS_RATIO_RANGE};
 use crate::schema::{SceneError, SolverEntry, parse_scene_toml};
 
 /// The plane condition as spelled in scene files.
@@ -291,6 +292,27 @@ impl GenericScene {
         SceneError::Value { path: self.file.display().to_string(), key: key.to_string(), reason }
     }
 
+    /// The bodies' stiffnesses within [`STIFFNESS_RATIO_RANGE`] of each other (the stiffness
+    /// matrix's condition number grows with E_max / E_min; beyond 1e8 the softer body is
+    /// round-off), as the plate-insert preset's E2/E1.
+    fn validate_stiffness_ratio(&self) -> Result<(), SceneError> {
+        let stiffest = self.body.iter().enumerate().max_by(|a, b| a.1.youngs_modulus.total_cmp(&b.1.youngs_modulus));
+        let softest = self.body.iter().map(|b| b.youngs_modulus).fold(f64::INFINITY, f64::min);
+        let Some((i, b)) = stiffest else { return Ok(()) };
+        let (_, hi) = STIFFNESS_RATIO_RANGE;
+        let ratio = b.youngs_modulus / softest;
+        if ratio > hi {
+            return Err(self.fail(
+                &format!("body.{i}.youngs_modulus"),
+                format!(
+                    "E_max / E_min = {ratio:e} is out of the solvable range ..= {hi:e} (the stiffness matrix's \
+                     condition number grows with the ratio; beyond it the softer body is round-off)"
+                ),
+            ));
+        }
+        Ok(())
+    }
+
     /// Checks ranges and contradictions that need no mesh.
     ///
     /// # Errors
@@ -319,6 +341,7 @@ impl GenericScene {
                 return Err(self.fail(&format!("body.{i}.region"), format!("\"{}\" is a body twice", b.region)));
             }
         }
+        self.validate_stiffness_ratio()?;
         for (i, f) in self.fix.iter().enumerate() {
             if f.u1.is_none() && f.u2.is_none() {
                 return Err(
@@ -355,6 +378,15 @@ impl GenericScene {
                 return Err(
                     self.fail(&format!("contact.{i}.friction"), format!("{} must be finite and ≥ 0", c.friction))
                 );
+            }
+            if c.friction > MAX_FRICTION {
+                return Err(self.fail(
+                    &format!("contact.{i}.friction"),
+                    format!(
+                        "μ = {:e} is beyond {MAX_FRICTION} (every pair sticks long before; the cone test μλ loses all digits)",
+                        c.friction
+                    ),
+                ));
             }
             match &c.gap {
                 GapKey::Named(n) if n != "geometric" => {

@@ -3,6 +3,7 @@
 //! `[solver]` section, and the errors, which name the file and the line, key or override at
 //! fault.
 
+pub mod limits;
 mod overrides;
 mod parse;
 mod solver;
