@@ -41,3 +41,14 @@ class Outcome:
     def write(self, out_dir: str | PathLike[str]) -> list[Path]: ...
 
 def solve(scene: Scene, profiles: str = "last") -> Outcome: ...
+def compare(
+    scene: str | PathLike[str],
+    sets: list[str],
+    meshes: list[Path],
+    repeat: int,
+    references: list[str],
+    time_limit: float,
+) -> tuple[list[dict[str, Any]], dict[str, tuple[list[float], str]]]: ...
+def verify(
+    cases: list[str], level: str, root: str | PathLike[str]
+) -> tuple[list[dict[str, Any]], list[tuple[str, str]]]: ...
