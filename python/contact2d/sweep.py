@@ -56,9 +56,15 @@ def quantity(summary: dict[str, Any], path: str) -> float | None:
     return found if found is not None or "paper" not in summary else at(summary["paper"])
 
 
-def run_case(payload: tuple[str, str, bytes, str], keys: Sequence[str], values: Sequence[Any], columns: Sequence[str]) -> dict[str, Any]:
+def run_case(
+    payload: tuple[str, str, bytes, str],
+    keys: Sequence[str],
+    values: Sequence[Any],
+    columns: Sequence[str],
+    threads: int | None = None,
+) -> dict[str, Any]:
     """One case on a worker: the scene text and mesh bytes written to a temporary folder, the
-    varied keys set, solved; the record holds the varied values, status, columns, iterations and
+    varied keys set, solved on `threads` threads (`solve`'s argument); the record holds the varied values, status, columns, iterations and
     error (a failed case is a record with status `error`)."""
     text, mesh_name, mesh_bytes, mesh_key = payload
     record: dict[str, Any] = dict(zip(keys, values, strict=True))
@@ -69,7 +75,7 @@ def run_case(payload: tuple[str, str, bytes, str], keys: Sequence[str], values: 
             scene = _core.Scene.load(Path(tmp) / "scene.toml").set(mesh_key, mesh_name)
             for key, value in zip(keys, values, strict=True):
                 scene = scene.set(key, value)
-            summary = solve(scene).json
+            summary = solve(scene, threads=threads).json
         except _core.Contact2dError as e:
             record.update({"status": "error", **{c: None for c in columns}, "iterations": None, "error": str(e)})
             return record
@@ -111,6 +117,7 @@ def sweep(
     client: Any = None,
     columns: Sequence[str] | None = None,
     out: str | PathLike[str] | None = None,
+    threads_per_case: int | None = 1,
 ) -> pd.DataFrame:
     """Solve `scene` over the Cartesian product of `vary`'s values ({`--set` path: values}; the
     last key varies fastest, as in `contact2d sweep`) on Dask and return one row per case:
@@ -126,6 +133,10 @@ def sweep(
     they finish, with a leading `case` column giving the row's place in the case list), flushed
     line by line, so an interrupted sweep keeps its finished rows; the returned DataFrame is the
     same as without `out` (in case order).
+
+    `threads_per_case` is each solve's thread pool (`solve(threads=...)`): 1 by default, as each
+    worker thread runs one case (the LocalCluster has one single-threaded worker per core);
+    `None` lets each solve use every core of its machine. The results do not depend on it.
     """
     from dask.distributed import Client, LocalCluster  # noqa: PLC0415 (optional dependency)
 
@@ -148,7 +159,7 @@ def sweep(
         # earlier sweep of the same scene on the same client, whose release then cancels this one's
         # tasks ("lost dependencies").
         shipped = client.scatter(payload, broadcast=True, hash=False)
-        futures = [client.submit(run_case, shipped, keys, case, cols, pure=False) for case in cases]
+        futures = [client.submit(run_case, shipped, keys, case, cols, threads_per_case, pure=False) for case in cases]
         if rows is None:
             records = client.gather(futures)
         else:
