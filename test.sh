@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Every test of contact2d: the Rust workspace, then the Python package against the release CLI.
-# Installs what Python needs (maturin, numpy, pandas, pytest, meshio, dask.distributed and the package itself, built from
+# Installs what Python needs (maturin, numpy, pandas, pytest, meshio, dask.distributed, nbclient, nbformat,
+# ipykernel and matplotlib for the notebook, and the package itself, built from
 # ./python with the workspace's target directory so that it reuses the Rust build).
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -8,6 +9,6 @@ cd "$(dirname "$0")"
 cargo test --workspace --release
 # The CLI binary the Python tests compare with.
 cargo build --release --bin contact2d
-python3 -m pip install --quiet --disable-pip-version-check maturin numpy pandas pytest meshio 'dask[distributed]'
+python3 -m pip install --quiet --disable-pip-version-check maturin numpy pandas pytest meshio 'dask[distributed]' nbclient nbformat ipykernel matplotlib
 CARGO_TARGET_DIR="$PWD/target" python3 -m pip install --quiet --disable-pip-version-check ./python
 python3 -m pytest python/tests -q

@@ -22,6 +22,7 @@ from ._core import (
     SceneError,
 )
 from .result import Contact, Result, solve
+from .studies import compare, verify
 from .sweep import sweep
 
 __all__ = [
@@ -32,6 +33,8 @@ __all__ = [
     "Result",
     "Scene",
     "SceneError",
+    "compare",
     "solve",
     "sweep",
+    "verify",
 ]

@@ -17,18 +17,20 @@ from . import _core
 PROFILE_COLUMNS = ("s", "x", "y", "pressure", "shear", "gap", "slip", "state")
 
 
-def solve(scene: _core.Scene, *, profiles: str = "last") -> Result:
+def solve(scene: _core.Scene, *, profiles: str = "last", threads: int | None = None) -> Result:
     """Solve ``scene`` as ``contact2d run SCENE --json`` does and return its :class:`Result`.
 
     The GIL is released while solving, so several threads solve concurrently. ``profiles`` is
     ``"last"`` (default) or ``"all"``: which steps carry the interfaces' profiles in the summary
-    (the CLI's ``--profiles``).
+    (the CLI's ``--profiles``). ``threads`` (an int >= 1) runs the solve on a thread pool of
+    that size (the library's parallel parts: assembly, ordering, stress recovery); ``None`` uses
+    one thread per core. The results do not depend on it.
 
     A solve that does not converge is a status (``result.status``), not an exception. Raises
     :class:`SceneError`, :class:`MeshError` or :class:`ContactError` with the CLI's message when
     the scene, its mesh or the problem's set-up is at fault.
     """
-    return Result(_core.solve(scene, profiles))
+    return Result(_core.solve(scene, profiles, threads))
 
 
 def flatten(value: Any, prefix: str = "") -> dict[str, Any]:
@@ -160,6 +162,14 @@ class Result:
         """The displacement (u1, u2) of every mesh node at solved step ``step`` (from 0; negative
         counts from the end), an (n_nodes, 2) array."""
         return self._outcome.displacement(step)
+
+    def stress(self, step: int = -1) -> np.ndarray:
+        """The recovered nodal stresses at solved step ``step``, an (n_nodes, 4) array of
+        (σ11, σ22, σ12, σ33) per node (MPa for the bundled scenes): the Gauss-point stresses
+        extrapolated to the nodes and averaged over each body's cells, the ``stress`` of the VTU
+        files. σ33 is the out-of-plane stress (0 in plane stress, ν(σ11 + σ22) in plane strain).
+        A node of no body is NaN; a node shared by two bodies holds the later body's value."""
+        return self._outcome.stress(step)
 
     @property
     def mesh(self) -> Mesh:

@@ -10,6 +10,7 @@ mod convert;
 mod errors;
 mod outcome;
 mod scene;
+mod studies;
 
 /// The extension module.
 #[pymodule]
@@ -22,5 +23,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<scene::Scene>()?;
     m.add_class::<outcome::Outcome>()?;
     m.add_function(wrap_pyfunction!(outcome::solve, m)?)?;
+    m.add_function(wrap_pyfunction!(studies::compare, m)?)?;
+    m.add_function(wrap_pyfunction!(studies::verify, m)?)?;
     Ok(())
 }

@@ -31,6 +31,14 @@ impl Solved {
         }
     }
 
+    /// The model of solved step `k` (the paper's case builds one per step).
+    fn model(&self, k: usize) -> Option<&contact2d::fem::Model> {
+        match self {
+            Solved::Generic(o) => o.history.steps.get(k).map(|_| &o.built.problem.model),
+            Solved::Paper(_, o) => o.steps.get(k).map(|s| &s.case.built.problem.model),
+        }
+    }
+
     /// Each solved step's displacement vector (DOF 2·node + component).
     fn displacements(&self) -> Vec<&[f64]> {
         match self {
@@ -54,17 +62,32 @@ pub struct Outcome {
 /// Solves `scene` as `contact2d run SCENE --json` does and returns its outcome; the GIL is
 /// released while solving, so threads solve concurrently. `profiles` is "last" (default) or
 /// "all" (the CLI's `--profiles`). A non-converged solve is a status in the summary, not an
-/// exception; SceneError, MeshError and ContactError carry the CLI's messages.
+/// exception; SceneError, MeshError and ContactError carry the CLI's messages. `threads` (≥ 1)
+/// runs the solve on a thread pool of that size (assembly, ordering and stress recovery are
+/// parallel); `None` uses the global pool (one thread per core).
 #[pyfunction]
-#[pyo3(signature = (scene, profiles = "last"))]
-pub fn solve(py: Python<'_>, scene: &Scene, profiles: &str) -> PyResult<Outcome> {
+#[pyo3(signature = (scene, profiles = "last", threads = None))]
+pub fn solve(py: Python<'_>, scene: &Scene, profiles: &str, threads: Option<usize>) -> PyResult<Outcome> {
     let every_profile = match profiles {
         "last" => false,
         "all" => true,
         other => return Err(PyValueError::new_err(format!("profiles: expected \"last\" or \"all\", not {other:?}"))),
     };
+    let pool = match threads {
+        None => None,
+        Some(0) => return Err(PyValueError::new_err("threads: expected a number of threads >= 1, not 0")),
+        Some(n) => Some(
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(n)
+                .build()
+                .map_err(|e| PyRuntimeError::new_err(format!("threads: {e}")))?,
+        ),
+    };
     let loaded = scene.parse().map_err(scene_error)?;
-    py.detach(move || run(loaded, every_profile))
+    py.detach(move || match pool {
+        Some(pool) => pool.install(|| run(loaded, every_profile)),
+        None => run(loaded, every_profile),
+    })
 }
 
 /// The run of [`solve`], without the GIL.
@@ -129,6 +152,50 @@ impl Outcome {
         })?;
         let u = u.ok_or_else(|| PyIndexError::new_err(format!("step {step}: no such solved step")))?;
         let array = Array2::from_shape_vec((n, 2), u).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+        Ok(array.into_pyarray(py))
+    }
+
+    /// The nodal stresses of solved step `step` (negative counts from the end), an (n_nodes, 4)
+    /// float array of (σ11, σ22, σ12, σ33) per mesh node: Gauss-point stresses extrapolated to
+    /// the nodes and averaged over each body's cells, as the VTU files' `stress`; σ33 is the
+    /// out-of-plane stress (0 in plane stress). A node in no body is NaN; a node of two bodies
+    /// holds the later body's value, as in the VTU files.
+    #[pyo3(signature = (step = -1))]
+    fn stress<'py>(&self, py: Python<'py>, step: isize) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let values = py.detach(|| {
+            self.with(|s| {
+                let all = s.displacements();
+                let k = if step < 0 { all.len() as isize + step } else { step };
+                let Some((k, u)) = usize::try_from(k).ok().and_then(|k| all.get(k).map(|u| (k, *u))) else {
+                    return Err(PyIndexError::new_err(format!("step {step}: no such solved step")));
+                };
+                let model = s.model(k).ok_or_else(|| PyIndexError::new_err(format!("step {step}: no model")))?;
+                let n = model.mesh.num_nodes();
+                let mut out = vec![f64::NAN; 4 * n];
+                for (b, body) in model.bodies.iter().enumerate() {
+                    let nodal = contact2d::fem::nodal_stresses(
+                        model,
+                        contact2d::fem::BodyId(b),
+                        u,
+                        contact2d::fem::StressRecovery::Extrapolated,
+                    )
+                    .map_err(|e| ContactError::new_err(e.to_string()))?;
+                    for (i, s) in nodal.iter().enumerate() {
+                        if let Some(s) = s {
+                            out[4 * i..4 * i + 4].copy_from_slice(&[
+                                s[0],
+                                s[1],
+                                s[2],
+                                body.material.out_of_plane_stress(s),
+                            ]);
+                        }
+                    }
+                }
+                Ok((n, out))
+            })?
+        });
+        let (n, values) = values?;
+        let array = Array2::from_shape_vec((n, 4), values).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
         Ok(array.into_pyarray(py))
     }
 

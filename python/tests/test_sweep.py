@@ -6,6 +6,7 @@ row in both; only its message differs in the scene path it names (the task's tem
 from __future__ import annotations
 
 import csv
+import re
 from pathlib import Path
 
 import pytest
@@ -54,3 +55,55 @@ def test_sweeps_of_one_scene_on_one_client_follow_each_other() -> None:
         second = contact2d.sweep(scene, {"contact.bore.friction": [0.0, 0.1, 0.2]}, client=client)
     assert (first["status"] == "converged").all() and (second["status"] == "converged").all()
     assert first["contacts.bore.normal_force"].tolist() == second["contacts.bore.normal_force"].tolist()[:2]
+
+
+def test_rows_are_written_as_they_arrive(tmp_path: Path) -> None:
+    """`out=rows.csv`: the file holds finished rows while the sweep still runs, all rows at the
+    end (each number the frame's, to the bit: Python writes shortest round-trip texts), and the
+    returned frame equals a sweep without `out`."""
+    import threading
+    import time
+
+    from dask.distributed import Client, LocalCluster
+
+    scene = contact2d.Scene.load(ROOT / "scenes" / "generic" / "pin_lug.toml")
+    vary = {"contact.bore.friction": [0.0, 0.1, 0.2, -1.0], "load.pin_back.force": ["[600.0, 0.0]", "[800.0, 0.0]", "[1000.0, 0.0]"]}
+    rows = tmp_path / "rows.csv"
+    seen_while_running: list[int] = []
+    with LocalCluster(n_workers=2, threads_per_worker=1, dashboard_address=None) as cluster, Client(cluster) as client:
+        result: dict[str, object] = {}
+        thread = threading.Thread(target=lambda: result.update(frame=contact2d.sweep(scene, vary, client=client, out=rows)))
+        thread.start()
+        while thread.is_alive():
+            if rows.is_file():
+                lines = rows.read_text().splitlines()
+                if len(lines) > 1:
+                    seen_while_running.append(len(lines) - 1)
+            time.sleep(0.01)
+        thread.join()
+        plain = contact2d.sweep(scene, vary, client=client)
+    frame = result["frame"]
+    assert seen_while_running and min(seen_while_running) < len(frame), seen_while_running
+    # The same frame; an error's message names the task's temporary folder, which differs.
+    assert frame.drop(columns="error").equals(plain.drop(columns="error"))
+    anonymous = lambda t: re.sub(r"contact2d-case-[^/]+", "contact2d-case-*", t)  # noqa: E731
+    assert frame["error"].map(anonymous).tolist() == plain["error"].map(anonymous).tolist()
+    with rows.open() as f:
+        written = sorted(csv.DictReader(f), key=lambda r: int(r["case"]))
+    assert [int(r["case"]) for r in written] == list(range(len(frame)))
+    for (_, row), line in zip(frame.iterrows(), written, strict=True):
+        for column in frame.columns:
+            value = row[column]
+            if value is None or (isinstance(value, float) and value != value):
+                assert line[column] == ""
+            elif isinstance(value, str):
+                assert line[column] == value
+            else:
+                assert float(line[column]) == value, (column, line[column], value)
+    assert (frame["status"] == "error").sum() == 3
+
+
+def test_rows_file_must_be_csv(tmp_path: Path) -> None:
+    scene = contact2d.Scene.load(ROOT / "scenes" / "generic" / "pin_lug.toml")
+    with pytest.raises(ValueError, match=r"\.csv"):
+        contact2d.sweep(scene, {"contact.bore.friction": [0.0]}, out=tmp_path / "rows.parquet")
