@@ -5,6 +5,13 @@
 //!
 //! ```text
 //! mesh (Gmsh .msh) → fem::Model → assemble → solve → contact → results → output
+//!
+//! schema        what every scene file shares: reading, --set overrides, [solver], limits
+//! generic       the one pipeline: scene → built problem → solve → summary → outputs
+//! plate_insert  the paper's case as a preset: its [plate_insert] section (scene), its expansion
+//!               into a generic scene (preset), its run and post-processor (run, report, outputs)
+//! output        the writers every run's folder uses
+//! subject       what the studies (compare, sweep) run: any scene behind one interface
 //! ```
 
 pub use contact2d_contact as contact;
@@ -22,8 +29,10 @@ pub mod input_file;
 pub mod mesh_summary;
 pub mod output;
 pub mod plate_insert;
-pub mod run;
-pub mod scene;
+/// The plate-insert preset's run (`crate::plate_insert::run`), at its historical path.
+pub use plate_insert::run;
+/// The plate-insert preset's scene file (`crate::plate_insert::scene`), at its historical path.
+pub use plate_insert::scene;
 pub mod schema;
 #[cfg(feature = "native")]
 pub mod stress;

@@ -30,6 +30,8 @@ pub mod published;
 pub mod report;
 mod results;
 mod roots;
+pub mod run;
+pub mod scene;
 mod zone_ends;
 pub use contour_history::ContourHistory;
 pub use group_geometry::{MisplacedGroup, check_group_geometry};
