@@ -40,6 +40,7 @@ use contact2d_contact::{
     BodyDescription, ContactAlgorithm, ContactDescription, EdgeLoadKind, FixDescription, GapDescription,
     LoadDescription, LoadSchedule, Pairing, ProblemDescription, SolverSettings,
     builder::{DEFAULT_PATTERN, pattern_order},
+    loading::MAX_SCHEDULE_STEPS,
 };
 use contact2d_element::{Formulation, PlaneCondition, locking_warning};
 use contact2d_fem::Component;
@@ -157,6 +158,19 @@ pub enum PairingKey {
     Automatic,
 }
 
+/// How far the bodies may slide along a contact, as spelled in scene files.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum SlidingKey {
+    /// The pairs are formed once, in the undeformed configuration; a run whose pairs in contact
+    /// slide further than [`super::sliding::SMALL_SLIDING_FRACTION`] of their segment gets a
+    /// note (the default, and the only one solved).
+    #[default]
+    Small,
+    /// Re-pairing on the current configuration: refused (not implemented).
+    Finite,
+}
+
 /// A gap: `"geometric"` or a number.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(untagged)]
@@ -192,6 +206,13 @@ pub struct ContactEntry {
     /// Master and slave may bound the same body (default `false`: such a pair is an error).
     #[serde(default)]
     pub self_contact: bool,
+    /// `"small"` (default): paired once in the undeformed configuration.
+    #[serde(default)]
+    pub sliding: SlidingKey,
+    /// Two groups `[A, B]` whose mean relative displacement along the contact is the abscissa
+    /// of its hysteresis loop over the last load cycle (none: no loop).
+    #[serde(default)]
+    pub reference_groups: Option<[String; 2]>,
 }
 
 /// The `[loading]` section.
@@ -202,6 +223,11 @@ pub struct LoadingSection {
     pub steps: Option<usize>,
     /// The factor of each named pattern at the end of each step (unnamed patterns: 0).
     pub schedule: Option<Vec<BTreeMap<String, f64>>>,
+    /// One load cycle: the factors of its steps, as in `schedule`, run after the `steps` or
+    /// `schedule` (the preload) `cycles` times.
+    pub cycle: Option<Vec<BTreeMap<String, f64>>>,
+    /// How many times `cycle` runs (1 ..= 10 000; default 1 with a `cycle`).
+    pub cycles: Option<usize>,
 }
 
 fn one() -> f64 {
@@ -371,6 +397,15 @@ impl GenericScene {
                 return Err(self.fail(&format!("contact.{i}.name"), format!("\"{}\" names two contacts", c.name)));
             }
         }
+        if let Some(i) = self.contact.iter().position(|c| c.sliding == SlidingKey::Finite) {
+            return Err(self.fail(
+                &format!("contact.{i}.sliding"),
+                "finite sliding (pairs formed again on the current configuration) is not implemented; use \"small\" \
+                 (the pairs of the undeformed configuration, with a note when a pair slides more than half its \
+                 segment)"
+                    .into(),
+            ));
+        }
         if self.solver.place_zone_ends == Some(true) {
             return Err(self.fail(
                 "solver.place_zone_ends",
@@ -400,31 +435,93 @@ impl GenericScene {
         pattern_order(values.chain(self.load.iter().map(|l| l.pattern.as_str())))
     }
 
-    /// The load schedule: `steps = N` ramps every pattern; a `schedule` lists each step's
-    /// factors; neither is one step with every pattern at 1.
+    /// The load schedule: the preload (`steps = N` ramps every pattern; a `schedule` lists each
+    /// step's factors; neither: one step with every pattern at 1, or none before a `cycle`),
+    /// then `cycle` repeated `cycles` times.
+    ///
+    /// ```text
+    /// steps = preload ++ cycle ++ cycle ++ … (cycles times)
+    /// ```
     ///
     /// # Errors
-    /// Both given, a schedule naming an unknown pattern, or a schedule the library refuses.
+    /// Both `steps` and `schedule`; a step naming an unknown pattern; `cycles` without a
+    /// `cycle`, `cycles = 0`, an empty `cycle`, more than 10 000 steps in all; a schedule the
+    /// library refuses.
     pub fn schedule(&self) -> Result<LoadSchedule, SceneError> {
         let names = self.pattern_names();
-        match (&self.loading.steps, &self.loading.schedule) {
-            (Some(_), Some(_)) => Err(self.fail("loading", "give steps or schedule, not both".into())),
-            (Some(n), None) => LoadSchedule::ramp(names, *n).map_err(|e| self.fail("loading.steps", e.to_string())),
-            (None, Some(schedule)) => {
-                for (i, step) in schedule.iter().enumerate() {
-                    if let Some(unknown) = step.keys().find(|k| !names.contains(k)) {
-                        return Err(self.fail(
-                            &format!("loading.schedule[{i}]"),
-                            format!("\"{unknown}\" is no load pattern of this scene (patterns: {})", names.join(", ")),
-                        ));
-                    }
-                }
-                let steps =
-                    schedule.iter().map(|s| names.iter().map(|n| s.get(n).copied().unwrap_or(0.0)).collect()).collect();
-                LoadSchedule::new(names, steps).map_err(|e| self.fail("loading.schedule", e.to_string()))
+        let loading = &self.loading;
+        let preload: Vec<Vec<f64>> = match (&loading.steps, &loading.schedule, &loading.cycle) {
+            (Some(_), Some(_), _) => return Err(self.fail("loading", "give steps or schedule, not both".into())),
+            (Some(n), None, _) => LoadSchedule::ramp(names.clone(), *n)
+                .map_err(|e| self.fail("loading.steps", e.to_string()))?
+                .steps()
+                .to_vec(),
+            (None, Some(schedule), _) => self.factor_rows("loading.schedule", schedule, &names)?,
+            (None, None, None) => {
+                return LoadSchedule::ramp(names, 1).map_err(|e| self.fail("loading", e.to_string()));
             }
-            (None, None) => LoadSchedule::ramp(names, 1).map_err(|e| self.fail("loading", e.to_string())),
+            (None, None, Some(_)) => vec![],
+        };
+        let mut steps = preload;
+        match (&loading.cycle, loading.cycles) {
+            (None, Some(_)) => {
+                return Err(self.fail("loading.cycles", "no loading.cycle to repeat: give the cycle's factors".into()));
+            }
+            (None, None) => {}
+            (Some(cycle), cycles) => {
+                let cycles = cycles.unwrap_or(1);
+                if cycles == 0 {
+                    return Err(self.fail("loading.cycles", "0 cycles: give at least 1".into()));
+                }
+                if cycle.is_empty() {
+                    return Err(self.fail("loading.cycle", "an empty cycle: give the factors of its steps".into()));
+                }
+                let total = cycle.len().checked_mul(cycles).and_then(|n| n.checked_add(steps.len()));
+                if total.is_none_or(|n| n > MAX_SCHEDULE_STEPS) {
+                    return Err(self.fail(
+                        "loading.cycles",
+                        format!(
+                            "{cycles} cycles of {} steps after {} steps exceed {MAX_SCHEDULE_STEPS} steps",
+                            cycle.len(),
+                            steps.len()
+                        ),
+                    ));
+                }
+                let rows = self.factor_rows("loading.cycle", cycle, &names)?;
+                for _ in 0..cycles {
+                    steps.extend(rows.iter().cloned());
+                }
+            }
         }
+        let key = if loading.cycle.is_some() { "loading.cycle" } else { "loading.schedule" };
+        LoadSchedule::new(names, steps).map_err(|e| self.fail(key, e.to_string()))
+    }
+
+    /// The steps of the last load cycle (indices from 0 into the schedule's steps) and the
+    /// number of steps per cycle; `None` without a `cycle`.
+    pub fn last_cycle(&self) -> Option<std::ops::Range<usize>> {
+        let cycle = self.loading.cycle.as_ref()?;
+        let total = self.schedule().ok()?.steps().len();
+        Some(total.saturating_sub(cycle.len())..total)
+    }
+
+    /// Each step's factors in the order of `names`, after checking that every step names
+    /// patterns of the scene (`key`: where the steps are, for the error).
+    fn factor_rows(
+        &self,
+        key: &str,
+        rows: &[BTreeMap<String, f64>],
+        names: &[String],
+    ) -> Result<Vec<Vec<f64>>, SceneError> {
+        for (i, step) in rows.iter().enumerate() {
+            if let Some(unknown) = step.keys().find(|k| !names.contains(k)) {
+                return Err(self.fail(
+                    &format!("{key}[{i}]"),
+                    format!("\"{unknown}\" is no load pattern of this scene (patterns: {})", names.join(", ")),
+                ));
+            }
+        }
+        Ok(rows.iter().map(|s| names.iter().map(|n| s.get(n).copied().unwrap_or(0.0)).collect()).collect())
     }
 
     /// The solver settings.
