@@ -5,6 +5,8 @@
 //! pair k (master node at arc length s_k, tributary length w_k), steps i of the last cycle,
 //! i0 the step before it (the virgin state when the cycle is the whole schedule):
 //!   slip_amplitude_k = ½ (max_i s_k,i − min_i s_k,i),  i ∈ {i0} ∪ cycle     s = B_T u
+//!                      (0 for a pair free at every step of the cycle: no slip, only the
+//!                      bodies' deformation outside the contact)
 //!   energy_k         = Σ_i |τ_k,i| |Δs_k,i|  over the steps where k slips    (force × length)
 //!   dissipation_k    = energy_k / w_k          (energy per cycle per unit length of contact)
 //!   dissipated       = Σ_k energy_k             (energy per cycle)
@@ -75,6 +77,8 @@ struct Running {
     s: Vec<f64>,
     lo: Vec<f64>,
     hi: Vec<f64>,
+    /// Whether the pair was in contact at a step of the cycle.
+    touched: Vec<bool>,
     energy: Vec<f64>,
     shear: Vec<f64>,
     sigma: Vec<f64>,
@@ -130,6 +134,7 @@ impl FrettingWatch {
                 s: pairs[range.clone()].iter().map(|p| p.master_arc_length).collect(),
                 lo: vec![0.0; n],
                 hi: vec![0.0; n],
+                touched: vec![false; n],
                 energy: vec![0.0; n],
                 shear: vec![0.0; n],
                 sigma: vec![f64::NEG_INFINITY; n],
@@ -175,6 +180,7 @@ impl FrettingWatch {
                 c.lo[j] = c.lo[j].min(s);
                 c.hi[j] = c.hi[j].max(s);
                 let k = c.first + j;
+                c.touched[j] |= solution.state[k] != PairState::Free;
                 if matches!(solution.state[k], PairState::SlipPositive | PairState::SlipNegative) {
                     c.energy[j] += tau[j].abs() * solution.slip_increment[k].abs();
                 }
@@ -214,7 +220,8 @@ impl FrettingWatch {
             .contacts
             .iter()
             .map(|c| {
-                let amplitude: Vec<f64> = c.lo.iter().zip(&c.hi).map(|(lo, hi)| 0.5 * (hi - lo)).collect();
+                let amplitude: Vec<f64> =
+                    (0..c.lo.len()).map(|j| if c.touched[j] { 0.5 * (c.hi[j] - c.lo[j]) } else { 0.0 }).collect();
                 let sigma: Vec<f64> = c.sigma.iter().map(|s| if s.is_finite() { *s } else { 0.0 }).collect();
                 let ruiz: Vec<f64> =
                     (0..amplitude.len()).map(|j| sigma[j].max(0.0) * c.shear[j] * amplitude[j]).collect();
