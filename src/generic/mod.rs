@@ -8,6 +8,8 @@
 
 pub mod fretting;
 #[cfg(feature = "native")]
+pub mod fretting_outputs;
+#[cfg(feature = "native")]
 pub mod outputs;
 pub mod results;
 pub mod scene;
