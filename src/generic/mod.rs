@@ -13,6 +13,7 @@ pub mod fretting_outputs;
 pub mod outputs;
 pub mod results;
 pub mod scene;
+mod schedule;
 pub mod setup_notes;
 pub mod sliding;
 mod summary;
