@@ -6,11 +6,16 @@
 //!   → solve(&problem, &settings, &schedule) → History → GenericReport (JSON) → outputs
 //! ```
 
+pub mod fretting;
+#[cfg(feature = "native")]
+pub mod fretting_outputs;
 #[cfg(feature = "native")]
 pub mod outputs;
 pub mod results;
 pub mod scene;
+mod schedule;
 pub mod setup_notes;
+pub mod sliding;
 mod summary;
 pub mod zones;
 
@@ -357,6 +362,10 @@ fn solve_generic_from(
     // Each step's summary row is made as the step is solved; of the steps before, the rows
     // keep only what the next step needs.
     let mut rows = SummaryRows::new(&built, &fixed, scene.every_profile);
+    if let Some(cycle) = scene.last_cycle() {
+        let references: Vec<Option<[String; 2]>> = scene.contact.iter().map(|c| c.reference_groups.clone()).collect();
+        rows = rows.with_fretting(fretting::FrettingWatch::new(&built, cycle, &references).map_err(contact_error)?);
+    }
     let (mut failed, mut solve_time, mut post_time) = (None, 0.0, 0.0);
     let Stream { retention, on_step, on_solved } = stream;
     let history = solve_keeping(&built.problem, &settings, &schedule, retention, &mut |i, step| {
@@ -428,7 +437,8 @@ pub(crate) fn group_reports(
         .map(|b| b.region.clone())
         .chain(scene.fix.iter().map(|f| f.group.clone()))
         .chain(scene.load.iter().map(|l| l.group.clone()))
-        .chain(scene.contact.iter().flat_map(|c| [c.master.clone(), c.slave.clone()]));
+        .chain(scene.contact.iter().flat_map(|c| [c.master.clone(), c.slave.clone()]))
+        .chain(scene.contact.iter().flat_map(|c| c.reference_groups.clone().into_iter().flatten()));
     let mut out = BTreeMap::new();
     for name in unique(names) {
         let group = mesh.group(&name)?;

@@ -7,6 +7,7 @@
 //! von_mises.png/.svg                the von Mises field (last step)
 //! history.png/.svg                  normal and tangential force of every interface over the steps
 //! contact_<name>.csv                the profile of each interface (last step)
+//! fretting_<name>.csv, hysteresis_<name>.csv/.png/.svg   with a load cycle: src/generic/fretting_outputs.rs
 //! steps.csv                         one row per step: factors, status, resultants per interface
 //! step_000.vtu ... steps.pvd        one VTK file per step and their collection (time = step number)
 //! ```
@@ -133,6 +134,16 @@ pub fn finish_outputs(
         figure(&mut out, &format!("von_mises.{ext}"), &mut skipped, |p| {
             field_plot::draw_von_mises(p, &format!("{name}: von Mises stress (step {n}/{n})"), view)
         })?;
+        for (iface, result) in &report.contacts {
+            let Some((f, h)) = result.fretting.as_deref().and_then(|f| f.hysteresis.as_ref().map(|h| (f, h))) else {
+                continue;
+            };
+            let steps = format!("steps {}–{}", f.steps[0], f.steps[1]);
+            figure(&mut out, &format!("hysteresis_{}.{ext}", file_safe(iface)), &mut skipped, |p| {
+                let title = format!("{name}: contact \"{iface}\", hysteresis over the last cycle ({steps})");
+                super::fretting_outputs::draw_hysteresis(p, &title, h)
+            })?;
+        }
         if n > 1 && !preset.is_some_and(|p| p.replaces("history")) {
             figure(&mut out, &format!("history.{ext}"), &mut skipped, |p| {
                 draw_history(p, &format!("{name}: contact forces over the steps (resultant on the slave side)"), folder)
@@ -141,6 +152,14 @@ pub fn finish_outputs(
     }
     for (iface, result) in &report.contacts {
         out.write_bytes(&format!("contact_{}.csv", file_safe(iface)), profile_csv(result).as_bytes())?;
+        if let Some(f) = result.fretting.as_deref() {
+            let csv = super::fretting_outputs::fretting_csv(f);
+            out.write_bytes(&format!("fretting_{}.csv", file_safe(iface)), csv.as_bytes())?;
+            if let Some(h) = &f.hysteresis {
+                let csv = super::fretting_outputs::hysteresis_csv(f, h);
+                out.write_bytes(&format!("hysteresis_{}.csv", file_safe(iface)), csv.as_bytes())?;
+            }
+        }
     }
     out.write_bytes("steps.csv", steps_csv(folder, preset).as_bytes())?;
     write_step_profiles(&mut out, &report.steps)?;

@@ -85,6 +85,10 @@ pub struct ContactResult {
     /// holds this field, and a profile's room in each would grow a long history's memory.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub profile: Option<Box<Profile>>,
+    /// The fretting numbers over the last load cycle (top level only, with a `[loading]
+    /// cycle`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fretting: Option<Box<super::fretting::Fretting>>,
 }
 
 /// KKT residuals of a step.
@@ -461,6 +465,7 @@ pub fn contact_result(
         zones,
         stick_zones,
         profile,
+        fretting: None,
     }
 }
 

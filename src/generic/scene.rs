@@ -1,5 +1,5 @@
 //! Generic scene files: any geometry on a Gmsh mesh, parsed at the edge into a
-//! [`ProblemDescription`], a [`LoadSchedule`] and [`SolverSettings`].
+//! [`ProblemDescription`], a [`LoadSchedule`](contact2d_contact::LoadSchedule) and [`SolverSettings`].
 //!
 //! ```toml
 //! name = "cylinder_on_block"
@@ -38,7 +38,7 @@ use serde::Deserialize;
 
 use contact2d_contact::{
     BodyDescription, ContactAlgorithm, ContactDescription, EdgeLoadKind, FixDescription, GapDescription,
-    LoadDescription, LoadSchedule, Pairing, ProblemDescription, SolverSettings,
+    LoadDescription, Pairing, ProblemDescription, SolverSettings,
     builder::{DEFAULT_PATTERN, pattern_order},
 };
 use contact2d_element::{Formulation, PlaneCondition, locking_warning};
@@ -158,6 +158,19 @@ pub enum PairingKey {
     Automatic,
 }
 
+/// How far the bodies may slide along a contact, as spelled in scene files.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum SlidingKey {
+    /// The pairs are formed once, in the undeformed configuration; a run whose pairs in contact
+    /// slide further than [`super::sliding::SMALL_SLIDING_FRACTION`] of their segment gets a
+    /// note (the default, and the only one solved).
+    #[default]
+    Small,
+    /// Re-pairing on the current configuration: refused (not implemented).
+    Finite,
+}
+
 /// A gap: `"geometric"` or a number.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(untagged)]
@@ -193,6 +206,13 @@ pub struct ContactEntry {
     /// Master and slave may bound the same body (default `false`: such a pair is an error).
     #[serde(default)]
     pub self_contact: bool,
+    /// `"small"` (default): paired once in the undeformed configuration.
+    #[serde(default)]
+    pub sliding: SlidingKey,
+    /// Two groups `[A, B]` whose mean relative displacement along the contact is the abscissa
+    /// of its hysteresis loop over the last load cycle (none: no loop).
+    #[serde(default)]
+    pub reference_groups: Option<[String; 2]>,
 }
 
 /// The `[loading]` section.
@@ -203,6 +223,11 @@ pub struct LoadingSection {
     pub steps: Option<usize>,
     /// The factor of each named pattern at the end of each step (unnamed patterns: 0).
     pub schedule: Option<Vec<BTreeMap<String, f64>>>,
+    /// One load cycle: the factors of its steps, as in `schedule`, run after the `steps` or
+    /// `schedule` (the preload) `cycles` times.
+    pub cycle: Option<Vec<BTreeMap<String, f64>>>,
+    /// How many times `cycle` runs (1 ..= 10 000; default 1 with a `cycle`).
+    pub cycles: Option<usize>,
 }
 
 fn one() -> f64 {
@@ -288,7 +313,7 @@ impl GenericScene {
         self.base_dir.join(&self.mesh)
     }
 
-    fn fail(&self, key: &str, reason: String) -> SceneError {
+    pub(super) fn fail(&self, key: &str, reason: String) -> SceneError {
         SceneError::Value { path: self.file.display().to_string(), key: key.to_string(), reason }
     }
 
@@ -403,6 +428,15 @@ impl GenericScene {
                 return Err(self.fail(&format!("contact.{i}.name"), format!("\"{}\" names two contacts", c.name)));
             }
         }
+        if let Some(i) = self.contact.iter().position(|c| c.sliding == SlidingKey::Finite) {
+            return Err(self.fail(
+                &format!("contact.{i}.sliding"),
+                "finite sliding (pairs formed again on the current configuration) is not implemented; use \"small\" \
+                 (the pairs of the undeformed configuration, with a note when a pair slides more than half its \
+                 segment)"
+                    .into(),
+            ));
+        }
         if self.solver.place_zone_ends == Some(true) {
             return Err(self.fail(
                 "solver.place_zone_ends",
@@ -430,33 +464,6 @@ impl GenericScene {
             .filter(|f| f.u1.is_some_and(|v| v != 0.0) || f.u2.is_some_and(|v| v != 0.0))
             .map(|f| f.pattern.as_str());
         pattern_order(values.chain(self.load.iter().map(|l| l.pattern.as_str())))
-    }
-
-    /// The load schedule: `steps = N` ramps every pattern; a `schedule` lists each step's
-    /// factors; neither is one step with every pattern at 1.
-    ///
-    /// # Errors
-    /// Both given, a schedule naming an unknown pattern, or a schedule the library refuses.
-    pub fn schedule(&self) -> Result<LoadSchedule, SceneError> {
-        let names = self.pattern_names();
-        match (&self.loading.steps, &self.loading.schedule) {
-            (Some(_), Some(_)) => Err(self.fail("loading", "give steps or schedule, not both".into())),
-            (Some(n), None) => LoadSchedule::ramp(names, *n).map_err(|e| self.fail("loading.steps", e.to_string())),
-            (None, Some(schedule)) => {
-                for (i, step) in schedule.iter().enumerate() {
-                    if let Some(unknown) = step.keys().find(|k| !names.contains(k)) {
-                        return Err(self.fail(
-                            &format!("loading.schedule[{i}]"),
-                            format!("\"{unknown}\" is no load pattern of this scene (patterns: {})", names.join(", ")),
-                        ));
-                    }
-                }
-                let steps =
-                    schedule.iter().map(|s| names.iter().map(|n| s.get(n).copied().unwrap_or(0.0)).collect()).collect();
-                LoadSchedule::new(names, steps).map_err(|e| self.fail("loading.schedule", e.to_string()))
-            }
-            (None, None) => LoadSchedule::ramp(names, 1).map_err(|e| self.fail("loading", e.to_string())),
-        }
     }
 
     /// The solver settings.

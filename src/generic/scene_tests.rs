@@ -74,3 +74,43 @@ fn bad_values_name_their_key() {
     let text = format!("{SCENE}\nbogus = 1\n");
     assert!(GenericScene::from_toml_str(&text, path, &[]).unwrap_err().to_string().contains("bogus"));
 }
+
+/// The scene with `overrides`, or the error's text.
+fn with(overrides: &[&str]) -> Result<GenericScene, String> {
+    let overrides: Vec<String> = overrides.iter().map(ToString::to_string).collect();
+    GenericScene::from_toml_str(SCENE, Path::new("scenes/t.toml"), &overrides).map_err(|e| e.to_string())
+}
+
+#[test]
+fn a_cycle_runs_after_the_preload_as_many_times_as_cycles_says() {
+    let scene = with(&["loading.cycle=[{press=1.0,slide=1.0},{press=1.0,slide=-1.0}]", "loading.cycles=3"]).unwrap();
+    let schedule = scene.schedule().unwrap();
+    // 2 preload steps, then 3 × 2 cycle steps.
+    assert_eq!(schedule.steps().len(), 2 + 6);
+    let at = schedule.patterns().iter().position(|p| p == "slide").unwrap();
+    let slide: Vec<f64> = schedule.steps().iter().map(|s| s[at]).collect();
+    assert_eq!(slide, [0.0, 1.0, 1.0, -1.0, 1.0, -1.0, 1.0, -1.0]);
+    assert_eq!(scene.last_cycle(), Some(6..8));
+    // Without `cycles`: one cycle.
+    let once = with(&["loading.cycle=[{press=1.0,slide=1.0}]"]).unwrap();
+    assert_eq!(once.schedule().unwrap().steps().len(), 3);
+    assert_eq!(with(&[]).unwrap().last_cycle(), None);
+}
+
+#[test]
+fn bad_cycles_are_errors_naming_the_key() {
+    let cases: [(&[&str], &str); 5] = [
+        (&["loading.cycles=2"], "loading.cycles: no loading.cycle"),
+        (&["loading.cycle=[{slide=1.0}]", "loading.cycles=0"], "loading.cycles: 0 cycles"),
+        (&["loading.cycle=[]", "loading.cycles=2"], "loading.cycle: an empty cycle"),
+        (&["loading.cycle=[{slide=1.0},{slide=-1.0}]", "loading.cycles=5000"], "exceed 10000 steps"),
+        (&["loading.cycle=[{slide=1.0},{twist=1.0}]"], "loading.cycle[1]: \"twist\" is no load pattern"),
+    ];
+    for (overrides, expected) in cases {
+        let err = with(overrides).unwrap_err();
+        assert!(err.contains(expected), "{overrides:?}: {err}");
+    }
+    // A count that overflows the step count is the same error, not a panic.
+    let err = with(&["loading.cycle=[{slide=1.0},{slide=-1.0}]", "loading.cycles=9223372036854775807"]).unwrap_err();
+    assert!(err.contains("loading.cycles"), "{err}");
+}

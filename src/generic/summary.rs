@@ -7,7 +7,9 @@ use web_time::Instant;
 
 use contact2d_contact::{BuiltProblem, ContactError, LinearSolver, SolvedStep, check_energy_balance, energy_scale};
 
+use super::fretting::FrettingWatch;
 use super::results::{self, FixedGroup, StepResult};
+use super::sliding::SlidingWatch;
 use super::{FloatingReport, GenericReport, GenericScene, GroupReport, Times, scene, setup_notes};
 
 /// The summary rows of a history, made one step at a time as each is solved (see
@@ -17,6 +19,8 @@ pub struct SummaryRows<'a> {
     every_profile: bool,
     rows: Vec<StepResult>,
     first_non_finite: Option<String>,
+    sliding: SlidingWatch,
+    fretting: Option<FrettingWatch>,
 }
 
 impl<'a> SummaryRows<'a> {
@@ -28,7 +32,14 @@ impl<'a> SummaryRows<'a> {
             every_profile,
             rows: vec![],
             first_non_finite: None,
+            sliding: SlidingWatch::new(built),
+            fretting: None,
         }
+    }
+
+    /// The same rows, following the fretting numbers of the last load cycle too.
+    pub fn with_fretting(self, watch: FrettingWatch) -> Self {
+        SummaryRows { fretting: Some(watch), ..self }
     }
 
     /// The row of the next step, solved on `built` (the history's problem, or one of the same
@@ -39,6 +50,10 @@ impl<'a> SummaryRows<'a> {
     pub fn push(&mut self, built: &'a BuiltProblem, step: &SolvedStep) -> Result<(), ContactError> {
         self.results.rebase(built);
         let row = self.results.push(step, self.every_profile)?;
+        self.sliding.observe(&step.solution);
+        if let Some(watch) = &mut self.fretting {
+            watch.observe(built, &step.solution)?;
+        }
         // Checked one row at a time: the whole summary as one JSON value grows with the steps.
         if self.first_non_finite.is_none() {
             let value = serde_json::to_value(&row).unwrap_or(serde_json::Value::Null);
@@ -79,11 +94,19 @@ pub struct SummaryInput<'s> {
 pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<GenericReport, ContactError> {
     let post_clock = Instant::now();
     let SummaryInput { scene, built, last: last_step, groups, scaled, total_steps: total, mut times, clock } = input;
-    let SummaryRows { results, rows: summary_steps, first_non_finite, .. } = rows;
+    let SummaryRows { results, rows: summary_steps, first_non_finite, sliding, fretting, .. } = rows;
     let Some(last) = summary_steps.last() else {
         return Err(ContactError::InvalidInput("no load step solved".into()));
     };
-    let last = StepResult { contacts: results.contacts_with_profiles(&last_step.solution), ..last.clone() };
+    let mut contacts = results.contacts_with_profiles(&last_step.solution);
+    if let Some(found) = fretting.as_ref().and_then(|w| w.results(built)) {
+        for (info, f) in built.interfaces.iter().zip(found) {
+            if let Some(c) = contacts.get_mut(&info.name) {
+                c.fretting = Some(Box::new(f));
+            }
+        }
+    }
+    let last = StepResult { contacts, ..last.clone() };
     // A body held only by contact that crosses a gap under a force moves rigidly first: the work
     // of the force on that travel is stored nowhere in a quasi-static model (there is no kinetic
     // energy), so the energy balance is no check of the numbers there.
@@ -111,6 +134,7 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
     let node_to_segment: Vec<bool> =
         scene.contact.iter().map(|c| c.pairing == scene::PairingKey::NodeToSegment).collect();
     notes.extend(setup_notes::quadratic_node_to_segment_notes(built, &node_to_segment));
+    notes.extend(sliding.notes());
     let (poor, count) = crate::mesh_summary::poor_cells(&built.problem.model.mesh);
     if count > 0 {
         let worst: Vec<String> = poor.iter().take(3).map(ToString::to_string).collect();

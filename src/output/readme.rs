@@ -31,6 +31,16 @@ pub fn describe_generic(name: &str) -> &'static str {
             "one interface's profile at the last step: s, x, y, pressure, shear, gap, slip, state"
         }
         (s, _) if s.starts_with("contact_") => "pressure and shear along one interface's master curve (last step)",
+        (s, Some("csv")) if s.starts_with("fretting_") => {
+            "one interface's fretting numbers over the last load cycle, per pair: s, slip_amplitude, dissipation, \
+             shear_max, sigma_tt, ruiz"
+        }
+        (s, Some("csv")) if s.starts_with("hysteresis_") => {
+            "one interface's hysteresis loop over the last load cycle: step, displacement, tangential_force"
+        }
+        (s, _) if s.starts_with("hysteresis_") => {
+            "one interface's tangential force against the reference groups' relative displacement (last cycle)"
+        }
         _ => "",
     }
 }

@@ -23,6 +23,7 @@ use contact2d_mesh::{Contour, Mesh};
 use super::{PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem};
 use crate::generic::scene::{
     BodyEntry, ContactEntry, FixEntry, FormulationKey, GapKey, GenericScene, LoadingSection, PairingKey, PlaneKey,
+    SlidingKey,
 };
 use crate::schema::SolverEntry;
 
@@ -70,6 +71,8 @@ impl PlateInsert {
             gap: GapKey::Named("geometric".into()),
             friction: self.friction,
             self_contact: false,
+            sliding: SlidingKey::Small,
+            reference_groups: None,
         };
         let schedule = loads.iter().map(|w| BTreeMap::from([(DEFAULT_PATTERN.to_string(), *w)])).collect();
         GenericScene {
@@ -84,7 +87,7 @@ impl PlateInsert {
             fix: fixes,
             load: vec![],
             contact: vec![contact],
-            loading: LoadingSection { steps: None, schedule: Some(schedule) },
+            loading: LoadingSection { steps: None, schedule: Some(schedule), cycle: None, cycles: None },
             solver: SolverEntry { place_zone_ends: None, ..solver.clone() },
             base_dir: PathBuf::new(),
             file: PathBuf::from(&self.mesh),

@@ -19,6 +19,7 @@ pub mod flagship;
 pub mod hertz;
 pub mod incline;
 pub mod interference_fit;
+pub mod mindlin_deresiewicz;
 pub mod pin_lug;
 mod profile;
 pub mod report;
@@ -149,8 +150,16 @@ pub enum VerifyError {
 }
 
 /// The names of the gallery's cases, in the order they run.
-pub const CASES: [&str; 7] =
-    ["contact_patch", "hertz", "cattaneo_mindlin", "interference_fit", "incline", "pin_lug", "flagship"];
+pub const CASES: [&str; 8] = [
+    "contact_patch",
+    "hertz",
+    "cattaneo_mindlin",
+    "mindlin_deresiewicz",
+    "interference_fit",
+    "incline",
+    "pin_lug",
+    "flagship",
+];
 
 /// Runs one case by name; `root` is the repository root (where `scenes/` and `meshes/` are).
 ///
@@ -161,6 +170,7 @@ pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, Ver
         "contact_patch" => contact_patch::run(root, level),
         "hertz" => hertz::run(root, level),
         "cattaneo_mindlin" => cattaneo_mindlin::run(root, level),
+        "mindlin_deresiewicz" => mindlin_deresiewicz::run(root, level),
         "interference_fit" => interference_fit::run(root, level),
         "incline" => incline::run(root, level),
         "pin_lug" => pin_lug::run(root, level),
@@ -179,7 +189,7 @@ pub struct VerifyArgs {
     #[arg(long, default_value = "fast", value_parser = ["fast", "full"])]
     pub level: String,
     /// Cases to run, comma separated (default: all of contact_patch, hertz, cattaneo_mindlin,
-    /// interference_fit, incline, pin_lug, flagship).
+    /// mindlin_deresiewicz, interference_fit, incline, pin_lug, flagship).
     #[arg(long, value_delimiter = ',')]
     pub cases: Vec<String>,
     /// The repository root (where `scenes/` and `meshes/` are).
