@@ -123,13 +123,7 @@ impl Cycle {
 /// five-point Gauss–Legendre on 2 000 panels (the integrand's end singularities are of the
 /// orders 3/2 and 1/2: relative error below 1e-7, far under the checks' tolerances).
 pub fn slip_integral(k: f64) -> f64 {
-    const G: [(f64, f64); 5] = [
-        (-0.906_179_845_938_664, 0.236_926_885_056_189),
-        (-0.538_469_310_105_683, 0.478_628_670_499_366),
-        (0.0, 0.568_888_888_888_889),
-        (0.538_469_310_105_683, 0.478_628_670_499_366),
-        (0.906_179_845_938_664, 0.236_926_885_056_189),
-    ];
+    const G: [(f64, f64); 5] = contact2d_mesh::GAUSS5;
     if !(k > 0.0 && k < 1.0) {
         return 0.0;
     }

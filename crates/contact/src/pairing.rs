@@ -248,13 +248,7 @@ fn snap(xi: f64) -> f64 {
 
 /// `w_a = Σ_edges ∫ N_a ds` for every node of the contour (5-point Gauss per edge).
 pub fn tributary_weights(contour: &Contour) -> Vec<f64> {
-    const G: [(f64, f64); 5] = [
-        (-0.906_179_845_938_664, 0.236_926_885_056_189),
-        (-0.538_469_310_105_683, 0.478_628_670_499_366),
-        (0.0, 0.568_888_888_888_889),
-        (0.538_469_310_105_683, 0.478_628_670_499_366),
-        (0.906_179_845_938_664, 0.236_926_885_056_189),
-    ];
+    const G: [(f64, f64); 5] = contact2d_mesh::GAUSS5;
     let mut w = vec![0.0; contour.nodes.len()];
     for e in &contour.edges {
         // Contour indices of start, end and mid in `nodes`.

@@ -64,7 +64,10 @@ pub struct Contour {
     points: Vec<[f64; 2]>,
 }
 
-const GAUSS5: [(f64, f64); 5] = [
+/// Five-point Gauss–Legendre rule on [−1, 1] as (point, weight) pairs: exact for polynomials up
+/// to degree 9 (the arc lengths and tributary weights of quadratic edges; shared with the
+/// contact crate's weights and the verification gallery's integrals).
+pub const GAUSS5: [(f64, f64); 5] = [
     (-0.906_179_845_938_664, 0.236_926_885_056_189),
     (-0.538_469_310_105_683, 0.478_628_670_499_366),
     (0.0, 0.568_888_888_888_889),

@@ -8,7 +8,7 @@ pub mod morph;
 pub mod msh;
 pub mod orientation;
 
-pub use contour::{Contour, ContourEdge, line_cell_length};
+pub use contour::{Contour, ContourEdge, GAUSS5, line_cell_length};
 pub use error::{Location, MeshError};
 pub use mesh::{CellBlock, CellKind, Mesh, NodeId, PhysicalGroup};
 pub use msh::{MshFormat, MshReport, encode_msh, parse_msh, parse_msh_with_report, read_msh, write_msh};
