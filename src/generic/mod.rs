@@ -362,6 +362,9 @@ fn solve_generic_from(
     // Each step's summary row is made as the step is solved; of the steps before, the rows
     // keep only what the next step needs.
     let mut rows = SummaryRows::new(&built, &fixed, scene.every_profile);
+    if scene.linearised_displacements {
+        rows = rows.without_sliding_check();
+    }
     if let Some(cycle) = scene.last_cycle() {
         let references: Vec<Option<[String; 2]>> = scene.contact.iter().map(|c| c.reference_groups.clone()).collect();
         rows = rows.with_fretting(fretting::FrettingWatch::new(&built, cycle, &references).map_err(contact_error)?);

@@ -288,6 +288,12 @@ pub struct GenericScene {
     /// (not a scene key: `run --profiles all`).
     #[serde(skip)]
     pub every_profile: bool,
+    /// The displacements are in a unit of their own, a reference displacement L0 ≪ the lengths'
+    /// unit (a preset's linearised theory, as the paper's u / L0 against x / R): the
+    /// small-sliding check, which compares displacements with segment lengths, does not apply
+    /// (not a scene key: set by the preset that expands into this scene).
+    #[serde(skip)]
+    pub linearised_displacements: bool,
 }
 
 /// Whether the TOML text is a generic scene (it has a top-level `mesh` and no `[plate_insert]`).

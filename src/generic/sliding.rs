@@ -57,6 +57,11 @@ pub struct SlidingWatch {
 }
 
 impl SlidingWatch {
+    /// A watch of no interface: no note, ever.
+    pub fn none() -> SlidingWatch {
+        SlidingWatch { interfaces: vec![], steps: 0 }
+    }
+
     /// Before the first step of a history of `built`: each pair's segment length `h_k`.
     pub fn new(built: &BuiltProblem) -> SlidingWatch {
         let pairs = &built.problem.pairs;

@@ -37,6 +37,12 @@ impl<'a> SummaryRows<'a> {
         }
     }
 
+    /// The same rows without the small-sliding check, for a scene whose displacements are in a
+    /// unit of their own ([`super::GenericScene::linearised_displacements`]).
+    pub fn without_sliding_check(self) -> Self {
+        SummaryRows { sliding: SlidingWatch::none(), ..self }
+    }
+
     /// The same rows, following the fretting numbers of the last load cycle too.
     pub fn with_fretting(self, watch: FrettingWatch) -> Self {
         SummaryRows { fretting: Some(watch), ..self }

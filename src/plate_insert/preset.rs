@@ -92,6 +92,8 @@ impl PlateInsert {
             base_dir: PathBuf::new(),
             file: PathBuf::from(&self.mesh),
             every_profile: false,
+            // u / L0 against x / R (spec §7): the paper's theory is linearised, L0 ≪ R.
+            linearised_displacements: true,
         }
     }
 

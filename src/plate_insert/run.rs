@@ -240,7 +240,7 @@ fn outcome_of_steps(
     let (Some(first), Some(last), Some(last_step)) = (steps.first(), steps.last(), solved.last()) else {
         return Err(ContactError::InvalidInput("no load step".into()));
     };
-    let mut rows = SummaryRows::new(&first.case.built, &fixed, expanded.every_profile);
+    let mut rows = SummaryRows::new(&first.case.built, &fixed, expanded.every_profile).without_sliding_check();
     for (step, solved) in steps.iter().zip(&solved) {
         rows.push(&step.case.built, solved)?;
     }
