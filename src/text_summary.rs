@@ -56,6 +56,9 @@ pub(crate) fn print_summary(
         if let Some([f1, f2]) = c.rigid_resultant {
             writeln!(out, "  contact {name}: rigid obstacle's resultant [{f1:.6e}, {f2:.6e}]")?;
         }
+        if let Some(f) = c.fretting.as_deref() {
+            print_fretting(out, name, f)?;
+        }
     }
     // A component the group's own fixes do not prescribe is "none" (JSON null).
     let component = |f: Option<f64>| f.map_or_else(|| "none".to_string(), |v| format!("{v:.6e}"));
@@ -107,4 +110,22 @@ fn print_paper(out: &mut impl Write, r: &PaperReport) -> std::io::Result<()> {
         writeln!(out, "  violated at step {}, pair {} (η = {:.4}): {}", v.step, v.pair, v.eta, v.condition)?;
     }
     Ok(())
+}
+
+/// A contact's fretting numbers over the last load cycle, in one line: the energy dissipated,
+/// the largest slip amplitude and the Ruiz parameter's maximum, each with where it lies.
+fn print_fretting(
+    out: &mut dyn std::io::Write,
+    name: &str,
+    f: &contact2d::generic::fretting::Fretting,
+) -> std::io::Result<()> {
+    let [first, last] = f.steps;
+    let amplitude =
+        f.slip_amplitude.iter().zip(&f.s).fold((0.0f64, f64::NAN), |m, (a, s)| if *a > m.0 { (*a, *s) } else { m });
+    let [ruiz, at, ..] = f.ruiz_max;
+    writeln!(
+        out,
+        "  contact {name}: last cycle (steps {first}–{last}): dissipated {:.6e}, slip amplitude up to {:.6e} at s = {:.4e}, Ruiz parameter up to {ruiz:.6e} at s = {at:.4e}",
+        f.dissipated, amplitude.0, amplitude.1
+    )
 }

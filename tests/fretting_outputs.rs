@@ -47,3 +47,23 @@ fn fretting_table_and_hysteresis_loop_are_written_and_close() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The text summary states the last cycle's numbers the JSON holds (the same run, printed two
+/// ways): the cycle's steps and the energy dissipated to the printed six digits.
+#[test]
+fn the_text_summary_reports_the_last_cycle() {
+    let run = |json: bool| {
+        let mut args = vec!["run", "scenes/generic/cattaneo_mindlin_fretting.toml", "--quiet"];
+        if json {
+            args.push("--json");
+        }
+        let out = Command::new(env!("CARGO_BIN_EXE_contact2d")).args(&args).output().unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let summary: serde_json::Value = serde_json::from_str(&run(true)).unwrap();
+    let dissipated = summary["contacts"]["roller"]["fretting"]["dissipated"].as_f64().unwrap();
+    let text = run(false);
+    let line = text.lines().find(|l| l.contains("last cycle")).unwrap_or_else(|| panic!("{text}"));
+    assert!(line.contains("steps 41–60") && line.contains(&format!("dissipated {dissipated:.6e}")), "{line}");
+}
