@@ -16,8 +16,8 @@ use std::path::Path;
 use contact2d::doc_sections::publish_section;
 use contact2d::element::{Formulation, LOCKING_POISSON_THRESHOLD, PlaneCondition};
 use contact2d::mesh::CellKind;
+use contact2d::plate_insert::PlateInsertScene;
 use contact2d::run::solve_scene;
-use contact2d::scene::Scene;
 use contact2d_verification::lame::{LameLevel, LameSetup, lame_study, standard_levels};
 
 const LAME_NUS: [f64; 4] = [0.3, 0.45, 0.49, 0.4999];
@@ -57,7 +57,7 @@ fn lame_table(out: &mut String) -> Result<(), Box<dyn std::error::Error>> {
 
 fn flagship_k(scene: &str, nu: f64, formulation: &str) -> Result<(f64, bool), Box<dyn std::error::Error>> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let scene = Scene::load(
+    let scene = PlateInsertScene::load(
         &root.join("scenes").join(scene),
         &[
             "plate_insert.mesh=\"../meshes/plate_insert/plate_insert_eps0_N32.msh\"".into(),

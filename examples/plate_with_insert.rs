@@ -17,11 +17,11 @@ use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
 
+use contact2d::plate_insert::PlateInsertScene;
 use contact2d::plate_insert::outputs::write_outputs;
 use contact2d::plate_insert::published::{PUBLISHED, PublishedCase};
 use contact2d::plate_insert::report::PaperReport;
 use contact2d::run::{RunOutcome, solve_scene};
-use contact2d::scene::Scene;
 
 /// The measured value of a published quantity (names as in [`PublishedCase::quantities`]).
 fn measured(r: &PaperReport, name: &str) -> Option<f64> {
@@ -45,17 +45,17 @@ fn sig(v: f64) -> String {
 }
 
 /// What one case gives: the scene, its run, the paper's algorithm's report, the output folder.
-type Solved = (Scene, RunOutcome, RunOutcome, PathBuf);
+type Solved = (PlateInsertScene, RunOutcome, RunOutcome, PathBuf);
 
 /// Solves one case with the scene's algorithm (writing its outputs) and with the Boussinesq
 /// algorithm with placed zone ends.
 fn solve(case: &PublishedCase, out: &Path) -> Result<Solved, Box<dyn std::error::Error + Send + Sync>> {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes").join(format!("{}.toml", case.scene));
-    let scene = Scene::load(&path, &[])?;
+    let scene = PlateInsertScene::load(&path, &[])?;
     let outcome = solve_scene(&scene)?;
     let dir = out.join(case.scene);
     write_outputs(&dir, &scene, &outcome)?;
-    let paper = Scene::load(&path, &["solver.algorithm=boussinesq".into()])?;
+    let paper = PlateInsertScene::load(&path, &["solver.algorithm=boussinesq".into()])?;
     let boussinesq = solve_scene(&paper)?;
     Ok((scene, outcome, boussinesq, dir))
 }

@@ -11,7 +11,8 @@
 //! plate_insert  the paper's case as a preset: its [plate_insert] section (scene), its expansion
 //!               into a generic scene (preset), its run and post-processor (run, report, outputs)
 //! output        the writers every run's folder uses
-//! subject       what the studies (compare, sweep) run: any scene behind one interface
+//! scene         any scene file: one reader, one run, one outcome (generic or a preset's)
+//! subject       what the studies (compare, sweep) read of a scene: pairings, quantities, meshes
 //! ```
 
 pub use contact2d_contact as contact;
@@ -31,8 +32,7 @@ pub mod output;
 pub mod plate_insert;
 /// The plate-insert preset's run (`crate::plate_insert::run`), at its historical path.
 pub use plate_insert::run;
-/// The plate-insert preset's scene file (`crate::plate_insert::scene`), at its historical path.
-pub use plate_insert::scene;
+pub mod scene;
 pub mod schema;
 #[cfg(feature = "native")]
 pub mod stress;

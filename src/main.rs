@@ -194,51 +194,7 @@ fn run(cli: Cli) -> anyhow::Result<()> {
             }
         }
         Command::Run { scene, set, json, out, quiet, verbose, profiles } => {
-            let every_profile = profiles == "all";
-            if contact2d::generic::scene::is_generic(&contact2d::scene::read_scene_text(&scene)?) {
-                return run_generic(&scene, &set, json, out.as_deref(), (quiet, verbose, every_profile));
-            }
-            let mut scene = contact2d::scene::Scene::load(&scene, &set)?;
-            scene.every_profile = every_profile;
-            scene.check_mesh_file()?;
-            // The output folder is checked and locked before the work, so that a bad --out fails
-            // at once and no other run writes there meanwhile.
-            let folder = out
-                .as_deref()
-                .map(|dir| contact2d::output::OutputDir::prepare(dir, Some(contact2d::output::SUMMARY_FILE)))
-                .transpose()?;
-            // A mesh that cannot be read is reported by the run below, with the scene.
-            if let Ok(mesh) = contact2d::mesh::read_msh(scene.mesh_path()) {
-                scene.check_mesh_geometry(&mesh)?;
-            }
-            let mut bar = StepBar::new(quiet || json);
-            // Set-up failures past the scene checks concern the mesh: name both files.
-            let outcome = contact2d::run::solve_scene_with(&scene, &mut bar).map_err(|e| {
-                anyhow::anyhow!("scene {}, mesh {}: {e}", scene.file.display(), scene.mesh_path().display())
-            })?;
-            bar.finish();
-            if verbose {
-                print_iterations(&outcome);
-            }
-            let report = &outcome.report;
-            let mut stdout = std::io::stdout().lock();
-            if json {
-                writeln!(stdout, "{}", serde_json::to_string_pretty(report)?)?;
-            } else {
-                print_summary(&mut stdout, report, Some(&outcome.paper))?;
-            }
-            if let Some(folder) = folder {
-                let written = contact2d::plate_insert::outputs::write_outputs_into(folder, &scene, &outcome)?;
-                // With --json, stdout stays one JSON object; the file list goes to stderr.
-                let list = |p: &std::path::PathBuf| format!("  {}", p.display());
-                let lines: Vec<String> = written.iter().map(list).collect();
-                let text = format!("wrote {} files:\n{}", written.len(), lines.join("\n"));
-                if json {
-                    print_stderr(&text);
-                } else {
-                    writeln!(stdout, "{text}")?;
-                }
-            }
+            run_scene(&scene, &set, json, out.as_deref(), (quiet, verbose, profiles == "all"))?;
         }
         Command::Sweep { scene, vary, set, plot, out, quiet, shard, shards } => {
             let shard = contact2d::sweep::Shard::new(shard, shards)?;
@@ -268,60 +224,60 @@ fn run(cli: Cli) -> anyhow::Result<()> {
     Ok(())
 }
 
-/// `run` on a generic scene: solve, print the summary (text or JSON), write the outputs.
-fn run_generic(
+/// `run`: solve any scene, print the summary (text or JSON), write the outputs.
+fn run_scene(
     path: &std::path::Path,
     set: &[String],
     json: bool,
     out: Option<&std::path::Path>,
     (quiet, verbose, every_profile): (bool, bool, bool),
 ) -> anyhow::Result<()> {
-    let mut scene = contact2d::generic::load_scene(path, set)?;
-    scene.every_profile = every_profile;
-    // The output folder is checked and locked before the work.
+    let mut scene = contact2d::scene::Scene::load(path, set)?;
+    scene.set_every_profile(every_profile);
+    scene.check_mesh_file()?;
+    // The output folder is checked and locked before the work, so that a bad --out fails at
+    // once and no other run writes there meanwhile.
     let mut folder =
         out.map(|dir| contact2d::output::OutputDir::prepare(dir, Some(contact2d::output::SUMMARY_FILE))).transpose()?;
     let mut bar = StepBar::new(quiet || json);
-    // Each step goes to the outputs as it is solved (its VTU file, its line with --verbose) and
-    // only the last step's solution is kept: memory stays flat in the number of steps.
+    // Each step of a generic scene goes to the outputs as it is solved (its VTU file, its line
+    // with --verbose) and only the last step's solution is kept: memory stays flat in the number
+    // of steps.
     let (mut lines, mut write_error) = (vec![], None);
-    let outcome = contact2d::generic::solve_generic_streaming(
-        &scene,
-        &mut |done, total| {
-            use contact2d::run::Progress;
-            bar.step_done(done, total, done as f64);
-        },
-        &mut |built, i, step| {
-            if let Some(folder) = folder.as_mut().filter(|_| write_error.is_none())
-                && let Err(e) = contact2d::generic::outputs::write_step_vtu(folder, built, i, &step.solution)
-            {
-                write_error = Some(e);
-            }
-            if verbose {
-                lines.push(iteration_log(&format!("step {}: factors {:?}", i + 1, step.factors), &step.solution));
-            }
-        },
-    )?;
+    let outcome = scene.solve_streaming(&mut bar, &mut |built, i, step| {
+        if let Some(folder) = folder.as_mut().filter(|_| write_error.is_none())
+            && let Err(e) = contact2d::generic::outputs::write_step_vtu(folder, built, i, &step.solution)
+        {
+            write_error = Some(e);
+        }
+        if verbose {
+            lines.push(iteration_log(&format!("step {}: factors {:?}", i + 1, step.factors), &step.solution));
+        }
+    })?;
     bar.finish();
     if let Some(e) = write_error {
         return Err(e.into());
     }
-    for line in lines {
-        print_stderr(&line);
+    if verbose && let contact2d::scene::Outcome::PlateInsert(_, run) = &outcome {
+        lines = paper_iterations(run);
     }
-    let report = &outcome.report;
+    if !lines.is_empty() {
+        print_stderr(lines.join("\n").trim_end());
+    }
+    let report = outcome.report();
     let mut stdout = std::io::stdout().lock();
     if json {
         // Written as it is serialised: no whole copy of the summary, which grows with the steps.
         serde_json::to_writer_pretty(&mut stdout, report).map_err(std::io::Error::from)?;
         writeln!(stdout)?;
     } else {
-        print_summary(&mut stdout, report, None)?;
+        print_summary(&mut stdout, report, outcome.paper())?;
     }
     if let Some(folder) = folder {
-        let written = contact2d::generic::outputs::finish_generic_outputs(folder, &outcome)?;
+        let written = outcome.finish_streamed_outputs(folder)?;
         let lines: Vec<String> = written.iter().map(|p| format!("  {}", p.display())).collect();
         let text = format!("wrote {} files:\n{}", written.len(), lines.join("\n"));
+        // With --json, stdout stays one JSON object; the file list goes to stderr.
         if json {
             print_stderr(&text);
         } else {
@@ -345,7 +301,7 @@ fn sweep(
     // Unknown or repeated keys and oversized grids fail before any run, and so does a scene that
     // does not load at all (each combination is checked in its run).
     let runs = shard.range(check_variations(scene, &variations, set)?).len();
-    let base = contact2d::subject::Subject::load(scene, set)?;
+    let base = contact2d::scene::Scene::load(scene, set)?;
     let plots: Vec<String> = if plot == DEFAULT_PLOT {
         base.sweep_plots()
     } else {
@@ -405,13 +361,12 @@ fn sweep(
 /// The `--plot` default of `sweep`.
 const DEFAULT_PLOT: &str = "l,b,P";
 
-/// The iteration log of every step (`run -v`), on stderr so that `--json` stays parseable.
-fn print_iterations(outcome: &contact2d::run::RunOutcome) {
+/// The iteration log of every step of the paper's case (`run -v`).
+fn paper_iterations(outcome: &contact2d::run::RunOutcome) -> Vec<String> {
     let steps = outcome.steps.iter().enumerate();
-    let text: Vec<String> = steps
+    steps
         .map(|(i, s)| iteration_log(&format!("step {}: w = {:.6}", i + 1, s.solution.load_factor), &s.solution))
-        .collect();
-    print_stderr(text.join("\n").trim_end());
+        .collect()
 }
 
 /// One step's iteration log: its status and, per iteration of the algorithm, the pairs that

@@ -1,5 +1,5 @@
-//! What the studies (`compare`, `sweep`) run: a generic scene, or a scene of the paper's case (a
-//! `[plate_insert]` section), behind one interface — its pairings, its quantities, its mesh
+//! What the studies (`compare`, `sweep`) read of a scene ([`Scene`]): a generic scene, or the paper's
+//! case (a `[plate_insert]` section), behind one interface — its pairings, its quantities, its mesh
 //! levels, its published references and one run as the JSON summary — so that the tables, the
 //! references and the figures are the same code for both.
 //!
@@ -22,19 +22,9 @@ use std::path::{Path, PathBuf};
 use contact2d_contact::{ContactError, Pairing};
 use serde_json::Value;
 
-use crate::generic::{GenericError, GenericReport, GenericScene, solve_generic_until};
+use crate::generic::{GenericError, GenericReport, Silent};
 use crate::plate_insert::published::published_case;
-use crate::run::solve_scene;
-use crate::scene::{Scene, SceneError, read_scene_text};
-
-/// A scene `compare` can run.
-#[derive(Debug, Clone)]
-pub enum Subject {
-    /// A generic scene.
-    Generic(Box<GenericScene>),
-    /// A scene of the paper's case.
-    Paper(Box<Scene>),
-}
+use crate::scene::Scene;
 
 /// One run as `compare` reads it.
 #[derive(Debug, Clone)]
@@ -64,45 +54,14 @@ pub enum RunFailure {
     Failed(String),
 }
 
-impl Subject {
-    /// Reads the scene at `path` with the overrides `sets`: the paper's case when it has a
-    /// `[plate_insert]` section, a generic scene otherwise.
-    ///
-    /// # Errors
-    /// The scene's [`SceneError`].
-    pub fn load(path: &Path, sets: &[String]) -> Result<Subject, SceneError> {
-        let text = read_scene_text(path)?;
-        let preset = toml::from_str::<toml::Table>(&text).is_ok_and(|t| t.contains_key("plate_insert"));
-        Ok(if preset {
-            Subject::Paper(Box::new(Scene::from_toml_str(&text, path, sets)?))
-        } else {
-            Subject::Generic(Box::new(GenericScene::from_toml_str(&text, path, sets)?))
-        })
-    }
-
-    /// The scene's name (titles of figures).
-    pub fn name(&self) -> &str {
-        match self {
-            Subject::Generic(s) => &s.name,
-            Subject::Paper(s) => &s.name,
-        }
-    }
-
-    /// The scene's own mesh.
-    pub fn mesh_path(&self) -> PathBuf {
-        match self {
-            Subject::Generic(s) => s.mesh_path(),
-            Subject::Paper(s) => s.mesh_path(),
-        }
-    }
-
+impl Scene {
     /// The mesh levels to run when none are given: the scene's own mesh (`None`), or for the
     /// paper's case the N = 16, 32, 64 meshes beside it that exist.
     pub fn default_meshes(&self) -> Vec<Option<PathBuf>> {
         let own = self.mesh_path();
         let name = own.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
         let levels: Vec<Option<PathBuf>> = match (self, name.rsplit_once("_N")) {
-            (Subject::Paper(_), Some((stem, _))) => ["16", "32", "64"]
+            (Scene::PlateInsert(_), Some((stem, _))) => ["16", "32", "64"]
                 .iter()
                 .map(|n| own.with_file_name(format!("{stem}_N{n}.msh")))
                 .filter(|p| p.is_file())
@@ -117,8 +76,8 @@ impl Subject {
     /// The override that sets the mesh.
     pub fn mesh_override(&self, mesh: &Path) -> String {
         let key = match self {
-            Subject::Generic(_) => "mesh",
-            Subject::Paper(_) => "plate_insert.mesh",
+            Scene::Generic(_) => "mesh",
+            Scene::PlateInsert(_) => "plate_insert.mesh",
         };
         format!("{key}={}", toml::Value::String(mesh.display().to_string()))
     }
@@ -126,11 +85,11 @@ impl Subject {
     /// The pairings to run, each as its key and the overrides that select it.
     pub fn pairings(&self) -> Vec<(&'static str, Vec<String>)> {
         match self {
-            Subject::Generic(s) => Pairing::ALL
+            Scene::Generic(s) => Pairing::ALL
                 .iter()
                 .map(|p| (p.key(), (0..s.contact.len()).map(|i| format!("contact.{i}.pairing={}", p.key())).collect()))
                 .collect(),
-            Subject::Paper(_) => ["node_to_node", "node_to_segment"]
+            Scene::PlateInsert(_) => ["node_to_node", "node_to_segment"]
                 .into_iter()
                 .map(|p| (p, vec![format!("plate_insert.pairs={p}")]))
                 .collect(),
@@ -140,7 +99,7 @@ impl Subject {
     /// The quantities compared (dotted paths into the JSON summary, or `energy`).
     pub fn quantities(&self) -> Vec<String> {
         match self {
-            Subject::Generic(s) => {
+            Scene::Generic(s) => {
                 let mut q = vec![];
                 for c in &s.contact {
                     q.push(format!("contacts.{}.max_pressure", c.name));
@@ -152,7 +111,7 @@ impl Subject {
                 q.push("energy".into());
                 q
             }
-            Subject::Paper(s) => {
+            Scene::PlateInsert(s) => {
                 let mut q: Vec<String> = ["P", "l"].map(String::from).to_vec();
                 if s.plate_insert.friction > 0.0 {
                     q.push("b".into());
@@ -167,14 +126,14 @@ impl Subject {
     /// paper's quantities.
     pub fn sweep_columns(&self) -> Vec<String> {
         match self {
-            Subject::Generic(s) => s
+            Scene::Generic(s) => s
                 .contact
                 .iter()
                 .flat_map(|c| {
                     [format!("contacts.{}.normal_force", c.name), format!("contacts.{}.contact_length", c.name)]
                 })
                 .collect(),
-            Subject::Paper(_) => {
+            Scene::PlateInsert(_) => {
                 ["l", "b", "P", "Phi_E1", "Phi_E2", "Phi_f", "W", "sigma_star", "K", "insert_hoop_max"]
                     .map(String::from)
                     .to_vec()
@@ -185,15 +144,15 @@ impl Subject {
     /// The quantities a sweep plots by default: its columns, or the paper's l, b and P.
     pub fn sweep_plots(&self) -> Vec<String> {
         match self {
-            Subject::Generic(_) => self.sweep_columns(),
-            Subject::Paper(_) => ["l", "b", "P"].map(String::from).to_vec(),
+            Scene::Generic(_) => self.sweep_columns(),
+            Scene::PlateInsert(_) => ["l", "b", "P"].map(String::from).to_vec(),
         }
     }
 
     /// The published values of the scene's quantities (the paper's bundled cases), as
     /// `(quantity, value)`; empty for a generic scene or a case the paper does not give.
     pub fn published(&self) -> Vec<(String, f64)> {
-        let Subject::Paper(s) = self else { return vec![] };
+        let Scene::PlateInsert(s) = self else { return vec![] };
         let Some(case) = published_case(&s.name) else { return vec![] };
         let compared = self.quantities();
         case.quantities()
@@ -208,23 +167,12 @@ impl Subject {
     /// # Errors
     /// [`RunFailure`] with the library's message.
     pub fn run(&self, deadline: Option<web_time::Instant>) -> Result<RunSummary, RunFailure> {
-        let timed_out = |e: &ContactError| matches!(e, ContactError::DeadlineExceeded { .. });
-        match self {
-            Subject::Generic(scene) => match solve_generic_until(scene, deadline, &mut |_, _| {}) {
-                Ok(outcome) => Ok(RunSummary::of(&outcome.report)),
-                Err(GenericError::Contact { source, .. }) if timed_out(&source) => {
-                    Err(RunFailure::TimedOut(source.to_string()))
-                }
-                Err(e) => Err(RunFailure::Failed(e.to_string())),
-            },
-            Subject::Paper(scene) => {
-                let scene = Scene { deadline, ..(**scene).clone() };
-                match solve_scene(&scene) {
-                    Ok(outcome) => Ok(RunSummary::of(&outcome.report)),
-                    Err(e) if timed_out(&e) => Err(RunFailure::TimedOut(e.to_string())),
-                    Err(e) => Err(RunFailure::Failed(e.to_string())),
-                }
+        match self.solve(deadline, &mut Silent) {
+            Ok(outcome) => Ok(RunSummary::of(outcome.report())),
+            Err(GenericError::Contact { source, .. }) if matches!(*source, ContactError::DeadlineExceeded { .. }) => {
+                Err(RunFailure::TimedOut(source.to_string()))
             }
+            Err(e) => Err(RunFailure::Failed(e.to_string())),
         }
     }
 }

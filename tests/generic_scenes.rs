@@ -15,7 +15,7 @@
 use std::path::Path;
 
 use contact2d::generic::{load_scene, solve_generic};
-use contact2d::scene::Scene;
+use contact2d::plate_insert::PlateInsertScene;
 
 fn close(a: f64, b: f64, what: &str) {
     assert!((a - b).abs() <= 1e-10 * b.abs().max(1e-12), "{what}: generic {a} against preset {b}");
@@ -23,7 +23,7 @@ fn close(a: f64, b: f64, what: &str) {
 
 #[test]
 fn the_flagship_in_the_generic_schema_gives_the_presets_numbers() {
-    let preset = Scene::load(Path::new("scenes/plate_insert_nogap_mu03.toml"), &[]).unwrap();
+    let preset = PlateInsertScene::load(Path::new("scenes/plate_insert_nogap_mu03.toml"), &[]).unwrap();
     let preset = contact2d::run::solve_scene(&preset).unwrap();
     let generic = load_scene(Path::new("scenes/generic/plate_insert_nogap_mu03.toml"), &[]).unwrap();
     let generic = solve_generic(&generic, &mut |_, _| {}).unwrap();

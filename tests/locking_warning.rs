@@ -12,11 +12,11 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use contact2d::element::LOCKING_POISSON_THRESHOLD;
+use contact2d::plate_insert::PlateInsertScene;
 use contact2d::run::{RunOutcome, solve_scene};
-use contact2d::scene::Scene;
 
 fn run(nu: f64, formulation: &str) -> RunOutcome {
-    let scene = Scene::load(
+    let scene = PlateInsertScene::load(
         std::path::Path::new("scenes/plate_insert_nogap_mu0.toml"),
         &[
             "plate_insert.mesh=\"../meshes/plate_insert/plate_insert_eps0_N16.msh\"".into(),
@@ -46,11 +46,11 @@ fn standard_elements_warn_and_lock_bbar_does_not() {
 
 #[test]
 fn unknown_formulation_is_a_scene_error() {
-    let e = Scene::load(
+    let e = PlateInsertScene::load(
         std::path::Path::new("scenes/plate_insert_nogap_mu0.toml"),
         &["plate_insert.formulation=\"mixed\"".into()],
     );
     assert!(e.is_err());
-    let s = Scene::load(std::path::Path::new("scenes/plate_insert_nogap_mu0.toml"), &[]).unwrap();
+    let s = PlateInsertScene::load(std::path::Path::new("scenes/plate_insert_nogap_mu0.toml"), &[]).unwrap();
     assert_eq!(s.plate_insert().formulation, contact2d::element::Formulation::Standard);
 }

@@ -180,8 +180,8 @@ fn a_run_killed_at_any_moment_leaves_a_whole_folder_or_no_summary() {
 
 #[test]
 fn figures_that_cannot_be_drawn_are_skipped_with_a_note() {
-    use contact2d::scene::Scene;
-    let scene = Scene::load(Path::new(SCENE), &[MESH.to_string()]).unwrap();
+    use contact2d::plate_insert::PlateInsertScene;
+    let scene = PlateInsertScene::load(Path::new(SCENE), &[MESH.to_string()]).unwrap();
     let mut outcome = contact2d::run::solve_scene(&scene).unwrap();
     // A non-finite displacement (what w = 1e308 produced): the mesh figure and the von Mises
     // field cannot be drawn; the run's other files are still written, whole.

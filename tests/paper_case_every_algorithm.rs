@@ -28,15 +28,15 @@ use std::path::Path;
 
 use contact2d::contact::{ContactAlgorithm, ContactError};
 use contact2d::generic::{GenericError, load_scene, solve_generic};
+use contact2d::plate_insert::PlateInsertScene;
 use contact2d::run::{RunOutcome, solve_scene};
-use contact2d::scene::Scene;
 
 const PRESET: &str = "scenes/plate_insert_nogap_mu03.toml";
 const TWIN: &str = "scenes/generic/plate_insert_nogap_mu03.toml";
 
 fn preset(overrides: &[&str]) -> RunOutcome {
     let overrides: Vec<String> = overrides.iter().map(|s| s.to_string()).collect();
-    solve_scene(&Scene::load(Path::new(PRESET), &overrides).unwrap()).unwrap()
+    solve_scene(&PlateInsertScene::load(Path::new(PRESET), &overrides).unwrap()).unwrap()
 }
 
 fn relative(a: f64, b: f64) -> f64 {

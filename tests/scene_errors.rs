@@ -4,7 +4,8 @@
 
 use std::path::Path;
 
-use contact2d::scene::{Scene, SceneError};
+use contact2d::plate_insert::PlateInsertScene;
+use contact2d::scene::SceneError;
 
 const SCENE: &str = r#"
 name = "t"
@@ -16,12 +17,12 @@ load = 1.0
 algorithm = "active_set"
 "#;
 
-fn check(overrides: &[&str]) -> Result<Scene, SceneError> {
+fn check(overrides: &[&str]) -> Result<PlateInsertScene, SceneError> {
     let overrides: Vec<String> = overrides.iter().map(|s| (*s).to_string()).collect();
-    Scene::from_toml_str(SCENE, Path::new("dir/s.toml"), &overrides)
+    PlateInsertScene::from_toml_str(SCENE, Path::new("dir/s.toml"), &overrides)
 }
 
-fn key_of(r: Result<Scene, SceneError>) -> String {
+fn key_of(r: Result<PlateInsertScene, SceneError>) -> String {
     match r {
         Err(SceneError::Value { key, path, .. }) => {
             assert_eq!(path, "dir/s.toml");
@@ -87,14 +88,14 @@ fn contradictions_are_errors_and_compatible_combinations_are_not() {
 #[test]
 fn file_errors_give_the_line_and_the_key() {
     let text = SCENE.replace("load = 1.0", "load = \"x\"");
-    let e = Scene::from_toml_str(&text, Path::new("s.toml"), &[]).unwrap_err().to_string();
+    let e = PlateInsertScene::from_toml_str(&text, Path::new("s.toml"), &[]).unwrap_err().to_string();
     assert!(e.contains("line 6") && e.contains("plate_insert.load") && !e.contains('\n'), "{e}");
-    let e = Scene::from_toml_str("a = [", Path::new("s.toml"), &[]).unwrap_err().to_string();
+    let e = PlateInsertScene::from_toml_str("a = [", Path::new("s.toml"), &[]).unwrap_err().to_string();
     assert!(e.contains("line 1") && e.contains("s.toml"), "{e}");
     let dir = std::env::temp_dir().join(format!("contact2d-scene-utf8-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("bad.toml"), b"name = \"\xff\"").unwrap();
-    let e = Scene::load(&dir.join("bad.toml"), &[]).unwrap_err().to_string();
+    let e = PlateInsertScene::load(&dir.join("bad.toml"), &[]).unwrap_err().to_string();
     assert!(e.contains("UTF-8") && e.contains("bad.toml"), "{e}");
 }
 

@@ -7,7 +7,8 @@
 use std::path::Path;
 use std::sync::OnceLock;
 
-use contact2d::scene::{Scene, SceneError};
+use contact2d::plate_insert::PlateInsertScene;
+use contact2d::scene::SceneError;
 use proptest::prelude::*;
 
 const PATH: &str = "scenes/mutated.toml";
@@ -25,7 +26,7 @@ fn scenes() -> &'static [String] {
 
 /// Parses and checks the outcome: a valid scene or a one-line typed error naming its source.
 fn parse_checked(text: &str, overrides: &[String]) {
-    match Scene::from_toml_str(text, Path::new(PATH), overrides) {
+    match PlateInsertScene::from_toml_str(text, Path::new(PATH), overrides) {
         Ok(scene) => {
             scene.validate().unwrap();
             let p = &scene.plate_insert;
@@ -194,6 +195,6 @@ proptest! {
 fn the_bundled_scenes_are_valid() {
     for text in scenes() {
         parse_checked(text, &[]);
-        assert!(Scene::from_toml_str(text, Path::new(PATH), &[]).is_ok());
+        assert!(PlateInsertScene::from_toml_str(text, Path::new(PATH), &[]).is_ok());
     }
 }

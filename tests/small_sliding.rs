@@ -79,7 +79,10 @@ fn pin_in_lug_stays_small() {
 #[test]
 fn the_papers_linearised_preset_is_not_checked() {
     for scene in ["scenes/plate_insert_nogap_mu03.toml", "scenes/plate_insert_gap_v1_mu03.toml"] {
-        let out = contact2d::run::solve_scene(&contact2d::scene::Scene::load(Path::new(scene), &[]).unwrap()).unwrap();
+        let out = contact2d::run::solve_scene(
+            &contact2d::plate_insert::PlateInsertScene::load(Path::new(scene), &[]).unwrap(),
+        )
+        .unwrap();
         assert!(out.report.notes.iter().all(|n| !n.contains("small sliding")), "{scene}: {:?}", out.report.notes);
     }
     let twin = solve("scenes/generic/plate_insert_nogap_mu03.toml", &[]);

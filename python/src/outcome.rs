@@ -10,40 +10,41 @@ use numpy::{IntoPyArray, PyArray2};
 use pyo3::exceptions::{PyIndexError, PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 
-use crate::errors::{ContactError, MeshError, generic_error, scene_error};
-use crate::scene::{Loaded, Scene};
+use crate::errors::{ContactError, generic_error, scene_error};
+use crate::scene::Scene;
 
-/// A solved run of either kind.
-#[derive(Debug)]
-enum Solved {
-    Generic(Box<contact2d::generic::GenericOutcome>),
-    Paper(Box<contact2d::scene::Scene>, Box<contact2d::run::RunOutcome>),
+/// What the arrays are read from: a solved run of either kind.
+trait Solved {
+    /// The mesh of the first solved step.
+    fn mesh(&self) -> &contact2d::mesh::Mesh;
+    /// The model of solved step `k` (the paper's case builds one per step).
+    fn model(&self, k: usize) -> Option<&contact2d::fem::Model>;
+    /// Each solved step's displacement vector (DOF 2·node + component).
+    fn displacements(&self) -> Vec<&[f64]>;
 }
 
-impl Solved {
+impl Solved for contact2d::scene::Outcome {
     fn mesh(&self) -> &contact2d::mesh::Mesh {
         match self {
-            Solved::Generic(o) => &o.built.problem.model.mesh,
-            Solved::Paper(_, o) => match o.steps.first() {
+            Self::Generic(o) => &o.built.problem.model.mesh,
+            Self::PlateInsert(_, o) => match o.steps.first() {
                 Some(step) => &step.case.built.problem.model.mesh,
                 None => &EMPTY_MESH,
             },
         }
     }
 
-    /// The model of solved step `k` (the paper's case builds one per step).
     fn model(&self, k: usize) -> Option<&contact2d::fem::Model> {
         match self {
-            Solved::Generic(o) => o.history.steps.get(k).map(|_| &o.built.problem.model),
-            Solved::Paper(_, o) => o.steps.get(k).map(|s| &s.case.built.problem.model),
+            Self::Generic(o) => o.history.steps.get(k).map(|_| &o.built.problem.model),
+            Self::PlateInsert(_, o) => o.steps.get(k).map(|s| &s.case.built.problem.model),
         }
     }
 
-    /// Each solved step's displacement vector (DOF 2·node + component).
     fn displacements(&self) -> Vec<&[f64]> {
         match self {
-            Solved::Generic(o) => o.history.steps.iter().map(|s| s.solution.displacement.as_slice()).collect(),
-            Solved::Paper(_, o) => o.steps.iter().map(|s| s.solution.displacement.as_slice()).collect(),
+            Self::Generic(o) => o.history.steps.iter().map(|s| s.solution.displacement.as_slice()).collect(),
+            Self::PlateInsert(_, o) => o.steps.iter().map(|s| s.solution.displacement.as_slice()).collect(),
         }
     }
 }
@@ -56,7 +57,7 @@ static EMPTY_MESH: contact2d::mesh::Mesh =
 #[derive(Debug)]
 pub struct Outcome {
     json: String,
-    solved: Mutex<Solved>,
+    solved: Mutex<contact2d::scene::Outcome>,
 }
 
 /// Solves `scene` as `contact2d run SCENE --json` does and returns its outcome; the GIL is
@@ -90,37 +91,17 @@ pub fn solve(py: Python<'_>, scene: &Scene, profiles: &str, threads: Option<usiz
     })
 }
 
-/// The run of [`solve`], without the GIL.
-fn run(loaded: Loaded, every_profile: bool) -> PyResult<Outcome> {
-    let json_of = |report: &contact2d::generic::GenericReport| {
-        serde_json::to_string_pretty(report).map_err(|e| PyRuntimeError::new_err(e.to_string()))
-    };
-    match loaded {
-        Loaded::Generic(mut scene) => {
-            scene.every_profile = every_profile;
-            let outcome = contact2d::generic::solve_generic(&scene, &mut |_, _| {}).map_err(generic_error)?;
-            let json = json_of(&outcome.report)?;
-            Ok(Outcome { json, solved: Mutex::new(Solved::Generic(Box::new(outcome))) })
-        }
-        Loaded::Paper(mut scene) => {
-            // The CLI's order: the mesh file checked, its geometry checked against the scene,
-            // then the run; set-up failures name both files.
-            scene.every_profile = every_profile;
-            scene.check_mesh_file().map_err(scene_error)?;
-            let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
-            let mesh = contact2d::mesh::read_msh(scene.mesh_path())
-                .map_err(|e| MeshError::new_err(format!("scene {scene_name}: mesh {mesh_name}: {e}")))?;
-            scene.check_mesh_geometry(&mesh).map_err(scene_error)?;
-            let outcome = contact2d::run::solve_scene(&scene)
-                .map_err(|e| ContactError::new_err(format!("scene {scene_name}, mesh {mesh_name}: {e}")))?;
-            let json = json_of(&outcome.report)?;
-            Ok(Outcome { json, solved: Mutex::new(Solved::Paper(scene, Box::new(outcome))) })
-        }
-    }
+/// The run of [`solve`], without the GIL: the CLI's (`contact2d run`), every step kept.
+fn run(mut scene: contact2d::scene::Scene, every_profile: bool) -> PyResult<Outcome> {
+    scene.set_every_profile(every_profile);
+    scene.check_mesh_file().map_err(scene_error)?;
+    let outcome = scene.solve(None, &mut contact2d::generic::Silent).map_err(generic_error)?;
+    let json = serde_json::to_string_pretty(outcome.report()).map_err(|e| PyRuntimeError::new_err(e.to_string()))?;
+    Ok(Outcome { json, solved: Mutex::new(outcome) })
 }
 
 impl Outcome {
-    fn with<T>(&self, f: impl FnOnce(&Solved) -> T) -> PyResult<T> {
+    fn with<T>(&self, f: impl FnOnce(&contact2d::scene::Outcome) -> T) -> PyResult<T> {
         let solved = self.solved.lock().map_err(|_| PyRuntimeError::new_err("outcome lock poisoned"))?;
         Ok(f(&solved))
     }
@@ -244,11 +225,7 @@ impl Outcome {
             let solved = self.solved.lock().map_err(|_| PyRuntimeError::new_err("outcome lock poisoned"))?;
             let folder = contact2d::output::OutputDir::prepare(&out_dir, Some(contact2d::output::SUMMARY_FILE))
                 .map_err(|e| PyOSError::new_err(e.to_string()))?;
-            match &*solved {
-                Solved::Generic(o) => contact2d::generic::outputs::write_generic_outputs_into(folder, o),
-                Solved::Paper(scene, o) => contact2d::plate_insert::outputs::write_outputs_into(folder, scene, o),
-            }
-            .map_err(|e| PyOSError::new_err(e.to_string()))
+            solved.write_outputs_into(folder).map_err(|e| PyOSError::new_err(e.to_string()))
         })
     }
 }

@@ -8,16 +8,6 @@ use pyo3::types::PyDict;
 
 use crate::errors::{SceneError, scene_error};
 
-/// A scene as the CLI reads it: a generic scene or the paper's case (a `[plate_insert]`
-/// section), which the facade tells apart as the CLI does.
-#[derive(Debug)]
-pub enum Loaded {
-    /// A generic scene.
-    Generic(Box<contact2d::generic::GenericScene>),
-    /// The paper's case.
-    Paper(Box<contact2d::scene::Scene>),
-}
-
 /// A scene: TOML text plus `--set` overrides, re-loaded through the CLI's parser at every change
 /// so that a bad override fails where it is made.
 #[pyclass(module = "contact2d._core", frozen)]
@@ -33,16 +23,8 @@ impl Scene {
     ///
     /// # Errors
     /// The scene's [`contact2d::scene::SceneError`].
-    pub fn parse(&self) -> Result<Loaded, contact2d::scene::SceneError> {
-        Ok(if contact2d::generic::scene::is_generic(&self.text) {
-            Loaded::Generic(Box::new(contact2d::generic::GenericScene::from_toml_str(
-                &self.text,
-                &self.path,
-                &self.overrides,
-            )?))
-        } else {
-            Loaded::Paper(Box::new(contact2d::scene::Scene::from_toml_str(&self.text, &self.path, &self.overrides)?))
-        })
+    pub fn parse(&self) -> Result<contact2d::scene::Scene, contact2d::scene::SceneError> {
+        contact2d::scene::Scene::from_toml_str(&self.text, &self.path, &self.overrides)
     }
 
     fn checked(self) -> PyResult<Scene> {
@@ -97,10 +79,7 @@ impl Scene {
     /// The scene's name (its `name` key).
     #[getter]
     fn name(&self) -> PyResult<String> {
-        Ok(match self.parse().map_err(scene_error)? {
-            Loaded::Generic(s) => s.name.clone(),
-            Loaded::Paper(s) => s.name.clone(),
-        })
+        Ok(self.parse().map_err(scene_error)?.name().to_string())
     }
 
     /// The path the scene is read as (a file, or `<base_dir>/<dict>.toml` for `from_dict`).
@@ -118,16 +97,13 @@ impl Scene {
     /// The mesh file the scene names, resolved against its directory.
     #[getter]
     fn mesh_path(&self) -> PyResult<PathBuf> {
-        Ok(match self.parse().map_err(scene_error)? {
-            Loaded::Generic(s) => s.mesh_path(),
-            Loaded::Paper(s) => s.mesh_path(),
-        })
+        Ok(self.parse().map_err(scene_error)?.mesh_path())
     }
 
     /// Whether the scene is one of the paper's case (a `[plate_insert]` section).
     #[getter]
     fn is_preset(&self) -> bool {
-        !contact2d::generic::scene::is_generic(&self.text)
+        contact2d::scene::is_preset(&self.text)
     }
 
     fn __repr__(&self) -> String {

@@ -29,7 +29,8 @@ use crate::output::OutputDir;
 use crate::run::{RunOutcome, solve_scene};
 use contact2d_contact::ContactAlgorithm;
 
-use crate::scene::{Scene, SceneError};
+use crate::plate_insert::PlateInsertScene;
+use crate::scene::SceneError;
 
 pub use reference::{Quantity, Reference, ReferenceMethod, richardson};
 
@@ -337,7 +338,7 @@ pub fn run_command(args: &BenchArgs) -> Result<String, BenchError> {
 pub fn check_meshes(config: &BenchConfig) -> Result<(), BenchError> {
     for &case in &config.cases {
         let path = config.scenes.join(case.scene_file());
-        let base = Scene::load(&path, &[])?;
+        let base = PlateInsertScene::load(&path, &[])?;
         for &level in &config.levels {
             let Some(mesh) = mesh_for_level(&base.plate_insert.mesh, level) else { continue };
             let mesh = base.base_dir.join(mesh);
@@ -396,7 +397,7 @@ pub fn run_bench(config: &BenchConfig, bar: &ProgressBar) -> Result<Vec<Measurem
     let mut out = Vec::new();
     for &case in &config.cases {
         let path = config.scenes.join(case.scene_file());
-        let base = Scene::load(&path, &[])?;
+        let base = PlateInsertScene::load(&path, &[])?;
         for &algorithm in &config.algorithms {
             let mut previous: Option<f64> = None;
             for &level in &config.levels {
@@ -416,7 +417,7 @@ fn measure(
     config: &BenchConfig,
     case: BenchCase,
     path: &Path,
-    base: &Scene,
+    base: &PlateInsertScene,
     level: usize,
     algorithm: ContactAlgorithm,
     previous: Option<f64>,
@@ -446,7 +447,7 @@ fn measure(
         reason: format!("scene mesh {} has no _N<level>.msh name", base.plate_insert.mesh.display()),
     })?;
     let overrides = [format!("plate_insert.mesh={mesh:?}"), format!("solver.algorithm=\"{}\"", algorithm.key())];
-    let scene = Scene::load(path, &overrides)?;
+    let scene = PlateInsertScene::load(path, &overrides)?;
     let budget = Instant::now();
     for _ in 0..config.repeats {
         match solve_scene(&scene) {

@@ -47,7 +47,8 @@ use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::{OutputDir, OutputError};
 use crate::schema::SceneError;
 
-use crate::subject::{RunFailure, Subject};
+use crate::scene::Scene;
+use crate::subject::RunFailure;
 
 /// The prefix of a quantity compared with its published value (the paper's case), e.g.
 /// `published:P`: the same value as `P`, against another reference.
@@ -233,7 +234,7 @@ pub fn compare(
             Ok((path.trim().to_string(), value))
         })
         .collect::<Result<_, CompareError>>()?;
-    let base = Subject::load(&args.scene, &args.sets)?;
+    let base = Scene::load(&args.scene, &args.sets)?;
     let meshes: Vec<Option<PathBuf>> = if args.meshes.is_empty() {
         base.default_meshes()
     } else {
@@ -293,7 +294,7 @@ struct Case<'a> {
     mesh: Option<&'a Path>,
 }
 
-fn run_one(args: &CompareArgs, base: &Subject, case: &Case, quantities: &[String]) -> CompareRow {
+fn run_one(args: &CompareArgs, base: &Scene, case: &Case, quantities: &[String]) -> CompareRow {
     let mut sets = args.sets.clone();
     sets.push(format!("solver.algorithm={}", case.algorithm.key()));
     sets.extend_from_slice(case.pairing_sets);
@@ -317,7 +318,7 @@ fn run_one(args: &CompareArgs, base: &Subject, case: &Case, quantities: &[String
         values: BTreeMap::new(),
         errors: BTreeMap::new(),
     };
-    let subject = match Subject::load(&args.scene, &sets) {
+    let subject = match Scene::load(&args.scene, &sets) {
         Ok(s) => s,
         Err(e) => {
             row.reason = Some(e.to_string());

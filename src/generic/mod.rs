@@ -75,6 +75,21 @@ pub enum GenericError {
     },
 }
 
+/// What a run tells while it goes: the CLI shows it as a progress bar (the library prints
+/// nothing).
+pub trait Progress {
+    /// Step `done` of `total` is solved, at load w.
+    fn step_done(&mut self, done: usize, total: usize, w: f64);
+}
+
+/// A [`Progress`] that ignores everything.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Silent;
+
+impl Progress for Silent {
+    fn step_done(&mut self, _done: usize, _total: usize, _w: f64) {}
+}
+
 /// Where a run's time went, seconds.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Default)]
 pub struct Times {

@@ -17,9 +17,10 @@
 
 use contact2d_mesh::Mesh;
 
-use crate::scene::{Scene, SceneError};
+use crate::plate_insert::PlateInsertScene;
+use crate::schema::SceneError;
 
-impl Scene {
+impl PlateInsertScene {
     /// Checks that `mesh` has the geometry the scene's `eps` describes: the hole edge on the
     /// circle of radius 1 about the origin and the insert edge on the circle of radius 1 − ε
     /// about (−ε, 0), each node within 1e-6 (the bundled meshes are exact to 1e-15); then every

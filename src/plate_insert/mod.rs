@@ -37,6 +37,7 @@ pub use contour_history::ContourHistory;
 pub use group_geometry::{MisplacedGroup, check_group_geometry};
 pub use placed::{PlacedLoading, PlacedStep, ZoneEndSearch};
 pub use results::{PLATE_HALF_HEIGHT, PlateInsertResults};
+pub use scene::PlateInsertScene;
 pub use zone_ends::{place_zone_ends, solve_placed_history};
 
 /// Which contour is the master of the pairs (the paper's two variants).

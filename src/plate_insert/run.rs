@@ -13,9 +13,9 @@ use contact2d_contact::{
 };
 
 use crate::generic::{GenericError, GenericReport, GenericScene, SummaryInput, SummaryRows, Times, summarise};
+use crate::plate_insert::PlateInsertScene;
 use crate::plate_insert::report::{BLOCK, PaperReport, PaperStep, paper_report};
 use crate::plate_insert::{PlacedLoading, PlacedStep, PlateInsertProblem, ZoneEndSearch, solve_placed_history};
-use crate::scene::Scene;
 
 /// A solved scene: the summary plus everything the outputs (figures, CSV, VTU) need.
 #[derive(Debug, Clone)]
@@ -37,30 +37,17 @@ pub struct RunOutcome {
 ///
 /// # Errors
 /// Problem set-up failures.
-pub fn solve_scene(scene: &Scene) -> Result<RunOutcome, ContactError> {
+pub fn solve_scene(scene: &PlateInsertScene) -> Result<RunOutcome, ContactError> {
     solve_scene_with(scene, &mut Silent)
 }
 
-/// What a run tells while it goes: the CLI shows it as a progress bar (the library prints
-/// nothing).
-pub trait Progress {
-    /// Step `done` of `total` is solved, at load w.
-    fn step_done(&mut self, done: usize, total: usize, w: f64);
-}
-
-/// A [`Progress`] that ignores everything.
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Silent;
-
-impl Progress for Silent {
-    fn step_done(&mut self, _done: usize, _total: usize, _w: f64) {}
-}
+pub use crate::generic::{Progress, Silent};
 
 /// [`solve_scene`] reporting each solved step to `progress`.
 ///
 /// # Errors
 /// Problem set-up failures.
-pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<RunOutcome, ContactError> {
+pub fn solve_scene_with(scene: &PlateInsertScene, progress: &mut dyn Progress) -> Result<RunOutcome, ContactError> {
     solve_scene_from(scene, None, progress)
 }
 
@@ -73,7 +60,7 @@ pub fn solve_scene_with(scene: &Scene, progress: &mut dyn Progress) -> Result<Ru
 /// Problem set-up failures, and the Boussinesq algorithm with placed zone ends (its search
 /// re-reads the mesh file).
 pub fn solve_scene_on_mesh(
-    scene: &Scene,
+    scene: &PlateInsertScene,
     mesh: contact2d_mesh::Mesh,
     progress: &mut dyn Progress,
 ) -> Result<RunOutcome, ContactError> {
@@ -82,7 +69,7 @@ pub fn solve_scene_on_mesh(
 
 /// The run of [`solve_scene_with`] on the scene's mesh file (`mesh` = `None`) or on `mesh`.
 fn solve_scene_from(
-    scene: &Scene,
+    scene: &PlateInsertScene,
     mesh: Option<contact2d_mesh::Mesh>,
     progress: &mut dyn Progress,
 ) -> Result<RunOutcome, ContactError> {
@@ -269,8 +256,8 @@ pub const PLACED_STEP_BYTES_PER_MESH_BYTE: u64 = 40;
 
 /// Refuses a Boussinesq history with placed zone ends whose steps would together exceed
 /// [`MAX_HISTORY_BYTES`] (estimated from the mesh file's size); the other algorithms keep one
-/// solution vector per step, which [`crate::scene::MAX_STEPS`] bounds.
-fn check_history_memory(scene: &Scene) -> Result<(), ContactError> {
+/// solution vector per step, which [`crate::schema::limits::MAX_STEPS`] bounds.
+fn check_history_memory(scene: &PlateInsertScene) -> Result<(), ContactError> {
     let p = &scene.plate_insert;
     if !scene.solver.places_zone_ends() {
         return Ok(());

@@ -1,4 +1,5 @@
-//! Scene files: a TOML description of a run, parsed at the edge into typed values.
+//! The paper's scene file (a `[plate_insert]` section; [`crate::scene::Scene`] reads any scene and
+//! picks this one by its section): a TOML description of a run, parsed at the edge into typed values.
 //!
 //! ```toml
 //! name = "plate_insert_nogap_mu0"
@@ -29,8 +30,8 @@
 //!
 //! Unknown keys are errors. `--set key.path=value` sets any value (also one the file leaves at its
 //! default) before the scene is checked (the value is parsed as TOML, falling back to a string).
-//! Then [`Scene::validate`] checks every range and the combinations that contradict each other,
-//! and [`Scene::check_mesh_geometry`] that the mesh is the one ε describes. Every error names the
+//! Then [`PlateInsertScene::validate`] checks every range and the combinations that contradict each other,
+//! and [`PlateInsertScene::check_mesh_geometry`] that the mesh is the one ε describes. Every error names the
 //! file and the line (syntax, types), the dotted key (values) or the override at fault; the keys,
 //! units and defaults are tabulated in `docs/user-guide.md`.
 
@@ -179,7 +180,7 @@ pub enum GapKey {
 /// A whole scene.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Scene {
+pub struct PlateInsertScene {
     /// Short name (used in outputs).
     pub name: String,
     /// One line for people.
@@ -206,19 +207,19 @@ pub struct Scene {
     pub every_profile: bool,
 }
 
-impl Scene {
+impl PlateInsertScene {
     /// Reads `path`, applies `overrides` (`key.path=value`), and checks the result
-    /// ([`Scene::from_toml_str`] on the file's text).
+    /// ([`PlateInsertScene::from_toml_str`] on the file's text).
     ///
     /// # Errors
     /// [`SceneError`] naming the file, and the key, line or override at fault.
-    pub fn load(path: &Path, overrides: &[String]) -> Result<Scene, SceneError> {
-        Scene::from_toml_str(&read_scene_text(path)?, path, overrides)
+    pub fn load(path: &Path, overrides: &[String]) -> Result<PlateInsertScene, SceneError> {
+        PlateInsertScene::from_toml_str(&read_scene_text(path)?, path, overrides)
     }
 
     /// Parses a scene from TOML `text` as if read from the file `path` (named in errors; its
     /// directory resolves the mesh path), applies `overrides` and checks the values
-    /// ([`Scene::validate`]). Nothing is read from disk.
+    /// ([`PlateInsertScene::validate`]). Nothing is read from disk.
     ///
     /// # Errors
     /// [`SceneError::Invalid`] for TOML syntax, unknown keys and wrong types (with the line when
@@ -227,16 +228,16 @@ impl Scene {
     ///
     /// # Examples
     /// ```
-    /// use contact2d::scene::Scene;
+    /// use contact2d::plate_insert::PlateInsertScene;
     /// let text = "name = \"t\"\n[plate_insert]\nmesh = \"m.msh\"\nvariant = \"hole_master\"\n\
     ///             load = 1.0\n[solver]\nalgorithm = \"active_set\"\n";
     /// let path = std::path::Path::new("scenes/t.toml");
-    /// let scene = Scene::from_toml_str(text, path, &["plate_insert.friction=0.3".into()]).unwrap();
+    /// let scene = PlateInsertScene::from_toml_str(text, path, &["plate_insert.friction=0.3".into()]).unwrap();
     /// assert_eq!(scene.plate_insert.friction, 0.3);
-    /// assert!(Scene::from_toml_str(text, path, &["plate_insert.poissons_ratio=0.5".into()]).is_err());
+    /// assert!(PlateInsertScene::from_toml_str(text, path, &["plate_insert.poissons_ratio=0.5".into()]).is_err());
     /// ```
-    pub fn from_toml_str(text: &str, path: &Path, overrides: &[String]) -> Result<Scene, SceneError> {
-        let mut scene: Scene = parse_scene_toml(text, path, overrides, &[])?;
+    pub fn from_toml_str(text: &str, path: &Path, overrides: &[String]) -> Result<PlateInsertScene, SceneError> {
+        let mut scene: PlateInsertScene = parse_scene_toml(text, path, overrides, &[])?;
         scene.file = path.to_path_buf();
         scene.base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         scene.validate()?;
@@ -464,12 +465,13 @@ algorithm = "active_set"
     #[test]
     fn loads_defaults_and_overrides() {
         let path = write(SCENE);
-        let s = Scene::load(&path, &["plate_insert.load=0.5".into(), "solver.algorithm=clarabel".into()]).unwrap();
+        let s = PlateInsertScene::load(&path, &["plate_insert.load=0.5".into(), "solver.algorithm=clarabel".into()])
+            .unwrap();
         assert_eq!(s.plate_insert.load, 0.5);
         assert_eq!(s.solver.algorithm, ContactAlgorithm::Clarabel);
         assert_eq!(s.plate_insert.poissons_ratio, 0.3);
         assert_eq!(s.plate_insert().plane, PlaneCondition::Stress);
-        let s = Scene::load(&path, &["plate_insert.plane_condition=strain".into()]).unwrap();
+        let s = PlateInsertScene::load(&path, &["plate_insert.plane_condition=strain".into()]).unwrap();
         assert_eq!(s.plate_insert().plane, PlaneCondition::Strain);
         assert!(s.plate_insert().mesh.ends_with("m.msh"));
     }
@@ -477,15 +479,21 @@ algorithm = "active_set"
     #[test]
     fn unknown_keys_and_bad_overrides_are_errors() {
         let path = write(&format!("{SCENE}\nbogus = 1\n"));
-        assert!(matches!(Scene::load(&path, &[]), Err(SceneError::Invalid { .. })));
+        assert!(matches!(PlateInsertScene::load(&path, &[]), Err(SceneError::Invalid { .. })));
         let path = write(SCENE);
-        assert!(matches!(Scene::load(&path, &["plate_insert.nope=1".into()]), Err(SceneError::Invalid { .. })));
-        assert!(matches!(Scene::load(&path, &["nosuchtable.x=1".into()]), Err(SceneError::Override { .. })));
-        let s = Scene::load(&path, &["plate_insert.friction=0.3".into()]).unwrap();
+        assert!(matches!(
+            PlateInsertScene::load(&path, &["plate_insert.nope=1".into()]),
+            Err(SceneError::Invalid { .. })
+        ));
+        assert!(matches!(PlateInsertScene::load(&path, &["nosuchtable.x=1".into()]), Err(SceneError::Override { .. })));
+        let s = PlateInsertScene::load(&path, &["plate_insert.friction=0.3".into()]).unwrap();
         assert_eq!(s.plate_insert.friction, 0.3);
-        assert!(matches!(Scene::load(&path, &["solver.algorithm=newton".into()]), Err(SceneError::Invalid { .. })));
-        assert!(matches!(Scene::load(&path, &["noequals".into()]), Err(SceneError::Override { .. })));
-        assert!(matches!(Scene::load(Path::new("/nonexistent.toml"), &[]), Err(SceneError::Io { .. })));
-        assert!(matches!(Scene::load(Path::new("/dev/zero"), &[]), Err(SceneError::Unreadable { .. })));
+        assert!(matches!(
+            PlateInsertScene::load(&path, &["solver.algorithm=newton".into()]),
+            Err(SceneError::Invalid { .. })
+        ));
+        assert!(matches!(PlateInsertScene::load(&path, &["noequals".into()]), Err(SceneError::Override { .. })));
+        assert!(matches!(PlateInsertScene::load(Path::new("/nonexistent.toml"), &[]), Err(SceneError::Io { .. })));
+        assert!(matches!(PlateInsertScene::load(Path::new("/dev/zero"), &[]), Err(SceneError::Unreadable { .. })));
     }
 }

@@ -107,13 +107,13 @@ pub(crate) fn apply_override(root: &mut toml::Value, assignment: &str) -> Result
 #[cfg(test)]
 #[allow(clippy::unwrap_used)]
 mod tests {
-    use crate::scene::Scene;
+    use crate::plate_insert::PlateInsertScene;
     use std::path::Path;
 
     const SCENE: &str = "name = \"t\"\n[plate_insert]\nmesh = \"m.msh\"\nvariant = \"hole_master\"\nload = 1.0\n[solver]\nalgorithm = \"active_set\"\n";
 
-    fn load(overrides: &[String]) -> Result<Scene, super::SceneError> {
-        Scene::from_toml_str(SCENE, Path::new("t.toml"), overrides)
+    fn load(overrides: &[String]) -> Result<PlateInsertScene, super::SceneError> {
+        PlateInsertScene::from_toml_str(SCENE, Path::new("t.toml"), overrides)
     }
 
     #[test]
@@ -131,7 +131,7 @@ mod tests {
     fn the_overridden_text_loads_as_the_overrides_do() {
         let sets = ["plate_insert.friction=0.3".to_string()];
         let text = super::overridden_scene_text(SCENE, Path::new("t.toml"), &sets).unwrap();
-        let reloaded = Scene::from_toml_str(&text, Path::new("t.toml"), &[]).unwrap();
+        let reloaded = PlateInsertScene::from_toml_str(&text, Path::new("t.toml"), &[]).unwrap();
         assert_eq!(reloaded.plate_insert.friction, 0.3);
         assert_eq!(reloaded.plate_insert, load(&sets).unwrap().plate_insert);
         let bad = super::overridden_scene_text(SCENE, Path::new("t.toml"), &["plate_insert.friction".into()]);

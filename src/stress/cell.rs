@@ -21,7 +21,7 @@ use contact2d_element::PlaneCondition;
 
 use crate::run::{RunOutcome, solve_scene};
 
-use crate::scene::Scene;
+use crate::plate_insert::PlateInsertScene;
 
 /// Agreement tolerance on P, Φ_E and σ* (relative): Clarabel's interior-point tolerance is
 /// 1e-8 on its residuals and the flagship runs agree to 1e-7 (docs/verification.md); 1e-5
@@ -137,7 +137,7 @@ pub fn run_cell(
     let mut results = Vec::new();
     let mut conditioning = None;
     for &algorithm in algorithms {
-        let outcome = Scene::load(base_scene, &overrides(&cell, mesh, algorithm))
+        let outcome = PlateInsertScene::load(base_scene, &overrides(&cell, mesh, algorithm))
             .map_err(|e| e.to_string())
             .and_then(|scene| solve_scene(&scene).map_err(|e| e.to_string()));
         let result = match outcome {

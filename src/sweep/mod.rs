@@ -22,7 +22,7 @@ use std::path::Path;
 use rayon::prelude::*;
 
 use crate::output::OutputError;
-use crate::subject::Subject;
+use crate::scene::Scene;
 
 mod shard;
 mod writers;
@@ -94,7 +94,7 @@ pub fn check_variations(scene: &Path, variations: &[Variation], base: &[String])
         }
         let mut overrides = base.to_vec();
         overrides.push(format!("{}={}", v.key, v.values[0]));
-        if let Err(e) = Subject::load(scene, &overrides) {
+        if let Err(e) = Scene::load(scene, &overrides) {
             let shown = e.to_string();
             if shown.contains("unknown field") || shown.contains("no table") || shown.contains("no entry") {
                 return Err(SweepError::UnknownKey { key: v.key.clone(), reason: shown });
@@ -214,7 +214,7 @@ pub fn run_sweep_shard(
         .map(|values| {
             let mut overrides = base.to_vec();
             overrides.extend(variations.iter().zip(&values).map(|(v, value)| format!("{}={value}", v.key)));
-            let result = Subject::load(scene, &overrides)
+            let result = Scene::load(scene, &overrides)
                 .map_err(|e| e.to_string())
                 .and_then(|s| s.run(None).map(|r| r.json).map_err(|e| e.to_string()));
             let row = SweepRow { values, result };

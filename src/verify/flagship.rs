@@ -10,9 +10,9 @@
 use std::path::Path;
 
 use super::{CaseReport, Check, Level, Tolerance, VerifyError, scene_path};
+use crate::plate_insert::PlateInsertScene;
 use crate::plate_insert::published::PUBLISHED;
 use crate::run::solve_scene;
-use crate::scene::Scene;
 
 /// Runs every published case with its bundled scene.
 ///
@@ -25,7 +25,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
         ..CaseReport::default()
     };
     for case in PUBLISHED {
-        let scene = Scene::load(&scene_path(root, &format!("scenes/{}.toml", case.scene)), &[])?;
+        let scene = PlateInsertScene::load(&scene_path(root, &format!("scenes/{}.toml", case.scene)), &[])?;
         let outcome = solve_scene(&scene)?;
         if outcome.report.status != "converged" {
             report.notes.push(format!("{}: status {}", case.scene, outcome.report.status));

@@ -22,8 +22,8 @@ use serde::{Deserialize, Serialize};
 use contact2d::generic::GenericReport;
 use contact2d::plate_insert::outputs::profiles::{ProfileRow, contour_profiles};
 use contact2d::plate_insert::published::{PUBLISHED, PublishedCase};
+use contact2d::plate_insert::scene::{PlateInsertScene, VariantKey};
 use contact2d::run::{RunOutcome, Silent, solve_scene_on_mesh};
-use contact2d::scene::{Scene, VariantKey};
 use contact2d_mesh::parse_msh;
 
 use crate::WebError;
@@ -98,8 +98,8 @@ impl FlagshipParams {
     ///
     /// # Errors
     /// [`WebError::Scene`] for a value out of range (the scene file's own checks).
-    pub fn scene(&self, mesh: &str, scene_file: &Path) -> Result<Scene, WebError> {
-        Ok(Scene::from_toml_str(BASE_SCENE, scene_file, &self.overrides(mesh))?)
+    pub fn scene(&self, mesh: &str, scene_file: &Path) -> Result<PlateInsertScene, WebError> {
+        Ok(PlateInsertScene::from_toml_str(BASE_SCENE, scene_file, &self.overrides(mesh))?)
     }
 
     /// The published case these parameters set up (any refinement), if any.
@@ -107,7 +107,7 @@ impl FlagshipParams {
         let scene = self.scene("m.msh", Path::new("teaching.toml")).ok()?;
         let p = &scene.plate_insert;
         PUBLISHED_SCENES.iter().find_map(|(name, text)| {
-            let q = Scene::from_toml_str(text, Path::new("scenes/published.toml"), &[]).ok()?.plate_insert;
+            let q = PlateInsertScene::from_toml_str(text, Path::new("scenes/published.toml"), &[]).ok()?.plate_insert;
             let same = (p.variant, p.stiffness_ratio, p.eps, p.clearance, p.friction, p.load, p.steps)
                 == (q.variant, q.stiffness_ratio, q.eps, q.clearance, q.friction, q.load, q.steps)
                 && (p.gap, p.poissons_ratio, p.rigid_insert, p.pairs)

@@ -29,9 +29,9 @@ use crate::output::{
     FIGURE_EXTENSIONS, OutputDir, OutputError, PresetFiles, SUMMARY_FILE, figure, step_file_name, vtu,
 };
 #[cfg(feature = "native")]
-use crate::run::RunOutcome;
+use crate::plate_insert::PlateInsertScene;
 #[cfg(feature = "native")]
-use crate::scene::Scene;
+use crate::run::RunOutcome;
 
 #[cfg(feature = "native")]
 /// Writes every output of a solved scene into `dir` (see [`write_outputs_into`]); the folder is
@@ -40,7 +40,7 @@ use crate::scene::Scene;
 ///
 /// # Errors
 /// [`OutputError`] naming the folder or the first file that could not be written.
-pub fn write_outputs(dir: &Path, scene: &Scene, outcome: &RunOutcome) -> Result<Vec<PathBuf>, OutputError> {
+pub fn write_outputs(dir: &Path, scene: &PlateInsertScene, outcome: &RunOutcome) -> Result<Vec<PathBuf>, OutputError> {
     write_outputs_into(OutputDir::prepare(dir, Some(SUMMARY_FILE))?, scene, outcome)
 }
 
@@ -54,7 +54,7 @@ pub fn write_outputs(dir: &Path, scene: &Scene, outcome: &RunOutcome) -> Result<
 /// summary and none of this run's files.
 pub fn write_outputs_into(
     mut out: OutputDir,
-    scene: &Scene,
+    scene: &PlateInsertScene,
     outcome: &RunOutcome,
 ) -> Result<Vec<PathBuf>, OutputError> {
     let missing = |reason: &str| OutputError::MissingData { path: out.path().to_path_buf(), reason: reason.into() };
@@ -80,7 +80,7 @@ pub fn write_outputs_into(
 /// The plate-insert preset's own files of a run (module docs).
 pub struct PaperFiles<'a> {
     /// The scene.
-    pub scene: &'a Scene,
+    pub scene: &'a PlateInsertScene,
     /// The solved run.
     pub outcome: &'a RunOutcome,
     /// The last step's contour profiles.

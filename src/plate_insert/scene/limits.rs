@@ -1,11 +1,11 @@
 //! The plate-insert scene's checks of the shared limits ([`crate::schema::limits`]).
 
-use super::{Scene, SceneError};
+use super::{PlateInsertScene, SceneError};
 use crate::schema::limits::{MAGNITUDE_RANGE, MAX_FRICTION, STIFFNESS_RATIO_RANGE};
 
-/// Checks the magnitudes and the name (called by [`Scene::validate`] after the finiteness and
+/// Checks the magnitudes and the name (called by [`PlateInsertScene::validate`] after the finiteness and
 /// sign checks).
-pub(super) fn validate_magnitudes(scene: &Scene) -> Result<(), SceneError> {
+pub(super) fn validate_magnitudes(scene: &PlateInsertScene) -> Result<(), SceneError> {
     let fail = |key: &str, reason: String| SceneError::Value {
         path: scene.file.display().to_string(),
         key: key.to_string(),
@@ -60,8 +60,8 @@ mod tests {
 
     const SCENE: &str = "name = \"t\"\n[plate_insert]\nmesh = \"m.msh\"\nvariant = \"hole_master\"\nload = 1.0\n[solver]\nalgorithm = \"active_set\"\n";
 
-    fn load(overrides: &[String]) -> Result<Scene, SceneError> {
-        Scene::from_toml_str(SCENE, Path::new("t.toml"), overrides)
+    fn load(overrides: &[String]) -> Result<PlateInsertScene, SceneError> {
+        PlateInsertScene::from_toml_str(SCENE, Path::new("t.toml"), overrides)
     }
 
     #[test]
