@@ -42,7 +42,7 @@ fn fretting_table_and_hysteresis_loop_are_written_and_close() {
     let area: f64 = -points.windows(2).map(|w| 0.5 * (w[0].1 + w[1].1) * (w[1].0 - w[0].0)).sum::<f64>();
     let dissipated = fretting["dissipated"].as_f64().unwrap();
     assert!((area - dissipated).abs() <= 0.02 * dissipated, "loop area {area}, dissipated {dissipated}");
-    for f in ["hysteresis_roller.png", "hysteresis_roller.svg"] {
+    for f in ["hysteresis_roller.png", "hysteresis_roller.svg", "fretting_roller.png", "fretting_roller.svg"] {
         assert!(dir.join(f).is_file(), "{f}");
     }
     let _ = std::fs::remove_dir_all(&dir);

@@ -7,7 +7,7 @@
 //! von_mises.png/.svg                the von Mises field (last step)
 //! history.png/.svg                  normal and tangential force of every interface over the steps
 //! contact_<name>.csv                the profile of each interface (last step)
-//! fretting_<name>.csv, hysteresis_<name>.csv/.png/.svg   with a load cycle: src/generic/fretting_outputs.rs
+//! fretting_<name>.*, hysteresis_<name>.*  with a load cycle: src/generic/fretting_outputs.rs
 //! steps.csv                         one row per step: factors, status, resultants per interface
 //! step_000.vtu ... steps.pvd        one VTK file per step and their collection (time = step number)
 //! ```
@@ -135,10 +135,13 @@ pub fn finish_outputs(
             field_plot::draw_von_mises(p, &format!("{name}: von Mises stress (step {n}/{n})"), view)
         })?;
         for (iface, result) in &report.contacts {
-            let Some((f, h)) = result.fretting.as_deref().and_then(|f| f.hysteresis.as_ref().map(|h| (f, h))) else {
-                continue;
-            };
+            let Some(f) = result.fretting.as_deref() else { continue };
             let steps = format!("steps {}–{}", f.steps[0], f.steps[1]);
+            figure(&mut out, &format!("fretting_{}.{ext}", file_safe(iface)), &mut skipped, |p| {
+                let title = format!("{name}: contact \"{iface}\", fretting over the last cycle ({steps})");
+                super::fretting_outputs::draw_fretting(p, &title, f)
+            })?;
+            let Some(h) = &f.hysteresis else { continue };
             figure(&mut out, &format!("hysteresis_{}.{ext}", file_safe(iface)), &mut skipped, |p| {
                 let title = format!("{name}: contact \"{iface}\", hysteresis over the last cycle ({steps})");
                 super::fretting_outputs::draw_hysteresis(p, &title, h)

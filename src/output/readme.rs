@@ -35,6 +35,10 @@ pub fn describe_generic(name: &str) -> &'static str {
             "one interface's fretting numbers over the last load cycle, per pair: s, slip_amplitude, dissipation, \
              shear_max, sigma_tt, ruiz"
         }
+        (s, _) if s.starts_with("fretting_") => {
+            "slip amplitude, dissipation per length and the Ruiz parameter along one interface (last cycle), \
+             each over its largest value"
+        }
         (s, Some("csv")) if s.starts_with("hysteresis_") => {
             "one interface's hysteresis loop over the last load cycle: step, displacement, tangential_force"
         }
