@@ -12,7 +12,7 @@
 //! ```
 //!
 //! Closed form (Nowell & Hills 1987, Int. J. Mech. Sci. 29; Hills & Nowell, *Mechanics of
-//! Fretting Fatigue* (1994) ch. 4): `c = a √(1 − Q/(μP))`, `e = sign(Q) a σ/(4 μ p0)` while
+//! Fretting Fatigue* (1994)): `c = a √(1 − Q/(μP))`, `e = sign(Q) a σ/(4 μ p0)` while
 //! `|e| + c ≤ a`, evaluated at the measured P, Q and σ. Tolerances (justified in the case's
 //! module docs): c/a and e/a within one pair spacing Δ/a on each mesh (0.060 on L1, 0.031 on
 //! L2), because each end of the stick zone is placed inside the pair interval where the state

@@ -11,15 +11,22 @@
 //!
 //! Sign convention: Q is the force the roller exerts on the block along +x (the reaction of the
 //! driven top), σ > 0 is tension, e is measured along +x. Why: in the stick zone the relative
-//! tangential strain vanishes; the tractions of both half-planes give 2 (1 − ν²)/E · 2 H[q]
-//! with the Hilbert transform H[q](x) = (1/π) PV∫ q(ξ)/(x − ξ) dξ, which is μ p0 e/a for the
-//! q above, and the block alone carries the bulk strain (1 − ν²) σ/E; equal, they give
-//! e = a σ/(4 μ p0). Outside |e| + c ≤ a the stick zone would leave the contact (one edge
-//! reverses its slip) and the closed form no longer holds.
+//! tangential strain of roller and block vanishes (the surface strain of a half-plane under a
+//! tangential traction, Johnson (1985) §2.6, for each; q the traction on the block):
+//!
+//! ```text
+//! ∂(u_x,roller − u_x,block)/∂x = (4 (1 − ν²)/E) · Hq(x) − (1 − ν²) σ/E = 0,
+//! Hq(x) = (1/π) PV∫ q(ξ)/(x − ξ) dξ = μ p0 x/a − μ p0 (x − e)/a = μ p0 e/a   (|x − e| < c)
+//! ⇒ e = a σ/(4 μ p0)
+//! ```
+//!
+//! (the block alone carries the bulk strain). Outside |e| + c ≤ a the stick zone would leave
+//! the contact (one edge reverses its slip) and the closed form no longer holds.
 //!
 //! Source: D. Nowell, D. A. Hills (1987), "Mechanics of fretting fatigue tests", Int. J. Mech.
-//! Sci. 29, 355–365; D. A. Hills, D. Nowell (1994), *Mechanics of Fretting Fatigue*, Kluwer,
-//! ch. 4 (the eccentricity e = a σ/(4 μ p0) and the condition e + c ≤ a). P and Q are the
+//! Sci. 29; D. A. Hills, D. Nowell (1994), *Mechanics of Fretting Fatigue*, Kluwer (the
+//! eccentricity e = a σ/(4 μ p0) and the condition e + c ≤ a). The sign convention is the one
+//! derived above (the source's figure was not at hand to copy it from). P and Q are the
 //! measured reactions of the driven top and σ the mean of the end faces' reactions over the
 //! block's height (counted from the end of the press, which alone loads the held ends by about
 //! −1 MPa), so the closed form is evaluated at the loads the model carries.
@@ -142,13 +149,8 @@ fn sheared_steps(out: &GenericOutcome) -> Result<Vec<Sheared>, VerifyError> {
         let exact = ClosedForm::new(p, q, sigma);
         let contact = contact_result(&out.built, iface, &step.solution, 0.0, true);
         let profile = contact.profile.ok_or_else(|| missing("no profile"))?;
-        // The widest stick zone (the ends come in (start, end) pairs along the roller's arc).
         let ends: Vec<f64> = contact.stick_zones.points.iter().map(|p| p[0]).collect();
-        let widest = ends.chunks_exact(2).max_by(|u, v| (u[1] - u[0]).abs().total_cmp(&(v[1] - v[0]).abs()));
-        let [lo, hi] = match widest {
-            Some(&[u, v]) => [u.min(v), u.max(v)],
-            _ => return Err(missing("no stick zone")),
-        };
+        let [lo, hi] = widest_zone(&ends).ok_or_else(|| missing("no stick zone"))?;
         let inside: Vec<f64> = profile.x.iter().copied().filter(|x| x.abs() <= exact.a).collect();
         let spacing = inside.windows(2).map(|w| (w[1] - w[0]).abs()).fold(0.0, f64::max);
         let sign = q.signum();
@@ -168,6 +170,14 @@ fn sheared_steps(out: &GenericOutcome) -> Result<Vec<Sheared>, VerifyError> {
     Ok(steps)
 }
 
+/// The x-range `[lo, hi]` of the widest zone, the ends given as (start, end) pairs along the
+/// roller's arc; `None` without a zone.
+fn widest_zone(ends: &[f64]) -> Option<[f64; 2]> {
+    let width = |z: &[f64]| (z[1] - z[0]).abs();
+    let zone = ends.chunks_exact(2).max_by(|u, v| width(u).total_cmp(&width(v)))?;
+    Some([zone[0].min(zone[1]), zone[0].max(zone[1])])
+}
+
 /// Solves the scene on `mesh` with optional extra overrides.
 fn solve(root: &Path, mesh: &str, extra: &[String]) -> Result<GenericOutcome, VerifyError> {
     let mut overrides = vec![mesh_override(mesh)];
@@ -182,7 +192,7 @@ fn shear_error(s: &Sheared) -> f64 {
 }
 
 /// Runs the case over the mesh levels of `level`, then on the finest the last step with the
-/// bulk stress reversed and without it (see [`single_step`]).
+/// bulk stress reversed and without it (see `single_step`).
 ///
 /// # Errors
 /// A scene that cannot be read or solved, or a result missing.
@@ -193,9 +203,8 @@ pub fn run(root: &Path, level: Level) -> Result<CaseReport, VerifyError> {
     };
     let mut report = CaseReport {
         name: "hills_nowell".into(),
-        source:
-            "Nowell & Hills (1987), Int. J. Mech. Sci. 29; Hills & Nowell, Mechanics of Fretting Fatigue (1994) ch. 4"
-                .into(),
+        source: "Nowell & Hills (1987), Int. J. Mech. Sci. 29; Hills & Nowell, Mechanics of Fretting Fatigue (1994)"
+            .into(),
         ..CaseReport::default()
     };
     let mut finest = vec![];
@@ -312,6 +321,12 @@ fn missing(reason: &str) -> VerifyError {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_widest_zone_is_measured_whatever_the_order_of_its_ends() {
+        assert_eq!(widest_zone(&[]), None);
+        assert_eq!(widest_zone(&[0.3, -0.2, 0.4, 0.45]), Some([-0.2, 0.3]));
+    }
 
     #[test]
     fn without_bulk_stress_it_is_cattaneo_mindlin() {
