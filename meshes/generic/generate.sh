@@ -5,7 +5,7 @@
 #   meshes/generic/generate.sh       # writes two_blocks.msh, cylinder_on_block_L{1,2,3}.msh,
 #                                    # cylinder_on_block_big_L2.msh, pin_lug.msh,
 #                                    # interference_fit.msh, cattaneo_mindlin_L{0,1,2,3}.msh,
-#                                    # incline.msh, pin_lug_L1.msh, pin_lug_L3.msh,
+#                                    # hills_nowell_L{1,2,3}.msh, incline.msh, pin_lug_L1.msh, pin_lug_L3.msh,
 #                                    # long_interface_{96,190,380}.msh
 #   meshes/generic/generate.sh --no-check
 #
@@ -53,6 +53,10 @@ mesh interference_fit.geo interference_fit.msh disk,ring disk_rim,ring_bore,ring
 for level in 0 1 2 3; do
   mesh cattaneo_mindlin.geo "cattaneo_mindlin_L$level.msh" cylinder,block \
     cylinder_arc,cylinder_top,block_top,block_bottom,block_side -- -setnumber level "$level"
+done
+for level in 1 2 3; do
+  mesh hills_nowell.geo "hills_nowell_L$level.msh" cylinder,block \
+    cylinder_arc,cylinder_top,block_top,block_bottom,block_left,block_right -- -setnumber level "$level"
 done
 mesh incline.geo incline.msh block,ground block_bottom,block_left,block_right,block_top,ground_top
 for n in 96 190 380; do

@@ -17,6 +17,7 @@ pub mod cattaneo_mindlin;
 pub mod contact_patch;
 pub mod flagship;
 pub mod hertz;
+pub mod hills_nowell;
 pub mod incline;
 pub mod interference_fit;
 pub mod mindlin_deresiewicz;
@@ -150,11 +151,12 @@ pub enum VerifyError {
 }
 
 /// The names of the gallery's cases, in the order they run.
-pub const CASES: [&str; 8] = [
+pub const CASES: [&str; 9] = [
     "contact_patch",
     "hertz",
     "cattaneo_mindlin",
     "mindlin_deresiewicz",
+    "hills_nowell",
     "interference_fit",
     "incline",
     "pin_lug",
@@ -171,6 +173,7 @@ pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, Ver
         "hertz" => hertz::run(root, level),
         "cattaneo_mindlin" => cattaneo_mindlin::run(root, level),
         "mindlin_deresiewicz" => mindlin_deresiewicz::run(root, level),
+        "hills_nowell" => hills_nowell::run(root, level),
         "interference_fit" => interference_fit::run(root, level),
         "incline" => incline::run(root, level),
         "pin_lug" => pin_lug::run(root, level),
@@ -189,7 +192,7 @@ pub struct VerifyArgs {
     #[arg(long, default_value = "fast", value_parser = ["fast", "full"])]
     pub level: String,
     /// Cases to run, comma separated (default: all of contact_patch, hertz, cattaneo_mindlin,
-    /// mindlin_deresiewicz, interference_fit, incline, pin_lug, flagship).
+    /// mindlin_deresiewicz, hills_nowell, interference_fit, incline, pin_lug, flagship).
     #[arg(long, value_delimiter = ',')]
     pub cases: Vec<String>,
     /// The repository root (where `scenes/` and `meshes/` are).
