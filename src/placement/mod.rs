@@ -17,9 +17,11 @@
 //! finders (`roots.rs`), the corners' limits (`corners.rs`) and the history carried between
 //! meshes (`history.rs`) use nothing else.
 //! The plate-insert preset implements it on its circles
-//! ([`crate::plate_insert::PlateInsertFamily`]).
+//! ([`crate::plate_insert::PlateInsertFamily`]); a generic scene implements it when its one
+//! contact's master curve is straight or circular ([`crate::generic::placed::GenericFamily`]).
 
 mod corners;
+pub mod curve;
 mod generated_mesh;
 mod history;
 mod roots;
