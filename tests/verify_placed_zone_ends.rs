@@ -141,3 +141,18 @@ fn a_master_curve_neither_straight_nor_circular_is_refused_before_solving() {
         Ok(out) => panic!("solved with status {}", out.report.status),
     }
 }
+
+/// Zone ends are placed by the Boussinesq algorithm only: with another algorithm the key is a
+/// scene error (never silently ignored).
+#[test]
+fn placed_zone_ends_with_another_algorithm_is_a_scene_error() {
+    let refused = load_scene(Path::new(TWIN), &["solver.place_zone_ends=true".into()]);
+    match refused {
+        Err(contact2d::schema::SceneError::Value { key, reason, .. }) => {
+            assert_eq!(key, "solver.place_zone_ends");
+            assert!(reason.contains("boussinesq"), "{reason}");
+        }
+        Err(other) => panic!("another error: {other}"),
+        Ok(_) => panic!("accepted"),
+    }
+}

@@ -61,6 +61,7 @@ pub struct GenericFamily {
     direction: Vec<f64>,
 }
 
+/// The refusal of placed zone ends (the Boussinesq algorithm's) for `reason`.
 fn not_applicable(reason: String) -> ContactError {
     ContactError::NotApplicable { algorithm: ContactAlgorithm::Boussinesq.key(), reason }
 }
@@ -146,6 +147,11 @@ impl GenericFamily {
         Ok(moved.into_iter().map(|i| (nodes[i], self.curve.point(c[i]))).collect())
     }
 
+    /// The master curve's group.
+    fn master_group(&self) -> String {
+        self.description.contacts.first().map(|c| c.master.clone()).unwrap_or_default()
+    }
+
     /// The built problem on `description`'s mesh (moved), loaded along the direction.
     fn build_with(
         &self,
@@ -179,12 +185,6 @@ impl PlaceableContact for GenericFamily {
         move_nodes(&mut mesh, &targets, 2)?;
         let description = ProblemDescription { mesh, ..self.description.clone() };
         self.build_with(&description, Some(base))
-    }
-}
-
-impl GenericFamily {
-    fn master_group(&self) -> String {
-        self.description.contacts.first().map(|c| c.master.clone()).unwrap_or_default()
     }
 }
 
