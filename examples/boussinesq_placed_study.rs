@@ -22,9 +22,9 @@ fn mesh(eps: &str, n: usize) -> String {
 /// b for the tables: placed, interpolated (marked), or the whole contact zone.
 fn stick_column(s: &PlacedStep) -> String {
     match (s.stick_end_placed, s.stick_end == s.contact_end) {
-        (true, _) => format!("{:.4}", s.stick_end_hole),
+        (true, _) => format!("{:.4}", s.stick_end_reported),
         (false, true) => "= l".into(),
-        (false, false) => format!("{:.4} (interpolated)", s.stick_end_hole),
+        (false, false) => format!("{:.4} (interpolated)", s.stick_end_reported),
     }
 }
 
@@ -56,7 +56,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             writeln!(
                 out,
                 "| {mu} | {n} | {:.4} | {} | {:.4} | {:.5} | {:.5} | {:.5} | {:.4} | {:.3} | {} | {:.0e}, {:.0e} | {time:.1} s |",
-                s.contact_end_hole,
+                s.contact_end_reported,
                 stick_column(s),
                 q.pull,
                 q.energy_plate,
@@ -106,7 +106,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 writeln!(
                     out,
                     "| {row} | {n} | {steps} | {:.4} | {} | {:.4} | {:.4} | {:.4} | {:.3} | {meshes} | {time:.1} s |",
-                    s.contact_end_hole,
+                    s.contact_end_reported,
                     stick_column(s),
                     q.pull * 1e2,
                     q.energy_plate * 1e3,

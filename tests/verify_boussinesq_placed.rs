@@ -127,8 +127,12 @@ fn table2_u1_u2_placed_reproduce_l_b_and_forces() {
         within(q.pull, p, "P");
         within(q.energy_plate, e1, "Phi_E1");
         within(q.energy_insert, e2, "Phi_E2");
-        assert!((last.contact_end_hole - l).abs() <= 0.005, "{variant:?}: l = {} vs {l}", last.contact_end_hole);
-        let b_measured = last.stick_end_hole;
+        assert!(
+            (last.contact_end_reported - l).abs() <= 0.005,
+            "{variant:?}: l = {} vs {l}",
+            last.contact_end_reported
+        );
+        let b_measured = last.stick_end_reported;
         assert!((b_measured - b).abs() <= 0.01, "{variant:?}: b = {b_measured} vs {b}");
     }
 }

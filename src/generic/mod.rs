@@ -11,6 +11,8 @@ pub mod fretting;
 pub mod fretting_outputs;
 #[cfg(feature = "native")]
 pub mod outputs;
+pub mod placed;
+mod placed_ends;
 pub mod results;
 pub mod scene;
 mod schedule;
@@ -362,6 +364,9 @@ fn solve_generic_from(
     let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
     let contact_error =
         |source| GenericError::Contact { scene: scene_name.clone(), mesh: mesh_name.clone(), source: Box::new(source) };
+    if scene.solver.place_zone_ends == Some(true) {
+        return solve_placed_scene(scene, mesh, clock, stream).map_err(contact_error);
+    }
     let read = clock.elapsed().as_secs_f64();
     let groups = group_reports(scene, &mesh).map_err(contact_error)?;
     let mut built = scene.description(mesh).build().map_err(contact_error)?;
@@ -417,6 +422,31 @@ fn solve_generic_from(
     let input =
         SummaryInput { scene, built: &built, last, groups, scaled: history.scaled, total_steps: total, times, clock };
     let report = summarise(input, rows).map_err(contact_error)?;
+    Ok(GenericOutcome { scene: scene.clone(), built, history, report })
+}
+
+/// [`solve_generic_from`] by the Boussinesq algorithm with placed zone ends
+/// ([`placed::solve_placed`]): every step's problem is its own adjusted mesh's; the history
+/// keeps the last step (or every step, as `stream` asks).
+fn solve_placed_scene(
+    scene: &GenericScene,
+    mesh: contact2d_mesh::Mesh,
+    clock: Instant,
+    stream: Stream<'_>,
+) -> Result<GenericOutcome, ContactError> {
+    let Stream { retention, on_step, on_solved } = stream;
+    let (mut report, steps) = placed::solve_placed(scene, mesh, clock, on_step)?;
+    for (i, (built, step)) in steps.iter().enumerate() {
+        on_solved(built, i, step);
+    }
+    let keep = if retention == Retention::Last { steps.len().saturating_sub(1) } else { 0 };
+    let built = steps.last().map(|(b, _)| b.clone());
+    let kept: Vec<SolvedStep> = steps.into_iter().skip(keep).map(|(_, s)| s).collect();
+    let Some(built) = built else {
+        return Err(ContactError::InvalidInput("no load step solved".into()));
+    };
+    report.time_s.total = clock.elapsed().as_secs_f64();
+    let history = History { steps: kept, scaled: false, condense_time: std::time::Duration::ZERO };
     Ok(GenericOutcome { scene: scene.clone(), built, history, report })
 }
 

@@ -443,12 +443,14 @@ impl GenericScene {
                     .into(),
             ));
         }
-        if self.solver.place_zone_ends == Some(true) {
+        if self.solver.place_zone_ends == Some(true) && self.solver.algorithm != ContactAlgorithm::Boussinesq {
             return Err(self.fail(
                 "solver.place_zone_ends",
-                "placed zone ends move nodes along the plate-insert preset's circles only; a generic scene keeps \
-                 its mesh (leave the key out or set false)"
-                    .into(),
+                format!(
+                    "zone ends are placed by the boussinesq algorithm only, not by {} (set solver.algorithm = \
+                     \"boussinesq\", or leave the key out)",
+                    self.solver.algorithm.key()
+                ),
             ));
         }
         if self.solver.algorithm == ContactAlgorithm::Boussinesq && self.contact.len() != 1 {

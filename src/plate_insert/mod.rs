@@ -19,26 +19,20 @@ use contact2d_fem::{Component, Model};
 use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, read_msh};
 
-mod contour_history;
-mod corners;
-mod generated_mesh;
 mod group_geometry;
 pub mod outputs;
-mod placed;
+mod placement;
 pub mod preset;
 pub mod published;
 pub mod report;
 mod results;
-mod roots;
 pub mod run;
 pub mod scene;
-mod zone_ends;
-pub use contour_history::ContourHistory;
+pub use crate::placement::{ContourHistory, NodePlacement, PlacedLoading, ZoneEndSearch};
 pub use group_geometry::{MisplacedGroup, check_group_geometry};
-pub use placed::{PlacedLoading, PlacedStep, ZoneEndSearch};
+pub use placement::{PlacedStep, PlateInsertFamily, place_zone_ends, solve_placed_history};
 pub use results::{PLATE_HALF_HEIGHT, PlateInsertResults};
 pub use scene::PlateInsertScene;
-pub use zone_ends::{place_zone_ends, solve_placed_history};
 
 /// Which contour is the master of the pairs (the paper's two variants).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -92,18 +86,6 @@ pub struct PlateInsert {
     /// Master corner nodes moved along the master circle to given η (the paper's nodes at l*
     /// and b*; empty: the mesh as generated).
     pub placed_nodes: Vec<NodePlacement>,
-}
-
-/// A master corner node moved along the master circle to η = `eta` on the master's own
-/// coordinate, its two edges' mid nodes re-centred and the interior relaxed (topology unchanged).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct NodePlacement {
-    /// Target η on the master's own coordinate.
-    pub eta: f64,
-    /// The corner to move: its position in the master contour's node list (even, interior). It
-    /// may travel strictly between its neighbouring corners of the generated mesh
-    /// ([`PlateInsertProblem::corner_range`]).
-    pub corner: usize,
 }
 
 /// How pairs are discretised.
@@ -392,25 +374,8 @@ impl PlateInsertProblem {
         self.master().nodes.iter().map(|v| self.eta_of_master_point(points[v.0])).collect()
     }
 
-    /// The interior corner of the master contour nearest to `eta` (master coordinate), other
-    /// than those in `exclude`: the node a search for a zone end at about `eta` moves.
-    pub fn nearest_corner(&self, eta: f64, exclude: &[usize]) -> Option<usize> {
-        let node_eta = self.master_node_eta();
-        (1..node_eta.len().saturating_sub(1) / 2)
-            .map(|c| 2 * c)
-            .filter(|c| !exclude.contains(c))
-            .min_by(|a, b| (node_eta[*a] - eta).abs().total_cmp(&(node_eta[*b] - eta).abs()))
-    }
-
-    /// The η interval (master coordinate, ascending) a corner may be placed in: strictly between
-    /// its neighbouring corners of this problem's mesh.
-    pub fn corner_range(&self, corner: usize) -> Option<[f64; 2]> {
-        let node_eta = self.master_node_eta();
-        let (a, b) = (*node_eta.get(corner.checked_sub(2)?)?, *node_eta.get(corner + 2)?);
-        Some([a.min(b), a.max(b)])
-    }
-
-    fn eta_of_master_point(&self, x: [f64; 2]) -> f64 {
+    /// η of a point on the master circle, on the master's own coordinate.
+    pub(crate) fn eta_of_master_point(&self, x: [f64; 2]) -> f64 {
         match self.variant {
             PairingVariant::HoleMaster => eta_on_hole(x),
             PairingVariant::InsertMaster => eta_on_hole([x[0] + self.eps, x[1]]),

@@ -297,12 +297,12 @@ fn placed_steps(placed: Vec<(PlacedStep, f64)>, scale: f64) -> Result<Vec<PaperS
                 // interpolated zone ends of `results` stand.
                 return Ok(PaperStep { case, solution, results, dissipated: dissipated * scale * scale });
             }
-            results.contact_end = Some(step.contact_end_hole);
-            results.contact_bracket = Some([step.contact_end_hole; 2]);
+            results.contact_end = Some(step.contact_end_reported);
+            results.contact_bracket = Some([step.contact_end_reported; 2]);
             results.contact_end_master = Some(step.contact_end);
-            results.stick_end = Some(step.stick_end_hole);
+            results.stick_end = Some(step.stick_end_reported);
             if step.stick_end_placed || step.stick_end == step.contact_end {
-                results.stick_bracket = Some([step.stick_end_hole; 2]);
+                results.stick_bracket = Some([step.stick_end_reported; 2]);
             }
             Ok(PaperStep { case, solution, results, dissipated: dissipated * scale * scale })
         })

@@ -8,7 +8,7 @@
 //! max_iterations = 100       # per step
 //! penalty = 1e3              # penalty only: normal penalty / k_c
 //! tangential_penalty = 1e3   # penalty only: stick penalty / k_c (default: penalty)
-//! place_zone_ends = true     # boussinesq on the plate-insert preset: nodes at l* and b*
+//! place_zone_ends = true     # boussinesq: nodes at l* and b* (preset default; generic: straight or circular master)
 //! linear = "auto"            # condensed, sparse: how the contact states' equations are solved
 //! ```
 
@@ -76,9 +76,9 @@ pub struct SolverEntry {
     #[serde(default)]
     pub tangential_penalty: Option<f64>,
     /// Boussinesq only: place master nodes exactly at the zone ends l* and b* by root finding
-    /// (the paper's mesh adjustment; default `true` on the plate-insert preset, the one geometry
-    /// whose contact circles it can morph); `false` keeps the mesh and resolves the zone ends to
-    /// its nodes.
+    /// (the paper's mesh adjustment, `crate::placement`; default `true` on the plate-insert
+    /// preset; on a generic scene only when set, for a straight or circular master curve);
+    /// `false` keeps the mesh and resolves the zone ends to its nodes.
     #[serde(default)]
     pub place_zone_ends: Option<bool>,
     /// How the contact states' linear equations are solved: `auto` (default), `condensed` or

@@ -218,6 +218,18 @@ impl ProblemDescription {
     /// every error of the model, pairing and factorisation; [`ContactError::SameBody`] for an
     /// interface whose two curves bound one body without `self_contact`.
     pub fn build(&self) -> Result<BuiltProblem, ContactError> {
+        self.build_reusing(None)
+    }
+
+    /// Like [`ProblemDescription::build`], reusing the symbolic factorisation of `previous`
+    /// when given: a problem of the same mesh topology whose nodes were moved (mesh morphing),
+    /// e.g. the generated mesh's before a zone end was placed. Only the numeric factorisation
+    /// is redone ([`ContactProblem::rebuild_moved`]).
+    ///
+    /// # Errors
+    /// As [`ProblemDescription::build`], or a DOF numbering or sparsity pattern that differs
+    /// from `previous`'s.
+    pub fn build_reusing(&self, previous: Option<&ContactProblem>) -> Result<BuiltProblem, ContactError> {
         self.check_values()?;
         let mut mesh = self.mesh.clone();
         if self.contacts.iter().any(|c| c.pairing == Pairing::NodeToNode) {
@@ -272,7 +284,10 @@ impl ProblemDescription {
             });
         }
         let patterns = self.pattern_names();
-        let mut problem = ContactProblem::with_slave_kinds(model, pairs, &rigid)?;
+        let mut problem = match previous {
+            Some(previous) if previous.num_pairs() == pairs.len() => previous.rebuild_moved(model, pairs)?,
+            _ => ContactProblem::with_slave_kinds(model, pairs, &rigid)?,
+        };
         problem.set_gaps(gaps)?;
         problem.friction = friction;
         let load_patterns = self.load_patterns(&problem, &patterns)?;

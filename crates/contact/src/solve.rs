@@ -504,6 +504,21 @@ fn boussinesq_applies(order: &[usize], open: &[f64], modes: &RigidModes) -> Resu
     Ok(())
 }
 
+/// The pairs in the order the Boussinesq algorithm grows its zone on `problem` at its current
+/// load (see `boussinesq_order` in the source: by arc length along the master curve, from the end
+/// whose gap under the load without contact forces, `g + B_N u₀`, is smaller), for a caller
+/// that solves the algorithm's steps itself (the placed zone ends of the facade).
+///
+/// # Errors
+/// [`ContactError::NotApplicable`] where the algorithm does not apply, as [`solve_with`] refuses
+/// it: a body held only by contact, or bodies that meet first inside the master curve.
+pub fn boussinesq_zone_order(problem: &ContactProblem, interface: &Interface) -> Result<Vec<usize>, ContactError> {
+    let open: Vec<f64> = (0..problem.num_pairs()).map(|k| problem.gap[k] + interface.h_normal[k]).collect();
+    let order = boussinesq_order(problem, &open);
+    boussinesq_applies(&order, &open, &RigidModes::of(problem))?;
+    Ok(order)
+}
+
 /// The pairs in the order the Boussinesq algorithm grows its zone: by arc length along the
 /// master curve, from the end where the bodies meet first — the end whose gap under the first
 /// step's load without contact forces, `g + B_N u₀`, is smaller. (The initial gaps alone cannot

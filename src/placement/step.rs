@@ -1,16 +1,15 @@
 //! What a step with zone ends placed on the mesh is: how it is loaded, the search's tolerances,
-//! and what it returns (shared by the search and its fallback on the generated mesh).
+//! and what it returns (shared by the search and its fallback on the generated mesh), for any [`super::PlaceableContact`].
 
 use contact2d_contact::{BoussinesqStep, StepStart};
-
-use super::PlateInsertProblem;
 
 /// How a step with placed zone ends is loaded.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum PlacedLoading {
     /// The load w is given; l* follows from the Boussinesq condition p(l*) = 0 at the placed node.
     Load(f64),
-    /// The contact end l* is given (η on the master's own coordinate, the paper's steps in l);
+    /// The contact end l* is given (c on the master curve: η for the preset, the paper's steps
+    /// in l);
     /// w follows from the Boussinesq condition.
     ContactEnd(f64),
 }
@@ -31,12 +30,12 @@ impl Default for ZoneEndSearch {
     }
 }
 
-/// One step solved with nodes placed at its zone ends.
+/// One step solved with nodes placed at its zone ends, on a problem of type `C`.
 #[derive(Debug, Clone)]
-pub struct PlacedStep {
-    /// l* on the master's own coordinate.
+pub struct PlacedStep<C> {
+    /// l* on the master curve's coordinate c.
     pub contact_end: f64,
-    /// b* on the master's own coordinate (l* when nothing slips: the stick zone is the whole
+    /// b* on c (l* when nothing slips: the stick zone is the whole
     /// contact zone).
     pub stick_end: f64,
     /// Whether a node was placed at l* (false when the search failed and the step was solved on
@@ -48,10 +47,11 @@ pub struct PlacedStep {
     /// Whether a node was placed at b* (false when nothing slips, or when b* is closer to l*
     /// than two corners can be placed; b is then interpolated between the pairs like the slip).
     pub stick_end_placed: bool,
-    /// l* on the hole-edge angle η = 1 − φ/π (the paired hole point's in variant 2).
-    pub contact_end_hole: f64,
+    /// l* on the case's report coordinate ([`super::PlacedCase::report_coordinates`]: for the
+    /// plate-insert preset the hole-edge angle η = 1 − φ/π, the paired hole point's in variant 2).
+    pub contact_end_reported: f64,
     /// b* likewise.
-    pub stick_end_hole: f64,
+    pub stick_end_reported: f64,
     /// The load w (given, or from the Boussinesq condition).
     pub load: f64,
     /// |p(l*)| left by the search, relative to the largest contact pressure.
@@ -64,15 +64,7 @@ pub struct PlacedStep {
     /// by other algorithms on the same discrete problem.
     pub start: StepStart,
     /// The problem on the adjusted mesh.
-    pub case: PlateInsertProblem,
+    pub case: C,
     /// Its Boussinesq step (solution, zones, violated inequalities).
     pub step: BoussinesqStep,
-}
-
-/// Pair indices sorted by η on the master coordinate.
-pub(super) fn eta_order(case: &PlateInsertProblem) -> Vec<usize> {
-    let eta = case.eta_master();
-    let mut order: Vec<usize> = (0..eta.len()).collect();
-    order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
-    order
 }

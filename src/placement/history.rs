@@ -3,10 +3,10 @@
 
 use contact2d_contact::{ContactSolution, StepStart};
 
-use super::PlateInsertProblem;
+use super::{PlacedCase, pair_coordinates};
 
-/// The slip history on the master contour: slips and tangential tractions as functions of η
-/// (master coordinate), carried from one step's mesh to the next.
+/// The slip history on the master contour: slips and tangential tractions as functions of the
+/// master curve's coordinate c, carried from one step's mesh to the next.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ContourHistory {
     eta: Vec<f64>,
@@ -21,11 +21,11 @@ impl ContourHistory {
     }
 
     /// The state at the end of a solved step on `case`.
-    pub fn after(case: &PlateInsertProblem, solution: &ContactSolution) -> ContourHistory {
-        let eta = case.eta_master();
+    pub fn after<C: PlacedCase>(case: &C, solution: &ContactSolution) -> ContourHistory {
+        let eta = pair_coordinates(case);
         let mut order: Vec<usize> = (0..eta.len()).collect();
         order.sort_by(|a, b| eta[*a].total_cmp(&eta[*b]));
-        let pairs = &case.problem.pairs;
+        let pairs = &case.problem().pairs;
         ContourHistory {
             eta: order.iter().map(|&k| eta[k]).collect(),
             slip: order.iter().map(|&k| solution.slip[k]).collect(),
@@ -33,15 +33,15 @@ impl ContourHistory {
         }
     }
 
-    /// The step start on `case`'s pairs: slips and tractions interpolated linearly in η, the
+    /// The step start on `case`'s pairs: slips and tractions interpolated linearly in c, the
     /// tangential forces from the tractions times the new tributary lengths.
-    pub fn start_for(&self, case: &PlateInsertProblem) -> StepStart {
-        let m = case.problem.num_pairs();
+    pub fn start_for<C: PlacedCase>(&self, case: &C) -> StepStart {
+        let m = case.problem().num_pairs();
         if self.eta.is_empty() {
             return StepStart::initial(m);
         }
-        let eta = case.eta_master();
-        let pairs = &case.problem.pairs;
+        let eta = pair_coordinates(case);
+        let pairs = &case.problem().pairs;
         StepStart {
             slip: eta.iter().map(|e| interpolate(&self.eta, &self.slip, *e)).collect(),
             tangential_force: (0..m)

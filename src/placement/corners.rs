@@ -7,19 +7,19 @@
 //! corner l was found on and moves the corners least
 //! ```
 
-use super::PlateInsertProblem;
+use super::{PlacedCase, corner_range, node_coordinates};
 
 /// The corners to place at l and b: each within its range and keeping 6 % of the corner
-/// spacing from its neighbours (placed or not), the b corner before the l corner along η; of the
+/// spacing from its neighbours (placed or not), the b corner before the l corner along c; of the
 /// candidates, the pair that keeps `keep_l` for l if it can and moves the corners least.
-pub(super) fn assign_corners(base: &PlateInsertProblem, l: f64, b: f64, keep_l: usize) -> Option<(usize, usize)> {
-    let eta = base.master_node_eta();
+pub(super) fn assign_corners<C: PlacedCase>(base: &C, l: f64, b: f64, keep_l: usize) -> Option<(usize, usize)> {
+    let eta = node_coordinates(base);
     let corners: Vec<usize> = (1..eta.len().saturating_sub(1) / 2).map(|c| 2 * c).collect();
     let mut best: Option<(f64, usize, usize)> = None;
     for &cl in &corners {
         for &cb in corners.iter().filter(|c| eta[**c] < eta[cl]) {
             let fits = |c: usize, x: f64, limits: fn([f64; 2], f64) -> [f64; 2], other: f64| {
-                base.corner_range(c)
+                corner_range(base, c)
                     .map(|r| limits(placement_limits(r), other))
                     .is_some_and(|[lo, hi]| x > lo && x < hi)
             };

@@ -1,18 +1,19 @@
-//! Zone ends finer than the mesh: the paper's nodes at η = l* and η = b* (spec §6: "the contour
-//! nodes at η = b* and η = l* are placed there (the mesh is adjusted)").
+//! The zone-end search: the paper's nodes at c = l* and c = b* (spec §6: "the contour nodes at
+//! η = b* and η = l* are placed there (the mesh is adjusted)"), on any [`PlaceableContact`]
+//! (c the master curve's coordinate, η on the preset's circles).
 //!
 //! ```text
 //! estimate   l₀, b₀ and the slip direction from a solve on the generated mesh (active set for a
 //!            given load; the Boussinesq b iteration for a given contact end)
 //! place      the master corner nearest to l₀ (and another nearest to b₀) slides along the master
-//!            circle; mid nodes re-centred, interior relaxed, pairs node-to-node again
+//!            curve; mid nodes re-centred, interior relaxed, pairs formed again
 //! residuals  r_l(l, b) = p at the node at l*, from problem A at the given load   (Load)
 //!            r_b(l, b) = σ q − μ|p| at the node at b* (last stick node; σ the slip direction)
 //! roots      Load(w):        r_l = 0 in l and r_b = 0 in b, alternately, each by the Illinois
 //!                            method (secant until the root is bracketed), until both settle
 //!            ContactEnd(l):  l is placed as given, w from the Boussinesq condition λ(l*) = 0,
 //!                            and r_b = 0 in b
-//! history    the slips v_s and tangential tractions at the start of a step are functions of η
+//! history    the slips v_s and tangential tractions at the start of a step are functions of c
 //!            on the master contour, interpolated linearly onto the pairs of the adjusted mesh
 //! ```
 //!
@@ -25,18 +26,19 @@ use contact2d_contact::{
     ContactError, ContactStatus, Interface, IterationRecord, PairState, StepStart, Zones, finish_zones,
     solve_boussinesq_step, solve_given_zones, stick_end,
 };
-use contact2d_mesh::Mesh;
 
-use super::contour_history::ContourHistory;
 use super::corners::{above, assign_corners, below, placement_limits};
 use super::generated_mesh::{estimate_contact_end, on_generated_mesh};
-use super::placed::{PlacedLoading, PlacedStep, ZoneEndSearch, eta_order};
+use super::history::ContourHistory;
 use super::roots::{Miss, find_root};
-use super::{NodePlacement, PlateInsert, PlateInsertProblem};
+use super::step::{PlacedLoading, PlacedStep, ZoneEndSearch};
+use super::{
+    NodePlacement, PlaceableContact, PlacedCase, coordinate_order, corner_range, nearest_corner, pair_coordinates,
+};
 
 /// A mesh evaluation during the search.
-struct Evaluation {
-    case: PlateInsertProblem,
+struct Evaluation<C> {
+    case: C,
     interface: Interface,
     order: Vec<usize>,
     start: StepStart,
@@ -49,9 +51,9 @@ struct Evaluation {
     b_pair: Option<usize>,
 }
 
-impl Evaluation {
+impl<C: PlacedCase> Evaluation<C> {
     fn pressure(&self, k: usize) -> f64 {
-        self.normal_force[k] / self.case.problem.pairs[k].weight
+        self.normal_force[k] / self.case.problem().pairs[k].weight
     }
 
     fn pressure_scale(&self) -> f64 {
@@ -62,16 +64,15 @@ impl Evaluation {
     fn cone(&self, k: usize) -> f64 {
         let sigma = if self.zones.slip == Some(PairState::SlipPositive) { -1.0 } else { 1.0 };
         let (lambda, tau) = (self.normal_force[k], self.tangential_force[k]);
-        (sigma * tau - self.case.problem.friction[k] * lambda) / self.case.problem.pairs[k].weight
+        (sigma * tau - self.case.problem().friction[k] * lambda) / self.case.problem().pairs[k].weight
     }
 }
 
-/// The search's fixed data: the generated mesh, the corners moved, the loading.
-struct Search<'a> {
-    template: &'a PlateInsert,
-    mesh: &'a Mesh,
+/// The search's fixed data: the family of meshes, the corners moved, the loading.
+struct Search<'a, F: PlaceableContact> {
+    family: &'a F,
     /// The generated mesh's problem: its symbolic factorisation serves every adjusted mesh.
-    base: &'a PlateInsertProblem,
+    base: &'a F::Case,
     loading: PlacedLoading,
     history: &'a ContourHistory,
     l_corner: usize,
@@ -81,9 +82,9 @@ struct Search<'a> {
     trace: Vec<IterationRecord>,
 }
 
-impl Search<'_> {
+impl<F: PlaceableContact> Search<'_, F> {
     /// Logs an evaluation: its zones and the residual the root finder sees.
-    fn record(&mut self, e: &Evaluation, residual: f64) {
+    fn record(&mut self, e: &Evaluation<F::Case>, residual: f64) {
         self.trace.push(IterationRecord {
             iteration: self.evaluations,
             changed: 0,
@@ -95,7 +96,7 @@ impl Search<'_> {
 
     /// Solves the adjusted mesh with l (and b, if given) placed; without b, the stick zone comes
     /// from the Boussinesq b iteration on the nodes.
-    fn evaluate(&mut self, l: f64, b: Option<(f64, usize, PairState)>) -> Result<Evaluation, ContactError> {
+    fn evaluate(&mut self, l: f64, b: Option<(f64, usize, PairState)>) -> Result<Evaluation<F::Case>, ContactError> {
         self.evaluations += 1;
         if self.evaluations > self.limit {
             return Err(ContactError::InvalidInput(format!(
@@ -105,14 +106,13 @@ impl Search<'_> {
         }
         let mut placed_nodes = vec![NodePlacement { eta: l, corner: self.l_corner }];
         placed_nodes.extend(b.map(|(eta, corner, _)| NodePlacement { eta, corner }));
-        let template = PlateInsert { placed_nodes, ..self.template.clone() };
-        let case = template.build_reusing(self.mesh.clone(), Some(&self.base.problem))?;
-        let interface = Interface::new(&case.problem);
+        let case = self.family.build_placed(&placed_nodes, self.base.problem())?;
+        let interface = Interface::new(case.problem());
         let start = self.history.start_for(&case);
-        let order = eta_order(&case);
+        let order = coordinate_order(&case);
         let pair_of = |corner: usize| -> Result<usize, ContactError> {
-            let node = case.master().nodes[corner];
-            let k = case.problem.pairs.iter().position(|p| p.master == node);
+            let node = case.master_nodes()[corner];
+            let k = case.problem().pairs.iter().position(|p| p.master == node);
             k.ok_or_else(|| ContactError::InvalidInput(format!("no pair at master corner {corner}")))
         };
         let l_pair = pair_of(self.l_corner)?;
@@ -125,7 +125,7 @@ impl Search<'_> {
             Some((_, corner, slip)) => {
                 let b_pair = pair_of(corner)?;
                 let zones = Zones { stick: position(b_pair) + 1, contact_end: position(l_pair), slip: Some(slip) };
-                let forces = solve_given_zones(&case.problem, &interface, &order, zones, given, &start)
+                let forces = solve_given_zones(case.problem(), &interface, &order, zones, given, &start)
                     .ok_or_else(|| singular(l))?;
                 (zones, forces, Some(b_pair))
             }
@@ -134,7 +134,7 @@ impl Search<'_> {
                     Some(w) => BoussinesqLoading::Fixed { contact_end: position(l_pair), load: w },
                     None => BoussinesqLoading::ContactEnd(position(l_pair)),
                 };
-                let step = solve_boussinesq_step(&case.problem, &interface, &order, loading, &start, 4 * order.len());
+                let step = solve_boussinesq_step(case.problem(), &interface, &order, loading, &start, 4 * order.len());
                 if step.solution.status == ContactStatus::Numerical {
                     return Err(singular(l));
                 }
@@ -168,9 +168,6 @@ fn singular(l: f64) -> ContactError {
 
 /// Solves one step with nodes placed at l* and b* from `history` (see the module docs).
 ///
-/// `mesh` is the generated mesh of `template` (read once by the caller); `template`'s own
-/// `placed_nodes` are ignored.
-///
 /// A search that cannot place the zone ends (an estimate without a contact end, a zone end no
 /// corner can reach, a singular problem A, no convergence within `search.max_evaluations`) is
 /// not an error: the step is then solved by the Boussinesq algorithm on the generated mesh, with
@@ -178,40 +175,36 @@ fn singular(l: f64) -> ContactError {
 ///
 /// # Errors
 /// Set-up failures (model, pairing, factorisation) on the generated mesh.
-pub fn place_zone_ends(
-    template: &PlateInsert,
-    mesh: &Mesh,
+pub fn place_zone_ends<F: PlaceableContact>(
+    family: &F,
     loading: PlacedLoading,
     history: &ContourHistory,
     search: ZoneEndSearch,
-) -> Result<PlacedStep, ContactError> {
+) -> Result<PlacedStep<F::Case>, ContactError> {
     let clock = web_time::Instant::now();
-    let template = PlateInsert { placed_nodes: vec![], ..template.clone() };
-    let base = template.build_on(mesh.clone())?;
-    match search_placed(&template, mesh, &base, loading, history, search, clock) {
+    let base = family.build_generated()?;
+    match search_placed(family, &base, loading, history, search, clock) {
         Ok(step) => Ok(step),
         Err((e, evaluations)) => on_generated_mesh(base, loading, history, e.to_string(), evaluations, clock),
     }
 }
 
 /// The zone-end search with its retries; on failure, the error and the meshes it solved.
-fn search_placed(
-    template: &PlateInsert,
-    mesh: &Mesh,
-    base: &PlateInsertProblem,
+fn search_placed<F: PlaceableContact>(
+    family: &F,
+    base: &F::Case,
     loading: PlacedLoading,
     history: &ContourHistory,
     search: ZoneEndSearch,
     clock: web_time::Instant,
-) -> Result<PlacedStep, (ContactError, usize)> {
+) -> Result<PlacedStep<F::Case>, (ContactError, usize)> {
     let mut l_estimate = match loading {
         PlacedLoading::ContactEnd(l) => l,
         PlacedLoading::Load(w) => estimate_contact_end(base, w, history).map_err(|e| (e, 0))?,
     };
     let mut b_estimate = None;
     let mut run = Search {
-        template,
-        mesh,
+        family,
         base,
         loading,
         history,
@@ -255,21 +248,20 @@ enum StickEnd {
 }
 
 /// One pass of the search with corners chosen for the estimates: the final evaluation and b*.
-fn search_zone_ends(
-    run: &mut Search<'_>,
-    base: &PlateInsertProblem,
+fn search_zone_ends<F: PlaceableContact>(
+    run: &mut Search<'_, F>,
+    base: &F::Case,
     l_estimate: f64,
     b_estimate: Option<(f64, PairState)>,
     tol: f64,
-) -> Result<(Evaluation, StickEnd), Miss> {
+) -> Result<(Evaluation<F::Case>, StickEnd), Miss> {
     let loading = run.loading;
     let (mut l, mut b, slip) = match b_estimate {
         Some((b, slip)) => (l_estimate, b, slip),
         None => {
-            run.l_corner = base
-                .nearest_corner(l_estimate, &[])
+            run.l_corner = nearest_corner(base, l_estimate, &[])
                 .ok_or_else(|| ContactError::InvalidInput("the master contour has no interior corner".into()))?;
-            let l_range = placement_limits(base.corner_range(run.l_corner).unwrap_or([l_estimate; 2]));
+            let l_range = placement_limits(corner_range(base, run.l_corner).unwrap_or([l_estimate; 2]));
             // l with the stick zone from the b iteration on the nodes.
             let l = match loading {
                 PlacedLoading::ContactEnd(l) => l,
@@ -289,8 +281,8 @@ fn search_zone_ends(
         return Ok((first, StickEnd::Interpolated(b)));
     };
     run.l_corner = l_corner;
-    let l_range = placement_limits(base.corner_range(l_corner).unwrap_or([l, l]));
-    let b_range = placement_limits(base.corner_range(b_corner).unwrap_or([b, b]));
+    let l_range = placement_limits(corner_range(base, l_corner).unwrap_or([l, l]));
+    let b_range = placement_limits(corner_range(base, b_corner).unwrap_or([b, b]));
     // Alternate 1D roots to a coarse tolerance, then polish (l, b) together by Newton's method.
     let coarse = tol.max(1e-6);
     for _round in 0..8 {
@@ -322,15 +314,15 @@ fn search_zone_ends(
 /// in b, when l is given), with a forward-difference Jacobian: from the alternating roots'
 /// coarse answer to `tol`. A step that would leave the corners' ranges, or grow, stops the
 /// polish at the last iterate.
-fn polish(
-    run: &mut Search<'_>,
+fn polish<F: PlaceableContact>(
+    run: &mut Search<'_, F>,
     (mut l, mut b): (f64, f64),
     (b_corner, slip): (usize, PairState),
     [l_range, b_range]: [[f64; 2]; 2],
     tol: f64,
 ) -> Result<(f64, f64), ContactError> {
     let load_given = matches!(run.loading, PlacedLoading::Load(_));
-    let both = |run: &mut Search<'_>, l: f64, b: f64| -> Result<[f64; 2], ContactError> {
+    let both = |run: &mut Search<'_, F>, l: f64, b: f64| -> Result<[f64; 2], ContactError> {
         let e = run.evaluate(l, Some((b, b_corner, slip)))?;
         let scale = e.pressure_scale();
         let k = e.b_pair.ok_or_else(|| singular(l))?;
@@ -374,7 +366,11 @@ fn polish(
 }
 
 /// p at the l node (compression positive), relative to the largest pressure.
-fn run_pressure(run: &mut Search<'_>, l: f64, b: Option<(f64, usize, PairState)>) -> Result<f64, ContactError> {
+fn run_pressure<F: PlaceableContact>(
+    run: &mut Search<'_, F>,
+    l: f64,
+    b: Option<(f64, usize, PairState)>,
+) -> Result<f64, ContactError> {
     let e = run.evaluate(l, b)?;
     let r = e.pressure(e.l_pair) / e.pressure_scale();
     run.record(&e, r);
@@ -382,7 +378,11 @@ fn run_pressure(run: &mut Search<'_>, l: f64, b: Option<(f64, usize, PairState)>
 }
 
 /// The cone function at the b node, relative to the largest pressure.
-fn run_cone(run: &mut Search<'_>, l: f64, b: (f64, usize, PairState)) -> Result<f64, ContactError> {
+fn run_cone<F: PlaceableContact>(
+    run: &mut Search<'_, F>,
+    l: f64,
+    b: (f64, usize, PairState),
+) -> Result<f64, ContactError> {
     let e = run.evaluate(l, Some(b))?;
     let k = e.b_pair.ok_or_else(|| singular(l))?;
     let r = e.cone(k) / e.pressure_scale();
@@ -392,13 +392,13 @@ fn run_cone(run: &mut Search<'_>, l: f64, b: (f64, usize, PairState)) -> Result<
 
 /// b₀ and the slip direction from an evaluation with the node-based b iteration; `None` when
 /// nothing slips.
-fn stick_estimate(e: &Evaluation) -> Option<(f64, PairState)> {
+fn stick_estimate<C: PlacedCase>(e: &Evaluation<C>) -> Option<(f64, PairState)> {
     let slip = e.zones.slip?;
     if e.zones.stick > e.zones.contact_end {
         return None;
     }
-    let eta = e.case.eta_master();
-    let problem: &ContactProblem = &e.case.problem;
+    let eta = pair_coordinates(&e.case);
+    let problem: &ContactProblem = e.case.problem();
     // The slips of the step from the forces, as the final solution would give them.
     let raw = contact2d_contact::RawSolution {
         load_factor: e.load,
@@ -416,28 +416,28 @@ fn stick_estimate(e: &Evaluation) -> Option<(f64, PairState)> {
 
 /// The final step: the displacement field, the (5.1) checks with the search's residuals as
 /// slack at the two placed nodes.
-fn finish(
+fn finish<C: PlacedCase>(
     (evaluations, elapsed): (usize, std::time::Duration),
-    e: Evaluation,
+    e: Evaluation<C>,
     stick_end: StickEnd,
     residual_cone: f64,
     trace: Vec<IterationRecord>,
-) -> Result<PlacedStep, ContactError> {
+) -> Result<PlacedStep<C>, ContactError> {
     let residual_pressure = e.pressure(e.l_pair).abs() / e.pressure_scale();
     let by_condition = residual_pressure == 0.0;
-    let (eta, eta_hole) = (e.case.eta_master(), e.case.eta_hole());
+    let (eta, reported) = (pair_coordinates(&e.case), e.case.report_coordinates());
     let contact_end = eta[e.l_pair];
     // b on both coordinates: a placed node's, l's, or interpolated between pairs.
-    let on_hole = |b: f64| {
+    let on_reported = |b: f64| {
         let i = e.order.partition_point(|&k| eta[k] < b).clamp(1, e.order.len().saturating_sub(1));
         let (k0, k1) = (e.order[i - 1], e.order[i]);
         let t = (b - eta[k0]) / (eta[k1] - eta[k0]);
-        if t.is_finite() { eta_hole[k0] + t * (eta_hole[k1] - eta_hole[k0]) } else { eta_hole[k0] }
+        if t.is_finite() { reported[k0] + t * (reported[k1] - reported[k0]) } else { reported[k0] }
     };
-    let (stick_master, stick_hole) = match stick_end {
-        StickEnd::Whole => (contact_end, eta_hole[e.l_pair]),
-        StickEnd::Placed(_) => e.b_pair.map_or((contact_end, eta_hole[e.l_pair]), |k| (eta[k], eta_hole[k])),
-        StickEnd::Interpolated(b) => (b, on_hole(b)),
+    let (stick_master, stick_reported) = match stick_end {
+        StickEnd::Whole => (contact_end, reported[e.l_pair]),
+        StickEnd::Placed(_) => e.b_pair.map_or((contact_end, reported[e.l_pair]), |k| (eta[k], reported[k])),
+        StickEnd::Interpolated(b) => (b, on_reported(b)),
     };
     let forces = contact2d_contact::ZoneForces {
         load: e.load,
@@ -446,7 +446,7 @@ fn finish(
     };
     let slack = 10.0 * residual_pressure.max(residual_cone);
     let mut step = finish_zones(
-        &e.case.problem,
+        e.case.problem(),
         &e.interface,
         &e.order,
         e.zones,
@@ -463,8 +463,8 @@ fn finish(
         stick_end_placed: matches!(stick_end, StickEnd::Placed(_)),
         contact_end_placed: true,
         placement_failure: None,
-        contact_end_hole: eta_hole[e.l_pair],
-        stick_end_hole: stick_hole,
+        contact_end_reported: reported[e.l_pair],
+        stick_end_reported: stick_reported,
         load: e.load,
         residual_pressure,
         residual_cone,
@@ -475,19 +475,21 @@ fn finish(
     })
 }
 
+/// The steps of a history with placed zone ends, each with the energy dissipated up to it.
+pub type PlacedHistory<C> = Vec<(PlacedStep<C>, f64)>;
+
 /// A loading history with zone ends placed at every step, the slips carried over on the
 /// contour (the first step from the virgin state).
 ///
 /// # Errors
 /// As [`place_zone_ends`]; a decreasing load or contact end (the algorithm assumes a growing
 /// contact zone).
-pub fn solve_placed_history(
-    template: &PlateInsert,
+pub fn solve_placed_history<F: PlaceableContact>(
+    family: &F,
     loadings: &[PlacedLoading],
     search: ZoneEndSearch,
-    on_step: &mut dyn FnMut(&PlacedStep),
-) -> Result<Vec<(PlacedStep, f64)>, ContactError> {
-    let mesh = contact2d_mesh::read_msh(&template.mesh)?;
+    on_step: &mut dyn FnMut(&PlacedStep<F::Case>),
+) -> Result<PlacedHistory<F::Case>, ContactError> {
     let mut history = ContourHistory::virgin();
     let mut dissipated = 0.0;
     let mut steps = Vec::with_capacity(loadings.len());
@@ -503,7 +505,7 @@ pub fn solve_placed_history(
             )));
         }
         last = value;
-        let step = place_zone_ends(template, &mesh, loading, &history, search)?;
+        let step = place_zone_ends(family, loading, &history, search)?;
         dissipated += step.step.solution.dissipation;
         history = ContourHistory::after(&step.case, &step.step.solution);
         on_step(&step);
