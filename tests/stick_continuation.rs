@@ -10,9 +10,9 @@
 //!  └──────────────── base_bottom: u = 0 ─────────┘  plane strain, one step
 //! ```
 //!
-//! Two meshes of meshes/generic/pad_on_base.geo with 4 and 2 cells through the base and the pad
-//! (small, for a short test): h = 0.032 (189 pairs, 7,544 DOFs) and h = 0.016 (377 pairs,
-//! 15,032 DOFs).
+//! Two meshes of meshes/generic/pad_on_base.geo with 2 cells through the base and 1 through the
+//! pad (small, for a short test): h = 0.032 (189 pairs, 3,772 DOFs) and h = 0.016 (377 pairs,
+//! 7,516 DOFs).
 //! Truths the tests assert against:
 //! * the plain primal-dual active set (`solver.stick_continuation = "off"`, a second algorithm
 //!   for the same discrete law): the same profiles to 1e-10 of their largest value — both end on
@@ -22,9 +22,9 @@
 //!   conservation law; 1e-9 relative, the round-off of summing ~400 pair forces);
 //! * the iteration count: a semi-smooth Newton method on a regularised law converges in a
 //!   number of iterations bounded independently of the mesh per stage (Hintermüller & Kunisch
-//!   2006); the theory gives no number, so the bound is measured: on these meshes 10 and 11
-//!   iterations at 189 and 377 pairs with the continuation, 10 and 23 without (on the
-//!   benchmark's meshes 9, 9, 12, 17, 17 at 189 to 3,001 pairs against 9, 19, 35, 31, ...;
+//!   2006); the theory gives no number, so the bound is measured: on these meshes 18 and 13
+//!   iterations at 189 and 377 pairs with the continuation, 18 and 28 without (on the
+//!   benchmark's meshes 9, 10, 12, 15, 18 at 189 to 3,001 pairs against 9, 19, 35, 31, 98;
 //!   docs/benchmarks.md, "Iterations against pairs"). The test asserts that doubling the pairs
 //!   adds at most 2 iterations, and that the plain method, whose stick–slip fronts move about one
 //!   pair per iteration, needs at least 5 more at 377 pairs (so the test sees the difference).

@@ -62,6 +62,6 @@ for n in 96 190 380; do
 done
 for h in 032 016; do
   mesh pad_on_base.geo "pad_on_base_thin_$h.msh" base,pad base_bottom,base_top,pad_bottom,pad_top \
-    -- -setnumber h "0.$h" -setnumber n_base_height 4 -setnumber n_pad_height 2
+    -- -setnumber h "0.$h" -setnumber n_base_height 2 -setnumber n_pad_height 1
 done
 exit $status
