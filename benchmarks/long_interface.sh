@@ -13,46 +13,67 @@
 # Usage: benchmarks/long_interface.sh [n_upper ...]   (pairs = 2 n_upper + 1;
 #        default 96 190 380 760 1520 2500; HISTORY_MAX=1600 by default;
 #        LINEAR=auto|condensed|sparse sets solver.linear (default auto), or a list such as
-#        LINEAR="condensed sparse" to run each; PRESS_MAX caps the pairs of the press runs)
+#        LINEAR="condensed sparse" to run each; PRESS_MAX caps the pairs of the press runs;
+#        CONTINUATION=auto|off sets solver.stick_continuation, or a list "auto off" to run each)
+#        benchmarks/long_interface.sh pad [h ...]
+#        the second layout (issue 22): scenes/generic/pad_on_base.toml, a pad pressed on a
+#        longer base in one frictional step, on meshes/generic/pad_on_base.geo with cell length
+#        h along the pad (pairs = 2 Round(3 / h) + 1; default 0.032 0.016 0.008 0.004 0.002,
+#        189 to 3,001 pairs); LINEAR and CONTINUATION as above
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+layout=long_interface
+if [ "${1:-}" = pad ]; then
+  layout=pad_on_base
+  shift
+fi
 sizes=("$@")
-[ ${#sizes[@]} -eq 0 ] && sizes=(96 190 380 760 1520 2500)
+if [ ${#sizes[@]} -eq 0 ]; then
+  if [ "$layout" = pad_on_base ]; then sizes=(0.032 0.016 0.008 0.004 0.002); else sizes=(96 190 380 760 1520 2500); fi
+fi
 history_max=${HISTORY_MAX:-1600}
 press_max=${PRESS_MAX:-100000}
 read -r -a linears <<< "${LINEAR:-auto}"
+read -r -a continuations <<< "${CONTINUATION:-auto}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cargo build --release --quiet --manifest-path "$root/Cargo.toml" --bin contact2d
 bin="$root/target/release/contact2d"
-cp "$root/scenes/generic/long_interface.toml" "$work/"
+cp "$root/scenes/generic/$layout.toml" "$work/"
 
-echo "| run | linear | pairs | DOFs | iterations | wall s | CPU s | peak RSS MiB | read | assemble | factor | condense | solve | post |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| run | linear | continuation | pairs | DOFs | iterations | wall s | CPU s | peak RSS MiB | read | assemble | factor | condense | solve | post |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for n in "${sizes[@]}"; do
-  mesh="$work/long_interface_$n.msh"
-  gmsh "$root/meshes/generic/long_interface.geo" -2 -order 2 -format msh41 -setnumber n_upper "$n" \
-    -o "$mesh" > /dev/null
+  mesh="$work/${layout}_$n.msh"
   runs=()
-  [ $((2 * n + 1)) -le "$history_max" ] && runs=(history)
-  [ $((2 * n + 1)) -le "$press_max" ] && runs+=(press)
+  if [ "$layout" = pad_on_base ]; then
+    gmsh "$root/meshes/generic/pad_on_base.geo" -2 -order 2 -format msh41 -setnumber h "$n" -o "$mesh" > /dev/null
+    runs=(press)
+  else
+    gmsh "$root/meshes/generic/long_interface.geo" -2 -order 2 -format msh41 -setnumber n_upper "$n" \
+      -o "$mesh" > /dev/null
+    [ $((2 * n + 1)) -le "$history_max" ] && runs=(history)
+    [ $((2 * n + 1)) -le "$press_max" ] && runs+=(press)
+  fi
   for run in "${runs[@]}"; do
    for linear in "${linears[@]}"; do
-    extra=(--set "solver.linear=\"$linear\"")
-    [ "$run" = press ] && extra+=(--set 'loading.schedule=[{press=1.0}]')
+   for continuation in "${continuations[@]}"; do
+    extra=(--set "solver.linear=\"$linear\"" --set "solver.stick_continuation=\"$continuation\"")
+    [ "$run" = press ] && [ "$layout" = long_interface ] && extra+=(--set 'loading.schedule=[{press=1.0}]')
     /usr/bin/time -f "%e %U %S %M" -o "$work/time" \
-      "$bin" run "$work/long_interface.toml" --set "mesh=\"$mesh\"" "${extra[@]}" --json > "$work/out.json"
-    python3 - "$run" "$work/out.json" "$work/time" "$linear" <<'EOF'
+      "$bin" run "$work/$layout.toml" --set "mesh=\"$mesh\"" "${extra[@]}" --json > "$work/out.json"
+    python3 - "$run" "$work/out.json" "$work/time" "$linear" "$continuation" <<'EOF'
 import json, sys
-run, out, timing, linear = sys.argv[1:5]
+run, out, timing, linear, continuation = sys.argv[1:6]
 d = json.load(open(out))
 wall, user, system, rss = open(timing).read().split()[-4:]
 t = d["time_s"]
 phases = " | ".join(f"{t[k]:.3f}" for k in ("read", "assemble", "factor", "condense", "solve", "post"))
 status = "" if d["status"] == "converged" else f" ({d['status']})"
-print(f"| {run} | {linear} | {d['pairs']} | {d['dofs']} | {d['iterations']}{status} | {float(wall):.2f} | "
+print(f"| {run} | {linear} | {continuation} | {d['pairs']} | {d['dofs']} | {d['iterations']}{status} | {float(wall):.2f} | "
       f"{float(user) + float(system):.2f} | {int(rss) // 1024} | {phases} |")
 EOF
+   done
    done
   done
   rm -f "$mesh"

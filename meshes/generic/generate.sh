@@ -6,7 +6,8 @@
 #                                    # cylinder_on_block_big_L2.msh, pin_lug.msh,
 #                                    # interference_fit.msh, cattaneo_mindlin_L{0,1,2,3}.msh,
 #                                    # hills_nowell_L{1,2,3}.msh, incline.msh, pin_lug_L1.msh, pin_lug_L3.msh,
-#                                    # long_interface_{96,190,380}.msh
+#                                    # long_interface_{96,190,380}.msh,
+#                                    # pad_on_base_thin_{032,016}.msh
 #   meshes/generic/generate.sh --no-check
 #
 # Environment: GMSH (default: gmsh), PYTHON (default: python3, must import gmsh for the check).
@@ -62,5 +63,9 @@ mesh incline.geo incline.msh block,ground block_bottom,block_left,block_right,bl
 for n in 96 190 380; do
   mesh long_interface.geo "long_interface_$n.msh" lower,upper lower_bottom,lower_top,upper_bottom,upper_top \
     -- -setnumber n_upper "$n"
+done
+for h in 032 016; do
+  mesh pad_on_base.geo "pad_on_base_thin_$h.msh" base,pad base_bottom,base_top,pad_bottom,pad_top \
+    -- -setnumber h "0.$h" -setnumber n_base_height 2 -setnumber n_pad_height 1
 done
 exit $status

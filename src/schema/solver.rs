@@ -10,12 +10,13 @@
 //! tangential_penalty = 1e3   # penalty only: stick penalty / k_c (default: penalty)
 //! place_zone_ends = true     # boussinesq: nodes at l* and b* (preset default; generic: straight or circular master)
 //! linear = "auto"            # condensed, sparse: how the contact states' equations are solved
+//! stick_continuation = "auto" # off: the active set without regularised stick stages
 //! ```
 
 use serde::de::Error as _;
 use serde::{Deserialize, Deserializer, Serializer};
 
-use contact2d_contact::{ContactAlgorithm, LinearSolver, PenaltyParameters, SolverSettings};
+use contact2d_contact::{ContactAlgorithm, LinearSolver, PenaltyParameters, SolverSettings, StickContinuation};
 
 use super::SceneError;
 
@@ -58,6 +59,18 @@ fn deserialize_linear<'de, D: Deserializer<'de>>(d: D) -> Result<LinearSolver, D
         .ok_or_else(|| D::Error::unknown_variant(&key, &LINEAR_KEYS))
 }
 
+/// The scene keys of [`StickContinuation::ALL`], in that order.
+const CONTINUATION_KEYS: [&str; 2] = ["auto", "off"];
+
+/// Reads `solver.stick_continuation` from its scene key ([`StickContinuation::key`]).
+fn deserialize_continuation<'de, D: Deserializer<'de>>(d: D) -> Result<StickContinuation, D::Error> {
+    let key = String::deserialize(d)?;
+    StickContinuation::ALL
+        .into_iter()
+        .find(|c| c.key() == key.trim())
+        .ok_or_else(|| D::Error::unknown_variant(&key, &CONTINUATION_KEYS))
+}
+
 /// The `[solver]` section.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -85,6 +98,10 @@ pub struct SolverEntry {
     /// `sparse` ([`LinearSolver`]).
     #[serde(default, deserialize_with = "deserialize_linear")]
     pub linear: LinearSolver,
+    /// Whether the active set follows a regularised stick law to the exact one on long
+    /// frictional interfaces: `auto` (default) or `off` ([`StickContinuation`]).
+    #[serde(default, deserialize_with = "deserialize_continuation")]
+    pub stick_continuation: StickContinuation,
 }
 
 impl Default for SolverEntry {
@@ -96,6 +113,7 @@ impl Default for SolverEntry {
             tangential_penalty: None,
             place_zone_ends: None,
             linear: LinearSolver::Auto,
+            stick_continuation: StickContinuation::Auto,
         }
     }
 }
@@ -124,7 +142,8 @@ impl SolverEntry {
             .with_max_iterations(self.max_iterations)
             .map_err(|e| fail("solver.max_iterations", e.to_string()))?
             .with_linear(self.linear)
-            .map_err(|e| fail("solver.linear", e.to_string()))?;
+            .map_err(|e| fail("solver.linear", e.to_string()))?
+            .with_stick_continuation(self.stick_continuation);
         let given = [("solver.penalty", self.penalty), ("solver.tangential_penalty", self.tangential_penalty)];
         if algorithm != ContactAlgorithm::Penalty {
             if let Some((key, _)) = given.iter().find(|(_, v)| v.is_some()) {
@@ -157,6 +176,13 @@ mod tests {
             assert_eq!(entry.linear, linear);
         }
         let wrong = toml::from_str::<SolverEntry>("linear = \"dense\"").unwrap_err().to_string();
+        for (continuation, key) in StickContinuation::ALL.into_iter().zip(CONTINUATION_KEYS) {
+            assert_eq!(continuation.key(), key);
+            let entry: SolverEntry = toml::from_str(&format!("stick_continuation = \"{key}\"")).unwrap();
+            assert_eq!(entry.stick_continuation, continuation);
+        }
+        let unknown = toml::from_str::<SolverEntry>("stick_continuation = \"on\"").unwrap_err().to_string();
+        assert!(unknown.contains("off"), "{unknown}");
         assert!(wrong.contains("condensed"), "{wrong}");
         let entry: SolverEntry = toml::from_str("algorithm = \"clarabel\"\nlinear = \"sparse\"").unwrap();
         let fail = |key: &str, reason: String| SceneError::Value { path: "s.toml".into(), key: key.into(), reason };

@@ -22,8 +22,9 @@ impl Clone for StateFactorCache {
 /// One factored reduced system: its key, its LU and the permutations of its rows.
 #[derive(Debug)]
 pub(crate) struct StateFactor {
-    /// States, friction coefficients, tangential flags and whether friction is on.
-    pub(crate) key: (Vec<PairState>, Vec<f64>, Vec<bool>, bool),
+    /// States, friction coefficients, tangential flags, whether friction is on, and the bits
+    /// of the stick rows' regularising compliances (empty: exact).
+    pub(crate) key: (Vec<PairState>, Vec<f64>, Vec<bool>, bool, Vec<u64>),
     /// The LU factors.
     pub(crate) lu: Mat<f64>,
     /// Row permutation.

@@ -5,7 +5,8 @@
 //! unknowns  x = [u_f; z_N; z_T],   λ = −s z_N,  τ = −s z_T    (s: the row scale below)
 //! K u_f + s Σ_{k in contact} (b_k + f_k t_k)ᵀ z_N,k + s Σ_{k stick} t_kᵀ z_T,k = w r
 //! s b_k · u_f = −s ĝ_k              (k in contact: gap_k = ĝ_k + b_k·u_f = 0)
-//! s t_k · u_f = s (s_start,k − ŝ_k)  (k stick: Δs_k = 0)
+//! s t_k · u_f − s² e_k z_T,k = s (s_start,k − ŝ_k)  (k stick: Δs_k + e_k τ_k = 0; e = 0 but in
+//!                                    the regularised stages of algorithms/stick_continuation.rs)
 //! z_N,k = 0 (k free),   z_T,k = 0 (k not stick: τ_k = f_k λ_k for slip, 0 otherwise)
 //! b_k, t_k: free parts of B_N, B_T;  ĝ_k = g0_k + w (B_N,c u_c)_k,  ŝ_k = w (B_T,c u_c)_k
 //! f_k = −μ_k (slip+), +μ_k (slip−), 0 otherwise
@@ -72,8 +73,9 @@ const RESTART: usize = 8;
 #[derive(Debug)]
 pub(crate) struct StateKkt {
     solver: SaddlePointSolver,
-    /// Rows switched on in the last factorisation (normal rows, then tangential rows).
-    factored: Option<Vec<bool>>,
+    /// Rows switched on in the last factorisation (normal rows, then tangential rows), and the
+    /// bits of the stick compliances it was factored with.
+    factored: Option<(Vec<bool>, Vec<u64>)>,
     /// Row scale `s`.
     scale: f64,
     /// Whether the tangential rows are part of the system.
@@ -152,8 +154,9 @@ impl StateKkt {
 
     /// Solves the state equations of the module docs at load `w` from `start` to the relative
     /// residual `accuracy`, GMRES starting from `warm` (a previous solution of this state, or
-    /// zero); `None` if the factorisation fails (dependent rows in contact) or GMRES does not
-    /// converge.
+    /// zero), with the stick rows' compliances `e` (empty: the exact law); `None` if the
+    /// factorisation fails (dependent rows in contact) or GMRES does not converge.
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn solve(
         &mut self,
         problem: &ContactProblem,
@@ -162,16 +165,26 @@ impl StateKkt {
         state: &[PairState],
         accuracy: Accuracy,
         warm: Option<&[f64]>,
+        compliances: &[f64],
     ) -> Option<StateSolution> {
         let (n, m) = (problem.system.dofs.num_free(), state.len());
         let on = self.rows_on(problem, state);
-        if self.factored.as_ref() != Some(&on) {
+        // The constraint block's diagonal −s² e_k on the stick rows (module docs).
+        let s2 = self.scale * self.scale;
+        let diagonal: Vec<f64> = if compliances.is_empty() || !self.frictional {
+            vec![]
+        } else {
+            (0..2 * m).map(|q| if q >= m && on[q] { s2 * compliances[q - m] } else { 0.0 }).collect()
+        };
+        let key = (on.clone(), diagonal.iter().map(|v| v.to_bits()).collect::<Vec<u64>>());
+        if self.factored.as_ref() != Some(&key) {
             self.factored = None;
-            self.solver.factor(&on).ok()?;
-            self.factored = Some(on.clone());
+            self.solver.factor_with_compliance(&on, &diagonal).ok()?;
+            self.factored = Some(key);
             self.factorizations += 1;
         }
-        let system = Operator { problem, state, on: &on, scale: self.scale, frictional: self.frictional };
+        let system =
+            Operator { problem, state, on: &on, scale: self.scale, frictional: self.frictional, diagonal: &diagonal };
         let b = system.rhs(w, start);
         let x = self.gmres(&system, &b, warm, accuracy.tolerance())?;
         let s = self.scale;
@@ -291,6 +304,8 @@ struct Operator<'a> {
     on: &'a [bool],
     scale: f64,
     frictional: bool,
+    /// `s² e_k` of each stick row (index `m + k`; empty: none).
+    diagonal: &'a [f64],
 }
 
 impl Operator<'_> {
@@ -348,7 +363,7 @@ impl Operator<'_> {
                 if self.on[m + kk] {
                     let z = s * x[q];
                     row_t.free.iter().for_each(|&(i, v)| y[i] += v * z);
-                    y[q] = s * dot(row_t);
+                    y[q] = s * dot(row_t) - self.diagonal.get(m + kk).map_or(0.0, |d| d * x[q]);
                 } else {
                     y[q] = x[q];
                 }

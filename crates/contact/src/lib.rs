@@ -44,6 +44,7 @@ pub mod solve;
 pub use algorithms::augmented_lagrangian::solve_augmented_lagrangian;
 pub use algorithms::full_system::contact_stiffness;
 pub use algorithms::penalty::{PenaltyParameters, solve_penalty};
+pub use algorithms::stick_continuation::StickContinuation;
 pub use algorithms::{boussinesq, clarabel_qp, clarabel_tresca, frictional_active_set, frictionless_active_set};
 pub use boussinesq::{
     BoussinesqLoading, BoussinesqStep, ZoneForces, Zones, finish_zones, solve_boussinesq_history,
@@ -57,7 +58,7 @@ pub use certify::{Check, FailedCheck, certify, check_energy_balance, energy_scal
 pub use clarabel_qp::{solve_frictionless_qp, solve_frictionless_qp_on};
 pub use clarabel_tresca::{solve_frictional_qp, solve_frictional_qp_on};
 pub use error::ContactError;
-pub use frictional_active_set::solve_frictional_active_set;
+pub use frictional_active_set::{solve_frictional_active_set, solve_frictional_active_set_with};
 pub use frictionless_active_set::solve_frictionless_active_set;
 pub use history::{HistoryStep, Retention, equal_steps};
 pub use interface::Interface;

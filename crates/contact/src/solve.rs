@@ -22,8 +22,9 @@
 use crate::algorithms::augmented_lagrangian::solve_augmented_lagrangian;
 use crate::algorithms::boussinesq::{BoussinesqLoading, solve_boussinesq_step};
 use crate::algorithms::clarabel_tresca::solve_frictional_qp_on;
-use crate::algorithms::frictional_active_set::solve_frictional_active_set;
+use crate::algorithms::frictional_active_set::solve_frictional_active_set_with;
 use crate::algorithms::penalty::{PenaltyParameters, solve_penalty};
+use crate::algorithms::stick_continuation::StickContinuation;
 use crate::error::ContactError;
 use crate::floating::{FloatingStep, RigidModes, solve_floating_step as solve_floating_step_with};
 use crate::history::{HistoryStep, Retention, march_keeping};
@@ -50,6 +51,7 @@ pub struct SolverSettings {
     penalty: PenaltyParameters,
     deadline: Option<web_time::Instant>,
     linear: LinearSolver,
+    stick_continuation: StickContinuation,
 }
 
 impl SolverSettings {
@@ -64,6 +66,7 @@ impl SolverSettings {
             penalty: PenaltyParameters::default(),
             deadline: None,
             linear: LinearSolver::Auto,
+            stick_continuation: StickContinuation::Auto,
         }
     }
 
@@ -82,6 +85,19 @@ impl SolverSettings {
     /// How the contact states' linear equations are solved.
     pub fn linear(&self) -> LinearSolver {
         self.linear
+    }
+
+    /// Sets whether the frictional active set follows a regularised stick law to the exact one
+    /// ([`StickContinuation`]; default [`StickContinuation::Auto`]). The other algorithms
+    /// ignore it: it changes where the active set starts, not the law it solves.
+    pub fn with_stick_continuation(mut self, continuation: StickContinuation) -> SolverSettings {
+        self.stick_continuation = continuation;
+        self
+    }
+
+    /// The active set's [`StickContinuation`].
+    pub fn stick_continuation(&self) -> StickContinuation {
+        self.stick_continuation
     }
 
     /// Sets a wall-clock deadline: [`solve_with`] checks it before each load step and stops with
@@ -452,7 +468,8 @@ fn solve_step(
     let max = settings.max_iterations;
     match settings.algorithm {
         ContactAlgorithm::ActiveSet => {
-            solve_frictional_active_set(problem, interface, 1.0, context.start, context.guess, max)
+            let continuation = settings.stick_continuation;
+            solve_frictional_active_set_with(problem, interface, 1.0, context.start, context.guess, max, continuation)
         }
         ContactAlgorithm::Clarabel => solve_frictional_qp_on(problem, interface, 1.0, context.start, max),
         ContactAlgorithm::Boussinesq => {

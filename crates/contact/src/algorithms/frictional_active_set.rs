@@ -15,7 +15,9 @@
 //! master opposes its slip, so the dissipation −τ Δs = q Δv_s w ≥ 0 (Q ≥ 0 in (5.1)).
 //! The equations of a state are linear but not symmetric (the slip rows couple τ to λ); they are
 //! solved densely (2 × pairs unknowns). Convergence is not guaranteed for large μ: the iteration
-//! limit is then reported as [`ContactStatus::MaxIterations`].
+//! limit is then reported as [`ContactStatus::MaxIterations`]. On long interfaces the first step
+//! follows a regularised stick law to the exact one (`stick_continuation.rs`), so that the
+//! stick–slip fronts do not move by one pair per iteration.
 //!
 //! # References
 //! Hüeber, Stadler & Wohlmuth (2008), SIAM J. Sci. Comput. 30(2): a primal-dual active set
@@ -27,16 +29,17 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::algorithms::semi_smooth::{Iterate, admissible, next_state};
 use crate::algorithms::sparse_active_set::solve_sparse_active_set;
-use crate::algorithms::state_equations::{combine, solve_state_equations};
+use crate::algorithms::state_equations::{combine, solve_regularised_state_equations};
+use crate::algorithms::stick_continuation::{StickContinuation, StickStage, add_layer_slip, stage_limit};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
 use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
 
 /// Solves one frictional step to load factor `w` from the history `start`, starting from the
-/// state guess `guess` (e.g. the previous step's states; `None`: all in contact and sticking).
-/// On an interface of the sparse path ([`Interface::sparse`]) each state is solved on the full
-/// system (`sparse_active_set.rs`).
+/// state guess `guess` (e.g. the previous step's states; `None`: all in contact and sticking),
+/// with [`StickContinuation::Auto`]. On an interface of the sparse path ([`Interface::sparse`])
+/// each state is solved on the full system (`sparse_active_set.rs`).
 pub fn solve_frictional_active_set(
     problem: &ContactProblem,
     interface: &Interface,
@@ -45,8 +48,23 @@ pub fn solve_frictional_active_set(
     guess: Option<&[PairState]>,
     max_iterations: usize,
 ) -> ContactSolution {
+    solve_frictional_active_set_with(problem, interface, w, start, guess, max_iterations, StickContinuation::Auto)
+}
+
+/// [`solve_frictional_active_set`] with the choice of `continuation`: regularised stick stages
+/// (`Δs_k + e_k τ_k = 0`, `e → 0`) before the exact law, each starting from the last one's state
+/// (`algorithms/stick_continuation.rs`). `max_iterations` bounds all stages together.
+pub fn solve_frictional_active_set_with(
+    problem: &ContactProblem,
+    interface: &Interface,
+    w: f64,
+    start: &StepStart,
+    guess: Option<&[PairState]>,
+    max_iterations: usize,
+    continuation: StickContinuation,
+) -> ContactSolution {
     if !interface.is_condensed() {
-        return solve_sparse_active_set(problem, interface, w, start, guess, max_iterations);
+        return solve_sparse_active_set(problem, interface, w, start, guess, max_iterations, continuation);
     }
     let clock = Instant::now();
     let m = problem.num_pairs();
@@ -66,14 +84,18 @@ pub fn solve_frictional_active_set(
     let mut status = ContactStatus::MaxIterations;
     let mut iterations = 0;
     let mut trace = Vec::new();
+    let mut stage = StickStage::first(problem, continuation, c_t, frictional, guess.is_some());
+    let mut compliances = stage.map(|s| s.compliances(problem)).unwrap_or_default();
+    let mut stage_iterations = 0;
     for it in 1..=max_iterations {
         iterations = it;
-        let Some((l, t)) = solve_state(problem, interface, w, start, &state, frictional) else {
+        let Some((l, t)) = solve_state(problem, interface, w, start, &state, frictional, &compliances) else {
             status = ContactStatus::Numerical;
             break;
         };
         (lambda, tau) = (l, t);
-        let (gap, slip) = interface_values(interface, w, &problem.gap, &lambda, &tau, frictional);
+        let (gap, mut slip) = interface_values(interface, w, &problem.gap, &lambda, &tau, frictional);
+        add_layer_slip(&mut slip, &compliances, &tau);
         let iterate = Iterate { normal_force: &lambda, tangential_force: &tau, gap: &gap, slip: &slip };
         let next = next_state(problem, &iterate, start, (c_n, c_t), frictional);
         trace.push(IterationRecord {
@@ -86,7 +108,17 @@ pub fn solve_frictional_active_set(
         // Converged when the state repeats, or when the iterate already satisfies every
         // condition to round-off (a degenerate pair — λ = gap = 0 or |τ| = μλ with Δs = 0 —
         // may otherwise flip forever on round-off).
-        if next == state || admissible(problem, &state, &iterate, start) {
+        let settled = next == state || admissible(problem, &state, &iterate, start);
+        if let Some(current) = stage {
+            // A regularised stage ends when its state settles or its share of the limit is
+            // spent; its fixed point is a warm start, never the answer.
+            stage_iterations += 1;
+            if settled || stage_iterations >= stage_limit(max_iterations) {
+                stage = current.next();
+                compliances = stage.map(|s| s.compliances(problem)).unwrap_or_default();
+                stage_iterations = 0;
+            }
+        } else if settled {
             status = ContactStatus::Converged;
             break;
         }
@@ -128,7 +160,8 @@ fn interface_values(
     (gap, s)
 }
 
-/// Solves the linear equations of a given state at load `w`: `(λ, τ)`.
+/// Solves the linear equations of a given state at load `w`, with the stick rows' regularising
+/// compliances (empty: the exact law): `(λ, τ)`.
 fn solve_state(
     problem: &ContactProblem,
     interface: &Interface,
@@ -136,7 +169,8 @@ fn solve_state(
     start: &StepStart,
     state: &[PairState],
     frictional: bool,
+    compliances: &[f64],
 ) -> Option<(Vec<f64>, Vec<f64>)> {
-    let x = solve_state_equations(problem, interface, start, state, frictional)?;
+    let x = solve_regularised_state_equations(problem, interface, start, state, frictional, compliances)?;
     Some(combine(&x, w))
 }

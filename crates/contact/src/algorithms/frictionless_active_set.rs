@@ -17,6 +17,7 @@ use web_time::Instant;
 use nalgebra::{DMatrix, DVector};
 
 use crate::algorithms::sparse_active_set::solve_sparse_active_set;
+use crate::algorithms::stick_continuation::StickContinuation;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
@@ -35,11 +36,27 @@ pub fn solve_frictionless_active_set(
         // The sparse path solves the problem's own friction law: a frictionless copy.
         let initial = StepStart::initial(problem.num_pairs());
         if !problem.is_frictional() {
-            return solve_sparse_active_set(problem, interface, w, &initial, None, max_iterations);
+            return solve_sparse_active_set(
+                problem,
+                interface,
+                w,
+                &initial,
+                None,
+                max_iterations,
+                StickContinuation::Off,
+            );
         }
         let mut frictionless = problem.clone();
         frictionless.friction.iter_mut().for_each(|mu| *mu = 0.0);
-        return solve_sparse_active_set(&frictionless, interface, w, &initial, None, max_iterations);
+        return solve_sparse_active_set(
+            &frictionless,
+            interface,
+            w,
+            &initial,
+            None,
+            max_iterations,
+            StickContinuation::Off,
+        );
     }
     let start = Instant::now();
     let m = problem.num_pairs();

@@ -14,6 +14,7 @@
 //! state_equations           the linear system of a given zone configuration (shared)
 //! sparse_active_set         the active set on the sparse full system (crate::kkt), no condensation
 //! semi_smooth               the state update and admissibility test of both active-set paths (shared)
+//! stick_continuation        regularised stick stages before the exact law (both active-set paths)
 //! ```
 
 pub mod augmented_lagrangian;
@@ -27,3 +28,4 @@ pub mod penalty;
 pub(crate) mod semi_smooth;
 pub(crate) mod sparse_active_set;
 pub(crate) mod state_equations;
+pub mod stick_continuation;

@@ -20,6 +20,7 @@ use web_time::Instant;
 
 use crate::algorithms::full_system::{contact_stiffness, dot_free, row_offsets};
 use crate::algorithms::semi_smooth::{Iterate, admissible, next_state};
+use crate::algorithms::stick_continuation::{StickContinuation, StickStage, add_layer_slip, stage_limit};
 use crate::interface::Interface;
 use crate::kkt::{Accuracy, StateKkt};
 use crate::problem::{ContactProblem, PairRow};
@@ -71,6 +72,7 @@ pub(crate) fn solve_sparse_active_set(
     start: &StepStart,
     guess: Option<&[PairState]>,
     max_iterations: usize,
+    continuation: StickContinuation,
 ) -> ContactSolution {
     let clock = Instant::now();
     let m = problem.num_pairs();
@@ -97,13 +99,18 @@ pub(crate) fn solve_sparse_active_set(
     let mut warm: Option<Vec<f64>> = None;
     let mut accuracy = Accuracy::Trial;
     let mut before: Option<Vec<PairState>> = None;
-    // The state's solution to `accuracy`, its gaps and slips, and the state the update picks.
-    let mut evaluate = |state: &[PairState], accuracy: Accuracy, warm: Option<&[f64]>| {
-        let solution = cache.as_mut()?.solve(problem, w, start, state, accuracy, warm)?;
+    let mut stage = StickStage::first(problem, continuation, c_t, frictional, guess.is_some());
+    let mut compliances = stage.map(|s| s.compliances(problem)).unwrap_or_default();
+    let mut stage_iterations = 0;
+    // The state's solution to `accuracy` with the stick compliances `e`, its gaps and slips
+    // (with the layer's, `stick_continuation.rs`), and the state the update picks.
+    let mut evaluate = |state: &[PairState], accuracy: Accuracy, warm: Option<&[f64]>, e: &[f64]| {
+        let solution = cache.as_mut()?.solve(problem, w, start, state, accuracy, warm, e)?;
         let u = &solution.displacement;
         let gap: Vec<f64> = (0..m).map(|k| g_hat[k] + dot_free(&problem.normal_rows[k], u)).collect();
-        let slip: Vec<f64> =
+        let mut slip: Vec<f64> =
             (0..m).map(|k| if frictional { s_hat[k] + dot_free(&problem.tangent_rows[k], u) } else { 0.0 }).collect();
+        add_layer_slip(&mut slip, e, &solution.tangential_force);
         let iterate = Iterate {
             normal_force: &solution.normal_force,
             tangential_force: &solution.tangential_force,
@@ -116,14 +123,30 @@ pub(crate) fn solve_sparse_active_set(
     };
     for it in 1..=max_iterations {
         iterations = it;
-        let Some((mut solution, mut next, mut settled)) = evaluate(&state, accuracy, warm.as_deref()) else {
+        let Some((mut solution, mut next, mut settled)) = evaluate(&state, accuracy, warm.as_deref(), &compliances)
+        else {
             status = ContactStatus::Numerical;
             break;
         };
+        if let Some(current) = stage {
+            // A regularised stage: its trial solutions only choose the next state; it ends when
+            // its state settles or its share of the limit is spent (a warm start, never the
+            // answer).
+            trace.push(record(it, &state, &next));
+            stage_iterations += 1;
+            if settled || stage_iterations >= stage_limit(max_iterations) {
+                stage = current.next();
+                compliances = stage.map(|s| s.compliances(problem)).unwrap_or_default();
+                stage_iterations = 0;
+            }
+            warm = Some(solution.unknowns);
+            state = next;
+            continue;
+        }
         if settled && accuracy == Accuracy::Trial {
             // The state repeats on a trial solution: the answer is its solution to round-off,
             // and the state must repeat on that too.
-            let Some(fine) = evaluate(&state, Accuracy::Final, Some(&solution.unknowns)) else {
+            let Some(fine) = evaluate(&state, Accuracy::Final, Some(&solution.unknowns), &[]) else {
                 status = ContactStatus::Numerical;
                 break;
             };
@@ -134,13 +157,7 @@ pub(crate) fn solve_sparse_active_set(
                 accuracy = Accuracy::Final;
             }
         }
-        trace.push(IterationRecord {
-            iteration: it,
-            changed: next.iter().zip(&state).filter(|(a, b)| a != b).count(),
-            in_contact: state.iter().filter(|s| **s != PairState::Free).count(),
-            slipping: state.iter().filter(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative)).count(),
-            residual: 0.0,
-        });
+        trace.push(record(it, &state, &next));
         warm = Some(solution.unknowns);
         (lambda, tau, u) = (solution.normal_force, solution.tangential_force, solution.displacement);
         if settled {
@@ -166,4 +183,15 @@ pub(crate) fn solve_sparse_active_set(
     let mut solution = finish_from_displacement(problem, &u, raw, start);
     solution.trace = trace;
     solution
+}
+
+/// The trace's record of iteration `it`: `state` and how many pairs `next` changes.
+fn record(it: usize, state: &[PairState], next: &[PairState]) -> IterationRecord {
+    IterationRecord {
+        iteration: it,
+        changed: next.iter().zip(state).filter(|(a, b)| a != b).count(),
+        in_contact: state.iter().filter(|s| **s != PairState::Free).count(),
+        slipping: state.iter().filter(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative)).count(),
+        residual: 0.0,
+    }
 }

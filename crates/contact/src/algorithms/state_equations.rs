@@ -134,6 +134,20 @@ pub(crate) fn solve_state_equations(
     state: &[PairState],
     frictional: bool,
 ) -> Option<DMatrix<f64>> {
+    solve_regularised_state_equations(problem, interface, start, state, frictional, &[])
+}
+
+/// [`solve_state_equations`] with the stick rows regularised: `Δs_k + e_k τ_k = 0` instead of
+/// `Δs_k = 0` (an elastic tangential spring of compliance `e_k` in series with the interface;
+/// `stick_compliance` empty: `e = 0`, the exact equations).
+pub(crate) fn solve_regularised_state_equations(
+    problem: &ContactProblem,
+    interface: &Interface,
+    start: &StepStart,
+    state: &[PairState],
+    frictional: bool,
+    stick_compliance: &[f64],
+) -> Option<DMatrix<f64>> {
     let m = state.len();
     let contact: Vec<usize> = (0..m).filter(|&k| state[k] != PairState::Free).collect();
     let mut tangential = vec![Tangential::Zero; m];
@@ -158,7 +172,8 @@ pub(crate) fn solve_state_equations(
     if r == 0 {
         return Some(x);
     }
-    let key = (state.to_vec(), problem.friction.clone(), problem.tangential.clone(), frictional);
+    let compliance_bits = stick_compliance.iter().map(|e| e.to_bits()).collect();
+    let key = (state.to_vec(), problem.friction.clone(), problem.tangential.clone(), frictional, compliance_bits);
     let mut cache = interface.last_state.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     let hit = cache.as_ref().is_some_and(|c| c.key == key && c.lu.nrows() == r);
     let mut a = if hit { Mat::<f64>::zeros(0, 0) } else { Mat::<f64>::zeros(r, r) };
@@ -198,6 +213,11 @@ pub(crate) fn solve_state_equations(
                     Tangential::Zero => {}
                 }
                 a[(i, jc)] = v;
+            }
+        }
+        for (si, &k) in stick.iter().enumerate() {
+            if let Some(&e) = stick_compliance.get(k) {
+                a[(contact.len() + si, contact.len() + si)] += e;
             }
         }
     }
