@@ -6,7 +6,8 @@
 #                                    # cylinder_on_block_big_L2.msh, pin_lug.msh,
 #                                    # interference_fit.msh, cattaneo_mindlin_L{0,1,2,3}.msh,
 #                                    # incline.msh, pin_lug_L1.msh, pin_lug_L3.msh,
-#                                    # long_interface_{96,190,380}.msh
+#                                    # long_interface_{96,190,380}.msh,
+#                                    # sliding_block_{matching,nonmatching}.msh
 #   meshes/generic/generate.sh --no-check
 #
 # Environment: GMSH (default: gmsh), PYTHON (default: python3, must import gmsh for the check).
@@ -55,6 +56,9 @@ for level in 0 1 2 3; do
     cylinder_arc,cylinder_top,block_top,block_bottom,block_side -- -setnumber level "$level"
 done
 mesh incline.geo incline.msh block,ground block_bottom,block_left,block_right,block_top,ground_top
+sb_curves=base_bottom,base_top,block_bottom,block_right,block_top,block_left
+mesh sliding_block.geo sliding_block_matching.msh block,base "$sb_curves" -- -setnumber n_base 40
+mesh sliding_block.geo sliding_block_nonmatching.msh block,base "$sb_curves" -- -setnumber n_base 29
 for n in 96 190 380; do
   mesh long_interface.geo "long_interface_$n.msh" lower,upper lower_bottom,lower_top,upper_bottom,upper_top \
     -- -setnumber n_upper "$n"

@@ -25,6 +25,7 @@ pub mod builder;
 pub mod certify;
 pub mod error;
 mod factor_cache;
+pub mod finite_sliding;
 mod floating;
 pub mod history;
 pub mod interface;
@@ -57,6 +58,7 @@ pub use certify::{Check, FailedCheck, certify, check_energy_balance, energy_scal
 pub use clarabel_qp::{solve_frictionless_qp, solve_frictionless_qp_on};
 pub use clarabel_tresca::{solve_frictional_qp, solve_frictional_qp_on};
 pub use error::ContactError;
+pub use finite_sliding::solve_finite_sliding;
 pub use frictional_active_set::solve_frictional_active_set;
 pub use frictionless_active_set::solve_frictionless_active_set;
 pub use history::{HistoryStep, Retention, equal_steps};

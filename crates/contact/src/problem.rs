@@ -187,6 +187,39 @@ impl ContactProblem {
         Ok(problem)
     }
 
+    /// The same bodies, load patterns, friction and slave kinds with new `pairs` (one per pair
+    /// of `self`, in the same order): finite sliding's pairs on the current configuration
+    /// ([`crate::finite_sliding`]). `K` is not assembled again; the pair rows are built and,
+    /// up to [`crate::linear::SPARSE_FROM_PAIRS`] pairs, `K` is factored bordered by them afresh
+    /// (their sparsity changes as pairs change segment); beyond, `K`'s own factor is reused.
+    ///
+    /// # Errors
+    /// A number of pairs other than `self`'s, or the rows' factorisation failing.
+    pub(crate) fn with_pairs(&self, pairs: Vec<ContactPair>) -> Result<ContactProblem, ContactError> {
+        if pairs.len() != self.pairs.len() {
+            return Err(ContactError::InvalidInput(format!(
+                "{} pairs given for a problem of {} pairs",
+                pairs.len(),
+                self.pairs.len()
+            )));
+        }
+        let (normal_rows, tangent_rows) = pair_rows(&self.system, &pairs, &self.slave)?;
+        let (solver, bordered) = if normal_rows.len() >= crate::linear::SPARSE_FROM_PAIRS {
+            (self.solver.clone(), false)
+        } else {
+            factor_stiffness(&self.system, &normal_rows, &tangent_rows, None)?
+        };
+        let (model, system, friction, slave) =
+            (self.model.clone(), self.system.clone(), self.friction.clone(), self.slave.clone());
+        let mut problem =
+            ContactProblem::assemble_parts(model, system, solver, pairs, normal_rows, tangent_rows, friction, slave);
+        problem.bordered = bordered;
+        problem.patterns = self.patterns.clone();
+        problem.pattern_rhs = self.pattern_rhs.clone();
+        problem.pattern_prescribed = self.pattern_prescribed.clone();
+        Ok(problem)
+    }
+
     /// Whether [`ContactProblem::solver`] was factored bordered by the pair rows (always up to
     /// [`crate::linear::SPARSE_FROM_PAIRS`] pairs), so that [`crate::Interface::new`] condenses
     /// from it; else it is `K`'s own Cholesky factor (the sparse path needs no more, and the
