@@ -23,6 +23,7 @@ pub mod mindlin_deresiewicz;
 pub mod pin_lug;
 mod profile;
 pub mod report;
+pub mod sliding_patch;
 
 use std::path::{Path, PathBuf};
 
@@ -150,7 +151,7 @@ pub enum VerifyError {
 }
 
 /// The names of the gallery's cases, in the order they run.
-pub const CASES: [&str; 8] = [
+pub const CASES: [&str; 9] = [
     "contact_patch",
     "hertz",
     "cattaneo_mindlin",
@@ -159,6 +160,7 @@ pub const CASES: [&str; 8] = [
     "incline",
     "pin_lug",
     "flagship",
+    "sliding_patch",
 ];
 
 /// Runs one case by name; `root` is the repository root (where `scenes/` and `meshes/` are).
@@ -175,6 +177,7 @@ pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, Ver
         "incline" => incline::run(root, level),
         "pin_lug" => pin_lug::run(root, level),
         "flagship" => flagship::run(root, level),
+        "sliding_patch" => sliding_patch::run(root, level),
         other => Err(VerifyError::Missing {
             case: other.to_string(),
             reason: format!("no such case (cases: {})", CASES.join(", ")),
@@ -189,7 +192,7 @@ pub struct VerifyArgs {
     #[arg(long, default_value = "fast", value_parser = ["fast", "full"])]
     pub level: String,
     /// Cases to run, comma separated (default: all of contact_patch, hertz, cattaneo_mindlin,
-    /// mindlin_deresiewicz, interference_fit, incline, pin_lug, flagship).
+    /// mindlin_deresiewicz, interference_fit, incline, pin_lug, flagship, sliding_patch).
     #[arg(long, value_delimiter = ',')]
     pub cases: Vec<String>,
     /// The repository root (where `scenes/` and `meshes/` are).
