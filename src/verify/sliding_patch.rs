@@ -69,9 +69,9 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
         };
         report.checks.extend([
             check("tangential force T / (μP), worst step", worst.tangential, 1.0, Tolerance::Relative(1e-6)),
-            check("max |p_k − p| / p, worst step", worst.pressure, 0.0, Tolerance::Absolute(1e-6)),
+            check("max abs(p_k − p) / p, worst step", worst.pressure, 0.0, Tolerance::Absolute(1e-6)),
             check("stored energy / closed form, worst step", worst.stored, 1.0, Tolerance::Relative(1e-6)),
-            check("|ΔW − ΔE − ΔD| / ΔW, worst step", worst.balance, 0.0, Tolerance::Absolute(1e-9)),
+            check("abs(ΔW − ΔE − ΔD) / ΔW, worst step", worst.balance, 0.0, Tolerance::Absolute(1e-9)),
         ]);
         report.measurements.extend([
             Measurement {
