@@ -473,6 +473,7 @@ fn solve_step(
 /// without its shortcut or history (finite sliding, [`crate::finite_sliding`], solves each step
 /// on pairs of its own). `alpha` carries the floating bodies' rigid motions from step to step.
 /// Returns the solution, the floating bodies' iterations and their residual force.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn solve_step_from(
     problem: &ContactProblem,
     settings: &SolverSettings,
