@@ -37,14 +37,14 @@ const STORED: f64 = 0.0295;
 /// is the first push, at whose start the block still sticks).
 const FIRST_STEADY: usize = 4;
 
-fn solve(path: &str) -> GenericOutcome {
-    let mut scene = load_scene(Path::new(path), &[]).unwrap();
+fn solve(path: &str, overrides: &[String]) -> GenericOutcome {
+    let mut scene = load_scene(Path::new(path), overrides).unwrap();
     scene.every_profile = true;
     solve_generic(&scene, &mut |_, _| {}).unwrap()
 }
 
-fn check_patch(path: &str) {
-    let out = solve(path);
+fn check_patch(path: &str, overrides: &[String]) {
+    let out = solve(path, overrides);
     assert_eq!(out.report.status, "converged", "{path}");
     let steps = &out.report.steps;
     assert_eq!(steps.len(), 32, "{path}");
@@ -87,12 +87,17 @@ fn check_patch(path: &str) {
 
 #[test]
 fn sliding_patch_on_matching_meshes_keeps_mu_p_and_a_uniform_pressure() {
-    check_patch("scenes/generic/sliding_patch_matching.toml");
+    check_patch("scenes/generic/sliding_patch_matching.toml", &[]);
+}
+
+#[test]
+fn sliding_patch_with_the_augmented_lagrangian_keeps_mu_p_and_a_uniform_pressure() {
+    check_patch("scenes/generic/sliding_patch_matching.toml", &["solver.algorithm=augmented_lagrangian".into()]);
 }
 
 #[test]
 fn sliding_patch_on_non_matching_meshes_keeps_mu_p_and_a_uniform_pressure() {
-    check_patch("scenes/generic/sliding_patch_nonmatching.toml");
+    check_patch("scenes/generic/sliding_patch_nonmatching.toml", &[]);
 }
 
 #[test]
