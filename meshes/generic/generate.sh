@@ -7,7 +7,8 @@
 #                                    # interference_fit.msh, cattaneo_mindlin_L{0,1,2,3}.msh,
 #                                    # hills_nowell_L{1,2,3}.msh, incline.msh, pin_lug_L1.msh, pin_lug_L3.msh,
 #                                    # long_interface_{96,190,380}.msh,
-#                                    # pad_on_base_thin_{032,016}.msh
+#                                    # pad_on_base_thin_{032,016}.msh,
+#                                    # sliding_block_{matching,nonmatching}.msh
 #   meshes/generic/generate.sh --no-check
 #
 # Environment: GMSH (default: gmsh), PYTHON (default: python3, must import gmsh for the check).
@@ -60,6 +61,9 @@ for level in 1 2 3; do
     cylinder_arc,cylinder_top,block_top,block_bottom,block_left,block_right -- -setnumber level "$level"
 done
 mesh incline.geo incline.msh block,ground block_bottom,block_left,block_right,block_top,ground_top
+sb_curves=base_bottom,base_top,block_bottom,block_right,block_top,block_left
+mesh sliding_block.geo sliding_block_matching.msh block,base "$sb_curves" -- -setnumber n_base 40
+mesh sliding_block.geo sliding_block_nonmatching.msh block,base "$sb_curves" -- -setnumber n_base 29
 for n in 96 190 380; do
   mesh long_interface.geo "long_interface_$n.msh" lower,upper lower_bottom,lower_top,upper_bottom,upper_top \
     -- -setnumber n_upper "$n"

@@ -28,7 +28,8 @@ use web_time::Instant;
 use serde::Serialize;
 
 use contact2d_contact::{
-    BuiltProblem, ContactError, History, Retention, SolvedStep, builder::group_length, solve_keeping,
+    BuiltProblem, ContactError, History, Retention, SolvedStep, builder::group_length, solve_finite_sliding,
+    solve_keeping,
 };
 use contact2d_mesh::read_msh;
 
@@ -381,8 +382,13 @@ fn solve_generic_from(
     let fixed = fixed_groups(scene);
     // Each step's summary row is made as the step is solved; of the steps before, the rows
     // keep only what the next step needs.
+    // Finite sliding's last problem (its pairs those of the last step), kept for the summary.
+    let mut last_built: Option<BuiltProblem> = None;
     let mut rows = SummaryRows::new(&built, &fixed, scene.every_profile);
-    if scene.linearised_displacements {
+    // Finite sliding forms the pairs on the current configuration: the small-sliding check
+    // (displacements against the undeformed pairs' segments) does not apply to the run.
+    let finite: Vec<bool> = scene.contact.iter().map(|c| c.sliding == scene::SlidingKey::Finite).collect();
+    if scene.linearised_displacements || finite.iter().any(|f| *f) {
         rows = rows.without_sliding_check();
     }
     if let Some(cycle) = scene.last_cycle() {
@@ -391,19 +397,29 @@ fn solve_generic_from(
     }
     let (mut failed, mut solve_time, mut post_time) = (None, 0.0, 0.0);
     let Stream { retention, on_step, on_solved } = stream;
-    let history = solve_keeping(&built.problem, &settings, &schedule, retention, &mut |i, step| {
+    let mut observe = |i: usize, step: &SolvedStep, current: &BuiltProblem| {
         let post_clock = Instant::now();
         solve_time += step.solution.time.as_secs_f64();
         if failed.is_none()
-            && let Err(e) = rows.push(&built, step)
+            && let Err(e) = rows.push_on(current, step)
         {
             failed = Some(e);
         }
-        on_solved(&built, i, step);
+        on_solved(current, i, step);
         post_time += post_clock.elapsed().as_secs_f64();
         on_step(i + 1, total);
-    })
-    .map_err(contact_error)?;
+    };
+    let history = if finite.iter().any(|f| *f) {
+        // Each step is solved, and its rows made, on the pairs of its own configuration; the
+        // outcome keeps the last step's.
+        let (history, last) = solve_finite_sliding(&built, &finite, &settings, &schedule, retention, &mut observe)
+            .map_err(contact_error)?;
+        last_built = Some(last);
+        history
+    } else {
+        solve_keeping(&built.problem, &settings, &schedule, retention, &mut |i, step| observe(i, step, &built))
+            .map_err(contact_error)?
+    };
     if let Some(e) = failed {
         return Err(contact_error(e));
     }
@@ -419,9 +435,22 @@ fn solve_generic_from(
         post: post_time,
         total: 0.0,
     };
-    let input =
-        SummaryInput { scene, built: &built, last, groups, scaled: history.scaled, total_steps: total, times, clock };
+    if let Some(final_built) = &last_built {
+        rows.rebase(final_built);
+    }
+    let summarised = last_built.as_ref().unwrap_or(&built);
+    let input = SummaryInput {
+        scene,
+        built: summarised,
+        last,
+        groups,
+        scaled: history.scaled,
+        total_steps: total,
+        times,
+        clock,
+    };
     let report = summarise(input, rows).map_err(contact_error)?;
+    let built = last_built.unwrap_or(built);
     Ok(GenericOutcome { scene: scene.clone(), built, history, report })
 }
 

@@ -237,7 +237,21 @@ impl<'a> StepResults<'a> {
     /// [`ContactError::InvalidInput`] when the step's solution does not fit the problem
     /// (reactions).
     pub fn push(&mut self, step: &SolvedStep, with_profile: bool) -> Result<StepResult, ContactError> {
-        let (built, problem) = (self.built, &self.built.problem);
+        self.push_on(self.built, step, with_profile)
+    }
+
+    /// [`StepResults::push`] of a step solved on `built`, a problem of the same bodies and
+    /// interfaces whose pairs may differ (finite sliding), which these results do not keep.
+    ///
+    /// # Errors
+    /// As [`StepResults::push`].
+    pub fn push_on(
+        &mut self,
+        built: &BuiltProblem,
+        step: &SolvedStep,
+        with_profile: bool,
+    ) -> Result<StepResult, ContactError> {
+        let problem = &built.problem;
         let s = &step.solution;
         let before_tangential = self.previous.as_ref().map(|(_, t)| t.as_slice());
         let mut contacts = BTreeMap::new();

@@ -164,10 +164,12 @@ pub enum PairingKey {
 pub enum SlidingKey {
     /// The pairs are formed once, in the undeformed configuration; a run whose pairs in contact
     /// slide further than [`super::sliding::SMALL_SLIDING_FRACTION`] of their segment gets a
-    /// note (the default, and the only one solved).
+    /// note (the default: every existing scene's pairs, and its cost, stay as they were).
     #[default]
     Small,
-    /// Re-pairing on the current configuration: refused (not implemented).
+    /// The pairs formed again on the current configuration before every load step
+    /// (node-to-segment pairing; the active set or the augmented Lagrangian;
+    /// [`contact2d_contact::finite_sliding`]).
     Finite,
 }
 
@@ -206,7 +208,8 @@ pub struct ContactEntry {
     /// Master and slave may bound the same body (default `false`: such a pair is an error).
     #[serde(default)]
     pub self_contact: bool,
-    /// `"small"` (default): paired once in the undeformed configuration.
+    /// `"small"` (default): paired once in the undeformed configuration; `"finite"`: paired
+    /// again on the current configuration before every step.
     #[serde(default)]
     pub sliding: SlidingKey,
     /// Two groups `[A, B]` whose mean relative displacement along the contact is the abscissa
@@ -433,15 +436,6 @@ impl GenericScene {
             if self.contact[..i].iter().any(|d| d.name == c.name) {
                 return Err(self.fail(&format!("contact.{i}.name"), format!("\"{}\" names two contacts", c.name)));
             }
-        }
-        if let Some(i) = self.contact.iter().position(|c| c.sliding == SlidingKey::Finite) {
-            return Err(self.fail(
-                &format!("contact.{i}.sliding"),
-                "finite sliding (pairs formed again on the current configuration) is not implemented; use \"small\" \
-                 (the pairs of the undeformed configuration, with a note when a pair slides more than half its \
-                 segment)"
-                    .into(),
-            ));
         }
         if self.solver.place_zone_ends == Some(true) && self.solver.algorithm != ContactAlgorithm::Boussinesq {
             return Err(self.fail(

@@ -55,10 +55,20 @@ impl<'a> SummaryRows<'a> {
     /// [`ContactError::InvalidInput`] when the step does not fit the problem.
     pub fn push(&mut self, built: &'a BuiltProblem, step: &SolvedStep) -> Result<(), ContactError> {
         self.results.rebase(built);
-        let row = self.results.push(step, self.every_profile)?;
+        self.push_on(built, step)
+    }
+
+    /// The row of the next step, solved on `current`, a problem of its own that these rows do
+    /// not keep (finite sliding's pairs of the step, [`contact2d_contact::finite_sliding`]);
+    /// [`SummaryRows::rebase`] on the last one before the summary.
+    ///
+    /// # Errors
+    /// As [`SummaryRows::push`].
+    pub fn push_on(&mut self, current: &BuiltProblem, step: &SolvedStep) -> Result<(), ContactError> {
+        let row = self.results.push_on(current, step, self.every_profile)?;
         self.sliding.observe(&step.solution);
         if let Some(watch) = &mut self.fretting {
-            watch.observe(built, &step.solution)?;
+            watch.observe(current, &step.solution)?;
         }
         // Checked one row at a time: the whole summary as one JSON value grows with the steps.
         if self.first_non_finite.is_none() {
@@ -67,6 +77,12 @@ impl<'a> SummaryRows<'a> {
         }
         self.rows.push(row);
         Ok(())
+    }
+
+    /// The next rows, and the summary's profiles, are of `built` (the problem of the last step
+    /// pushed with [`SummaryRows::push_on`]).
+    pub fn rebase(&mut self, built: &'a BuiltProblem) {
+        self.results.rebase(built);
     }
 }
 

@@ -24,6 +24,7 @@ pub mod mindlin_deresiewicz;
 pub mod pin_lug;
 mod profile;
 pub mod report;
+pub mod sliding_patch;
 
 use std::path::{Path, PathBuf};
 
@@ -151,7 +152,7 @@ pub enum VerifyError {
 }
 
 /// The names of the gallery's cases, in the order they run.
-pub const CASES: [&str; 9] = [
+pub const CASES: [&str; 10] = [
     "contact_patch",
     "hertz",
     "cattaneo_mindlin",
@@ -161,6 +162,7 @@ pub const CASES: [&str; 9] = [
     "incline",
     "pin_lug",
     "flagship",
+    "sliding_patch",
 ];
 
 /// Runs one case by name; `root` is the repository root (where `scenes/` and `meshes/` are).
@@ -178,6 +180,7 @@ pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, Ver
         "incline" => incline::run(root, level),
         "pin_lug" => pin_lug::run(root, level),
         "flagship" => flagship::run(root, level),
+        "sliding_patch" => sliding_patch::run(root, level),
         other => Err(VerifyError::Missing {
             case: other.to_string(),
             reason: format!("no such case (cases: {})", CASES.join(", ")),
@@ -192,7 +195,7 @@ pub struct VerifyArgs {
     #[arg(long, default_value = "fast", value_parser = ["fast", "full"])]
     pub level: String,
     /// Cases to run, comma separated (default: all of contact_patch, hertz, cattaneo_mindlin,
-    /// mindlin_deresiewicz, hills_nowell, interference_fit, incline, pin_lug, flagship).
+    /// mindlin_deresiewicz, hills_nowell, interference_fit, incline, pin_lug, flagship, sliding_patch).
     #[arg(long, value_delimiter = ',')]
     pub cases: Vec<String>,
     /// The repository root (where `scenes/` and `meshes/` are).

@@ -80,6 +80,15 @@ pub enum ContactError {
         /// Which of its assumptions the problem breaks, and what to use instead.
         reason: String,
     },
+    /// Finite sliding asked for an interface it does not handle (segment-to-segment or
+    /// node-to-node pairing, a given gap), refused before solving.
+    #[error("finite sliding of contact \"{contact}\": {reason}")]
+    FiniteSliding {
+        /// The interface's name.
+        contact: String,
+        /// What finite sliding does not handle there, and what to use instead.
+        reason: String,
+    },
     /// A parameter outside its admissible range.
     #[error("invalid contact input: {0}")]
     InvalidInput(String),

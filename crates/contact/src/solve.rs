@@ -485,6 +485,35 @@ fn solve_step(
     }
 }
 
+/// One step of `problem` (not yet loaded) at the pattern factors `target` (those of the step
+/// before: `previous`) from `start` and the pair states `guess`: the step of [`solve_keeping`]
+/// without its shortcut or history (finite sliding, [`crate::finite_sliding`], solves each step
+/// on pairs of its own). `alpha` carries the floating bodies' rigid motions from step to step.
+/// Returns the solution, the floating bodies' iterations and their residual force.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn solve_step_from(
+    problem: &ContactProblem,
+    settings: &SolverSettings,
+    target: &[f64],
+    previous: &[f64],
+    start: &StepStart,
+    guess: Option<&[PairState]>,
+    step: usize,
+    alpha: &mut Vec<f64>,
+) -> Result<(ContactSolution, usize, f64), ContactError> {
+    let mut loaded = problem.clone();
+    loaded.apply_load(target, None)?;
+    let mut interface = match settings.linear.resolve(settings.algorithm, problem.num_pairs())? {
+        LinearSolver::Sparse => Interface::sparse(&loaded),
+        _ => Interface::new(&loaded),
+    };
+    let modes = RigidModes::of(problem);
+    alpha.resize(modes.len(), 0.0);
+    let context = StepContext { order: &[], start, guess, step };
+    let factors = StepFactors { target, previous };
+    solve_floating_step(&mut loaded, &mut interface, settings, &factors, &context, &modes, alpha)
+}
+
 /// The refusal of the Boussinesq algorithm for `reason`.
 fn not_boussinesq(reason: String) -> ContactError {
     ContactError::NotApplicable { algorithm: ContactAlgorithm::Boussinesq.key(), reason }
