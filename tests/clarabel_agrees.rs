@@ -24,14 +24,22 @@
 
 mod common;
 
-use contact2d::generic::{GenericReport, load_scene, solve_generic};
+use contact2d::contact::ContactError;
+use contact2d::generic::{GenericError, GenericReport, load_scene, solve_generic};
 
-fn run(path: &std::path::Path, algorithm: &str) -> (GenericReport, f64) {
+fn run(path: &std::path::Path, algorithm: &str) -> Result<(GenericReport, f64), GenericError> {
     let overrides = [format!("solver.algorithm={algorithm}")];
     let scene = load_scene(path, &overrides).unwrap();
     let clock = std::time::Instant::now();
-    let outcome = solve_generic(&scene, &mut |_, _| {}).unwrap();
-    (outcome.report, clock.elapsed().as_secs_f64())
+    let outcome = solve_generic(&scene, &mut |_, _| {})?;
+    Ok((outcome.report, clock.elapsed().as_secs_f64()))
+}
+
+/// Whether the scene has a contact with finite sliding, which Clarabel does not solve (its pairs
+/// are formed again before every step; refused before solving, docs/user-guide.md `sliding`).
+fn has_finite_sliding(path: &std::path::Path) -> bool {
+    let scene = load_scene(path, &[]).unwrap();
+    scene.contact.iter().any(|c| c.sliding == contact2d::generic::scene::SlidingKey::Finite)
 }
 
 #[test]
@@ -40,8 +48,18 @@ fn clarabel_converges_and_agrees_with_the_active_set_on_every_bundled_scene() {
     assert!(scenes.len() >= 10, "the bundled generic scenes are missing");
     for path in &scenes {
         let name = path.file_stem().unwrap().to_string_lossy().to_string();
-        let (active, t_active) = run(path, "active_set");
-        let (clarabel, t_clarabel) = run(path, "clarabel");
+        let (active, t_active) = run(path, "active_set").unwrap();
+        let (clarabel, t_clarabel) = match run(path, "clarabel") {
+            Ok(run) => run,
+            // The one refusal allowed: finite sliding, named before solving.
+            Err(GenericError::Contact { source, .. })
+                if has_finite_sliding(path) && matches!(*source, ContactError::NotApplicable { .. }) =>
+            {
+                println!("{name}: Clarabel refused before solving ({source})");
+                continue;
+            }
+            Err(e) => panic!("{name}: Clarabel: {e}"),
+        };
         println!("{name}: active set {t_active:.2} s, Clarabel {t_clarabel:.2} s");
         assert_eq!(active.status, "converged", "{name}: the active set");
         assert_eq!(clarabel.status, "converged", "{name}: Clarabel ({:?})", clarabel.failed_check);

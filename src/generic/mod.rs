@@ -365,7 +365,11 @@ fn solve_generic_from(
     let (scene_name, mesh_name) = (scene.file.display().to_string(), scene.mesh_path().display().to_string());
     let contact_error =
         |source| GenericError::Contact { scene: scene_name.clone(), mesh: mesh_name.clone(), source: Box::new(source) };
-    if scene.solver.place_zone_ends == Some(true) {
+    // The key belongs to the Boussinesq algorithm; another one solves the mesh as generated (and
+    // the summary's notes say so).
+    if scene.solver.place_zone_ends == Some(true)
+        && scene.solver.algorithm == contact2d_contact::ContactAlgorithm::Boussinesq
+    {
         return solve_placed_scene(scene, mesh, clock, stream).map_err(contact_error);
     }
     let read = clock.elapsed().as_secs_f64();

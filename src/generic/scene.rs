@@ -437,16 +437,6 @@ impl GenericScene {
                 return Err(self.fail(&format!("contact.{i}.name"), format!("\"{}\" names two contacts", c.name)));
             }
         }
-        if self.solver.place_zone_ends == Some(true) && self.solver.algorithm != ContactAlgorithm::Boussinesq {
-            return Err(self.fail(
-                "solver.place_zone_ends",
-                format!(
-                    "zone ends are placed by the boussinesq algorithm only, not by {} (set solver.algorithm = \
-                     \"boussinesq\", or leave the key out)",
-                    self.solver.algorithm.key()
-                ),
-            ));
-        }
         if self.solver.algorithm == ContactAlgorithm::Boussinesq && self.contact.len() != 1 {
             return Err(self.fail(
                 "solver.algorithm",

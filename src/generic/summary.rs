@@ -157,6 +157,17 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
         scene.contact.iter().map(|c| c.pairing == scene::PairingKey::NodeToSegment).collect();
     notes.extend(setup_notes::quadratic_node_to_segment_notes(built, &node_to_segment));
     notes.extend(sliding.notes());
+    if scene.solver.place_zone_ends == Some(true)
+        && scene.solver.algorithm != contact2d_contact::ContactAlgorithm::Boussinesq
+    {
+        // As for the plate-insert preset, the key belongs to the Boussinesq algorithm: another
+        // algorithm (chosen with --set, or by compare) solves the mesh as generated, and says so.
+        notes.push(format!(
+            "solver.place_zone_ends = true places zone ends with the boussinesq algorithm only; {} solved the mesh \
+             as generated",
+            scene.solver.algorithm.key()
+        ));
+    }
     let (poor, count) = crate::mesh_summary::poor_cells(&built.problem.model.mesh);
     if count > 0 {
         let worst: Vec<String> = poor.iter().take(3).map(ToString::to_string).collect();
