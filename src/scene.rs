@@ -18,10 +18,12 @@ use std::path::{Path, PathBuf};
 use contact2d_contact::{BuiltProblem, ContactError, SolvedStep};
 use web_time::Instant;
 
+#[cfg(feature = "native")]
+use crate::generic::outputs as generic_outputs;
 use crate::generic::{
-    GenericError, GenericOutcome, GenericReport, GenericScene, Progress, outputs as generic_outputs,
-    solve_generic_streaming, solve_generic_until,
+    GenericError, GenericOutcome, GenericReport, GenericScene, Progress, solve_generic_streaming, solve_generic_until,
 };
+#[cfg(feature = "native")]
 use crate::output::{OutputDir, OutputError};
 use crate::plate_insert::PlateInsertScene;
 use crate::plate_insert::report::PaperReport;
@@ -197,10 +199,12 @@ impl Outcome {
         }
     }
 
-    /// Writes every output file of a run that kept its steps ([`Scene::solve`]) into `folder`.
+    /// Writes every output file of a run that kept its steps ([`Scene::solve`]) into `folder`
+    /// (native builds only: the writers are not in the WebAssembly build).
     ///
     /// # Errors
     /// [`OutputError`] naming the file at fault (and a streamed run, which kept one step).
+    #[cfg(feature = "native")]
     pub fn write_outputs_into(&self, folder: OutputDir) -> Result<Vec<PathBuf>, OutputError> {
         match self {
             Outcome::Generic(o) => generic_outputs::write_generic_outputs_into(folder, o),
@@ -213,6 +217,7 @@ impl Outcome {
     ///
     /// # Errors
     /// [`OutputError`] naming the file at fault.
+    #[cfg(feature = "native")]
     pub fn finish_streamed_outputs(&self, folder: OutputDir) -> Result<Vec<PathBuf>, OutputError> {
         match self {
             Outcome::Generic(o) => generic_outputs::finish_generic_outputs(folder, o),
