@@ -29,7 +29,6 @@ pub mod generic;
 pub mod input_file;
 pub mod mesh_summary;
 pub mod output;
-pub mod placement;
 pub mod plate_insert;
 /// The plate-insert preset's run (`crate::plate_insert::run`), at its historical path.
 pub use plate_insert::run;

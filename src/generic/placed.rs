@@ -1,6 +1,6 @@
 //! The Boussinesq algorithm with zone ends placed on the mesh (`solver.place_zone_ends = true`)
 //! on a generic scene: its one contact's master curve, straight or circular, is a
-//! [`PlaceableContact`] whose corners the zone-end search (`crate::placement`) moves.
+//! [`PlaceableContact`] whose corners the zone-end search (`contact2d_contact::placement`) moves.
 //!
 //! ```text
 //! refuse    before solving, with ContactError::NotApplicable: a pairing without node pairs
@@ -23,8 +23,8 @@ use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Mesh, NodeId};
 
 use super::{GenericReport, GenericScene, SummaryInput, SummaryRows, Times, summarise};
-use crate::placement::curve::MasterCurve;
-use crate::placement::{
+use contact2d_contact::placement::curve::MasterCurve;
+use contact2d_contact::placement::{
     NodePlacement, PlaceableContact, PlacedLoading, PlacedStep, ZoneEndSearch, pair_coordinates, solve_placed_history,
 };
 

@@ -14,8 +14,8 @@ use contact2d_mesh::NodeId;
 
 use super::GenericReport;
 use super::zones::ZoneEnds;
-use crate::placement::curve::MasterCurve;
-use crate::placement::{PlacedCase, PlacedStep, pair_coordinates};
+use contact2d_contact::placement::curve::MasterCurve;
+use contact2d_contact::placement::{PlacedCase, PlacedStep, pair_coordinates};
 
 /// A generic scene's built problem with its master curve.
 #[derive(Debug, Clone)]

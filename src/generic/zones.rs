@@ -3,6 +3,7 @@
 //! the slip) opens like the 3/2 power of the distance: `gap^{2/3}` is interpolated linearly over
 //! the next two outside pairs; on a circular curve also as angles about its centre.
 
+use contact2d_contact::placement::curve::circle_through as circle_through_three;
 use serde::Serialize;
 
 /// The ends of the zones of an interface, two per zone (start, end) in order along the master
@@ -66,15 +67,7 @@ fn circle_through(points: &[[f64; 2]]) -> Option<[f64; 2]> {
     if n < 3 {
         return None;
     }
-    let (a, b, c) = (points[0], points[n / 2], points[n - 1]);
-    let d = 2.0 * (a[0] * (b[1] - c[1]) + b[0] * (c[1] - a[1]) + c[0] * (a[1] - b[1]));
-    if d.abs() < f64::EPSILON {
-        return None;
-    }
-    let sq = |p: [f64; 2]| p[0] * p[0] + p[1] * p[1];
-    let cx = (sq(a) * (b[1] - c[1]) + sq(b) * (c[1] - a[1]) + sq(c) * (a[1] - b[1])) / d;
-    let cy = (sq(a) * (c[0] - b[0]) + sq(b) * (a[0] - c[0]) + sq(c) * (b[0] - a[0])) / d;
-    let r = (a[0] - cx).hypot(a[1] - cy);
+    let ([cx, cy], r) = circle_through_three(points[0], points[n / 2], points[n - 1])?;
     points.iter().all(|p| ((p[0] - cx).hypot(p[1] - cy) - r).abs() <= 1e-6 * r).then_some([cx, cy])
 }
 

@@ -28,7 +28,7 @@ pub mod report;
 mod results;
 pub mod run;
 pub mod scene;
-pub use crate::placement::{ContourHistory, NodePlacement, PlacedLoading, ZoneEndSearch};
+pub use contact2d_contact::placement::{ContourHistory, NodePlacement, PlacedLoading, ZoneEndSearch};
 pub use group_geometry::{MisplacedGroup, check_group_geometry};
 pub use placement::{PlacedStep, PlateInsertFamily, place_zone_ends, solve_placed_history};
 pub use results::{PLATE_HALF_HEIGHT, PlateInsertResults};

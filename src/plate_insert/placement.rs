@@ -6,7 +6,7 @@ use contact2d_contact::{ContactError, ContactProblem};
 use contact2d_mesh::{Mesh, NodeId};
 
 use super::{PlateInsert, PlateInsertProblem};
-use crate::placement::{
+use contact2d_contact::placement::{
     self, ContourHistory, NodePlacement, PlaceableContact, PlacedCase, PlacedLoading, ZoneEndSearch,
 };
 

@@ -89,7 +89,7 @@ pub struct SolverEntry {
     #[serde(default)]
     pub tangential_penalty: Option<f64>,
     /// Boussinesq only: place master nodes exactly at the zone ends l* and b* by root finding
-    /// (the paper's mesh adjustment, `crate::placement`; default `true` on the plate-insert
+    /// (the paper's mesh adjustment, `contact2d_contact::placement`; default `true` on the plate-insert
     /// preset; on a generic scene only when set, for a straight or circular master curve);
     /// `false` keeps the mesh and resolves the zone ends to its nodes.
     #[serde(default)]

@@ -24,9 +24,11 @@ use std::f64::consts::PI;
 use std::path::Path;
 
 use super::profile::l2_error;
-use super::{CaseReport, Check, Figure, Level, Measurement, Tolerance, VerifyError, mesh_override, scene_path};
+use super::{
+    CaseReport, Check, Figure, Level, Measurement, Tolerance, VerifyError, mesh_override, scene_path, solve_on_mesh,
+};
 use crate::generic::results::contact_result;
-use crate::generic::{GenericOutcome, load_scene, solve_generic};
+use crate::generic::{GenericOutcome, load_scene};
 use crate::output::chart::{Axes, Series};
 
 const SCENE: &str = "scenes/generic/cattaneo_mindlin.toml";
@@ -97,10 +99,7 @@ fn sheared_steps(out: &GenericOutcome) -> Result<Vec<Sheared>, VerifyError> {
 
 /// Solves the scene on `mesh` with optional extra overrides.
 fn solve(root: &Path, mesh: &str, extra: &[String]) -> Result<GenericOutcome, VerifyError> {
-    let mut overrides = vec![mesh_override(mesh)];
-    overrides.extend_from_slice(extra);
-    let scene = load_scene(&scene_path(root, SCENE), &overrides)?;
-    Ok(solve_generic(&scene, &mut |_, _| {})?)
+    solve_on_mesh(root, SCENE, mesh, extra)
 }
 
 /// The L2 error of a step's shear profile over |x| ≤ a, relative to μ p0.

@@ -20,8 +20,7 @@ use std::f64::consts::PI;
 use std::path::Path;
 
 use super::profile::l2_error;
-use super::{CaseReport, Check, Figure, Level, Measurement, Tolerance, VerifyError, mesh_override, scene_path};
-use crate::generic::{load_scene, solve_generic};
+use super::{CaseReport, Check, Figure, Level, Measurement, Tolerance, VerifyError, solve_on_mesh};
 use crate::output::chart::{Axes, Series};
 
 const SCENE: &str = "scenes/generic/cylinder_on_block.toml";
@@ -57,9 +56,7 @@ fn pairing_override(pairing: &str) -> String {
 /// # Errors
 /// A scene that cannot be read or solved, or no interface `hertz`.
 pub fn measure(root: &Path, mesh: &str, extra: &[String]) -> Result<HertzRun, VerifyError> {
-    let mut overrides = vec![mesh_override(mesh)];
-    overrides.extend_from_slice(extra);
-    let out = solve_generic(&load_scene(&scene_path(root, SCENE), &overrides)?, &mut |_, _| {})?;
+    let out = solve_on_mesh(root, SCENE, mesh, extra)?;
     let missing = |reason: &str| VerifyError::Missing { case: "hertz".into(), reason: format!("{mesh}: {reason}") };
     if out.report.status != "converged" {
         return Err(missing(&format!("status {}", out.report.status)));

@@ -28,6 +28,7 @@ pub mod sliding_patch;
 
 use std::path::{Path, PathBuf};
 
+use crate::generic::{GenericOutcome, load_scene, solve_generic};
 use crate::output::chart::{Axes, Series};
 
 /// How much of the gallery to run.
@@ -234,6 +235,17 @@ fn scene_path(root: &Path, relative: &str) -> PathBuf {
 /// The override that points a generic scene in `scenes/generic/` at another bundled mesh.
 fn mesh_override(file: &str) -> String {
     format!("mesh=\"../../meshes/generic/{file}\"")
+}
+
+/// Solves the generic `scene` (relative to `root`) on the bundled mesh `mesh` of
+/// `meshes/generic/`, with the overrides `extra` after the mesh's.
+///
+/// # Errors
+/// A scene that cannot be read or solved.
+fn solve_on_mesh(root: &Path, scene: &str, mesh: &str, extra: &[String]) -> Result<GenericOutcome, VerifyError> {
+    let mut overrides = vec![mesh_override(mesh)];
+    overrides.extend_from_slice(extra);
+    Ok(solve_generic(&load_scene(&scene_path(root, scene), &overrides)?, &mut |_, _| {})?)
 }
 
 #[cfg(test)]

@@ -3,6 +3,8 @@
 //! ```text
 //! contours (mesh) → pair_contours → ContactProblem (K factored once, B_N, B_T, gaps, μ)
 //!   → Interface (condensed compliances) → algorithms → ContactSolution (status, u, λ, τ, KKT)
+//! placement: the Boussinesq algorithm's zone ends placed on nodes moved along a morphable master
+//!   curve (any geometry that implements placement::PlaceableContact)
 //! ```
 //!
 //! Sign conventions: `n` points out of the slave body towards the master; `λ ≥ 0` is the
@@ -34,6 +36,7 @@ pub mod linear;
 pub mod loading;
 mod pair_rows;
 pub mod pairing;
+pub mod placement;
 pub mod post;
 pub mod problem;
 pub mod reactions;

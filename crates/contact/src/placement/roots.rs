@@ -6,7 +6,7 @@
 //! Illinois:  the same step inside the bracket; the end kept twice has its f halved
 //! ```
 
-use contact2d_contact::{ContactError, PairState};
+use crate::{ContactError, PairState};
 
 /// Why one pass of the zone-end search stopped.
 pub(super) enum Miss {

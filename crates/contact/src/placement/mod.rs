@@ -16,9 +16,9 @@
 //! [`PlaceableContact`] is what a geometry gives the search (`search.rs`); the search, its root
 //! finders (`roots.rs`), the corners' limits (`corners.rs`) and the history carried between
 //! meshes (`history.rs`) use nothing else.
-//! The plate-insert preset implements it on its circles
-//! ([`crate::plate_insert::PlateInsertFamily`]); a generic scene implements it when its one
-//! contact's master curve is straight or circular ([`crate::generic::placed::GenericFamily`]).
+//! The geometries implement it above this crate: the plate-insert preset on its circles
+//! (`contact2d::plate_insert::PlateInsertFamily`), a generic scene when its one contact's master
+//! curve is straight or circular ([`curve::MasterCurve`]; `contact2d::generic::placed::GenericFamily`).
 
 mod corners;
 pub mod curve;
@@ -28,7 +28,7 @@ mod roots;
 mod search;
 mod step;
 
-use contact2d_contact::{ContactError, ContactProblem};
+use crate::{ContactError, ContactProblem};
 use contact2d_mesh::NodeId;
 
 pub use history::ContourHistory;

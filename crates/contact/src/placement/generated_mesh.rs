@@ -1,7 +1,7 @@
 //! What the zone-end search does on the generated mesh (no node moved): the first estimate of
 //! the contact end, and the step itself when the search cannot place the zone ends.
 
-use contact2d_contact::{
+use crate::{
     BoussinesqLoading, ContactError, ContactStatus, Interface, contact_end, solve_boussinesq_step,
     solve_frictional_active_set, stick_end,
 };

@@ -1,7 +1,7 @@
 //! What a step with zone ends placed on the mesh is: how it is loaded, the search's tolerances,
 //! and what it returns (shared by the search and its fallback on the generated mesh), for any [`super::PlaceableContact`].
 
-use contact2d_contact::{BoussinesqStep, StepStart};
+use crate::{BoussinesqStep, StepStart};
 
 /// How a step with placed zone ends is loaded.
 #[derive(Debug, Clone, Copy, PartialEq)]

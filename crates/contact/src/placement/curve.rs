@@ -172,8 +172,10 @@ fn wrap(a: f64) -> f64 {
     if r <= -PI { r + 2.0 * PI } else { r }
 }
 
-/// The circumcircle of three points (centre, radius); `None` when they are collinear.
-fn circle_through(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<([f64; 2], f64)> {
+/// The circumcircle of three points (centre, radius); `None` when they are collinear:
+/// `c = (|a|²(b − c)^⊥ + |b|²(c − a)^⊥ + |c|²(a − b)^⊥) / (2 a × (b − c) + …)`, the point
+/// equidistant from all three.
+pub fn circle_through(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> Option<([f64; 2], f64)> {
     let d = 2.0 * (a[0] * (b[1] - c[1]) + b[0] * (c[1] - a[1]) + c[0] * (a[1] - b[1]));
     if d.abs() < f64::EPSILON {
         return None;

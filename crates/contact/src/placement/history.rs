@@ -1,7 +1,7 @@
 //! The slip history of a loading on the master contour, carried between meshes whose nodes
 //! were moved (the zone ends are placed anew every step).
 
-use contact2d_contact::{ContactSolution, StepStart};
+use crate::{ContactSolution, StepStart};
 
 use super::{PlacedCase, pair_coordinates};
 

@@ -21,8 +21,8 @@
 //! the zones given, so both conditions of the paper hold at their nodes: at b*, v − vh = v_s_τ
 //! and f = 0; at l*, f = 0 (or stick) and p = 0.
 
-use contact2d_contact::{BoussinesqLoading, ContactProblem};
-use contact2d_contact::{
+use crate::{BoussinesqLoading, ContactProblem};
+use crate::{
     ContactError, ContactStatus, Interface, IterationRecord, PairState, StepStart, Zones, finish_zones,
     solve_boussinesq_step, solve_given_zones, stick_end,
 };
@@ -139,7 +139,7 @@ impl<F: PlaceableContact> Search<'_, F> {
                     return Err(singular(l));
                 }
                 let s = step.solution;
-                let forces = contact2d_contact::ZoneForces {
+                let forces = crate::ZoneForces {
                     load: s.load_factor,
                     normal_force: s.normal_force,
                     tangential_force: s.tangential_force,
@@ -400,7 +400,7 @@ fn stick_estimate<C: PlacedCase>(e: &Evaluation<C>) -> Option<(f64, PairState)> 
     let eta = pair_coordinates(&e.case);
     let problem: &ContactProblem = e.case.problem();
     // The slips of the step from the forces, as the final solution would give them.
-    let raw = contact2d_contact::RawSolution {
+    let raw = crate::RawSolution {
         load_factor: e.load,
         normal_force: e.normal_force.clone(),
         tangential_force: e.tangential_force.clone(),
@@ -408,7 +408,7 @@ fn stick_estimate<C: PlacedCase>(e: &Evaluation<C>) -> Option<(f64, PairState)> 
         iterations: 0,
         time: std::time::Duration::ZERO,
     };
-    let s = contact2d_contact::finish_from_forces(problem, &e.interface, raw, &e.start);
+    let s = crate::finish_from_forces(problem, &e.interface, raw, &e.start);
     let b = stick_end(&eta, &s.slip_increment, &s.state).map(|(b, _)| b);
     let bracket = [eta[e.order[e.zones.stick.saturating_sub(1)]], eta[e.order[e.zones.stick]]];
     Some((b.unwrap_or(0.5 * (bracket[0] + bracket[1])), slip))
@@ -439,11 +439,7 @@ fn finish<C: PlacedCase>(
         StickEnd::Placed(_) => e.b_pair.map_or((contact_end, reported[e.l_pair]), |k| (eta[k], reported[k])),
         StickEnd::Interpolated(b) => (b, on_reported(b)),
     };
-    let forces = contact2d_contact::ZoneForces {
-        load: e.load,
-        normal_force: e.normal_force,
-        tangential_force: e.tangential_force,
-    };
+    let forces = crate::ZoneForces { load: e.load, normal_force: e.normal_force, tangential_force: e.tangential_force };
     let slack = 10.0 * residual_pressure.max(residual_cone);
     let mut step = finish_zones(
         e.case.problem(),
