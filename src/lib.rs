@@ -1,43 +1,39 @@
 //! contact2d: 2D finite-element contact mechanics with Coulomb friction.
 //!
-//! This facade re-exports the pipeline's crates and hosts what sits at the edge: the command
-//! line, summaries, scene files and outputs.
+//! This facade re-exports the crates of the pipeline and hosts what sits on top of it: the
+//! command line and the studies that run scenes through the one pipeline.
 //!
 //! ```text
 //! mesh (Gmsh .msh) → fem::Model → assemble → solve → contact → results → output
 //!
-//! schema        what every scene file shares: reading, --set overrides, [solver], limits
-//! generic       the one pipeline: scene → built problem → solve → summary → outputs
-//! plate_insert  the paper's case as a preset: its [plate_insert] section (scene), its expansion
-//!               into a generic scene (preset), its run and post-processor (run, report, outputs)
-//! output        the writers every run's folder uses
-//! scene         any scene file: one reader, one run, one outcome (generic or a preset's)
-//! subject       what the studies (compare, sweep) read of a scene: pairings, quantities, meshes
+//! crates: mesh, element, fem, contact (pairing, problem, algorithms, zone-end placement),
+//!         pipeline (scene → built problem → solve → summary, post-processors, outputs;
+//!         re-exported here as generic, plate_insert, scene, schema, output, ...)
+//!
+//! bench         wall time against discretisation error on the flagship cases
+//! stress        the flagship at extreme parameters
+//! compare       every algorithm × pairing on one scene over mesh levels
+//! sweep         one scene over the product of varied values
+//! verify        the verification gallery: closed-form and published cases
+//! doc_sections  generated tables written into docs/
 //! ```
 
 pub use contact2d_contact as contact;
 pub use contact2d_element as element;
 pub use contact2d_fem as fem;
 pub use contact2d_mesh as mesh;
+pub use contact2d_pipeline as pipeline;
+#[cfg(feature = "native")]
+pub use contact2d_pipeline::subject;
+pub use contact2d_pipeline::{generic, input_file, mesh_summary, output, plate_insert, run, scene, schema};
 
 #[cfg(feature = "native")]
 pub mod bench;
 #[cfg(feature = "native")]
 pub mod compare;
 pub mod doc_sections;
-pub mod generic;
-pub mod input_file;
-pub mod mesh_summary;
-pub mod output;
-pub mod plate_insert;
-/// The plate-insert preset's run (`crate::plate_insert::run`), at its historical path.
-pub use plate_insert::run;
-pub mod scene;
-pub mod schema;
 #[cfg(feature = "native")]
 pub mod stress;
-#[cfg(feature = "native")]
-pub mod subject;
 #[cfg(feature = "native")]
 pub mod sweep;
 #[cfg(feature = "native")]

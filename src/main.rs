@@ -258,8 +258,8 @@ fn run_scene(
     if let Some(e) = write_error {
         return Err(e.into());
     }
-    if verbose && let contact2d::scene::Outcome::PlateInsert(_, run) = &outcome {
-        lines = paper_iterations(run);
+    if verbose && let contact2d::scene::Outcome::Preset(run) = &outcome {
+        lines = run.iteration_logs().into_iter().map(|(step, s)| iteration_log(&step, s)).collect();
     }
     if !lines.is_empty() {
         print_stderr(lines.join("\n").trim_end());
@@ -271,7 +271,7 @@ fn run_scene(
         serde_json::to_writer_pretty(&mut stdout, report).map_err(std::io::Error::from)?;
         writeln!(stdout)?;
     } else {
-        print_summary(&mut stdout, report, outcome.paper())?;
+        print_summary(&mut stdout, report, &outcome.preset_lines())?;
     }
     if let Some(folder) = folder {
         let written = outcome.finish_streamed_outputs(folder)?;
@@ -360,14 +360,6 @@ fn sweep(
 
 /// The `--plot` default of `sweep`.
 const DEFAULT_PLOT: &str = "l,b,P";
-
-/// The iteration log of every step of the paper's case (`run -v`).
-fn paper_iterations(outcome: &contact2d::run::RunOutcome) -> Vec<String> {
-    let steps = outcome.steps.iter().enumerate();
-    steps
-        .map(|(i, s)| iteration_log(&format!("step {}: w = {:.6}", i + 1, s.solution.load_factor), &s.solution))
-        .collect()
-}
 
 /// One step's iteration log: its status and, per iteration of the algorithm, the pairs that
 /// changed state, in contact and slipping, and the residual.

@@ -1,9 +1,7 @@
-//! The text summary `run` prints: every scene's, with the paper's quantities first for a
-//! plate-insert scene.
+//! The text summary `run` prints: every scene's, with a preset's lines (the paper's quantities
+//! for a plate-insert scene) after the method line.
 
 use std::io::Write;
-
-use contact2d::plate_insert::report::PaperReport;
 
 /// The first line of a run's text report.
 fn heading(
@@ -20,17 +18,17 @@ fn heading(
     )
 }
 
-/// A run's text report (`paper`: the plate-insert preset's quantities).
+/// A run's text report (`preset_lines`: a preset's quantities, e.g. the paper's).
 pub(crate) fn print_summary(
     out: &mut impl Write,
     r: &contact2d::generic::GenericReport,
-    paper: Option<&PaperReport>,
+    preset_lines: &[String],
 ) -> std::io::Result<()> {
     heading(out, &r.scene, (r.dofs, r.pairs), &format!("{:?}", r.algorithm), r.status, (r.iterations, r.steps.len()))?;
     // Every choice the run made on its own: a refinement study must not mix them unknowingly.
-    writeln!(out, "  {}", contact2d::output::readme::method_line(r))?;
-    if let Some(paper) = paper {
-        print_paper(out, paper)?;
+    writeln!(out, "  {}", contact2d::generic::readme::method_line(r))?;
+    for line in preset_lines {
+        writeln!(out, "{line}")?;
     }
     for (name, c) in &r.contacts {
         writeln!(
@@ -87,27 +85,6 @@ pub(crate) fn print_summary(
     )?;
     for note in &r.notes {
         writeln!(out, "  note: {note}")?;
-    }
-    Ok(())
-}
-
-/// The paper's quantities.
-fn print_paper(out: &mut impl Write, r: &PaperReport) -> std::io::Result<()> {
-    let opt = |v: Option<f64>| v.map_or("-".to_string(), |x| format!("{x:.4}"));
-    writeln!(out, "  w      = {}   mu = {}", r.w, r.mu)?;
-    // Where a zone end sits: a node placed there, or between two nodes (then interpolated).
-    let bracket = |b: Option<[f64; 2]>| match b {
-        Some([lo, hi]) if lo == hi => "node placed there".to_string(),
-        Some([lo, hi]) => format!("between nodes at {lo:.5} and {hi:.5}"),
-        None => "no transition".to_string(),
-    };
-    writeln!(out, "  l      = {}   ({}; master's own {})", opt(r.l), bracket(r.l_bracket), opt(r.l_master))?;
-    writeln!(out, "  b      = {}   ({})", opt(r.b), bracket(r.b_bracket))?;
-    writeln!(out, "  P      = {:.5}   W = {:.6}", r.P, r.W)?;
-    writeln!(out, "  Phi_E1 = {:.6}   Phi_E2 = {:.6}   Phi_f = {:.6}", r.Phi_E1, r.Phi_E2, r.Phi_f)?;
-    writeln!(out, "  sigma* = {:.4}   K = {:.3}", r.sigma_star, r.K)?;
-    for v in &r.violations {
-        writeln!(out, "  violated at step {}, pair {} (η = {:.4}): {}", v.step, v.pair, v.eta, v.condition)?;
     }
     Ok(())
 }

@@ -27,24 +27,21 @@ impl Solved for contact2d::scene::Outcome {
     fn mesh(&self) -> &contact2d::mesh::Mesh {
         match self {
             Self::Generic(o) => &o.built.problem.model.mesh,
-            Self::PlateInsert(_, o) => match o.steps.first() {
-                Some(step) => &step.case.built.problem.model.mesh,
-                None => &EMPTY_MESH,
-            },
+            Self::Preset(o) => o.steps().first().map_or(&EMPTY_MESH, |(model, _)| &model.mesh),
         }
     }
 
     fn model(&self, k: usize) -> Option<&contact2d::fem::Model> {
         match self {
             Self::Generic(o) => o.history.steps.get(k).map(|_| &o.built.problem.model),
-            Self::PlateInsert(_, o) => o.steps.get(k).map(|s| &s.case.built.problem.model),
+            Self::Preset(o) => o.steps().get(k).map(|(model, _)| *model),
         }
     }
 
     fn displacements(&self) -> Vec<&[f64]> {
         match self {
             Self::Generic(o) => o.history.steps.iter().map(|s| s.solution.displacement.as_slice()).collect(),
-            Self::PlateInsert(_, o) => o.steps.iter().map(|s| s.solution.displacement.as_slice()).collect(),
+            Self::Preset(o) => o.steps().into_iter().map(|(_, s)| s.displacement.as_slice()).collect(),
         }
     }
 }

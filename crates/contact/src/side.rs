@@ -202,43 +202,6 @@ fn winding_inside(polygon: &[[f64; 2]], x: [f64; 2]) -> bool {
 #[allow(clippy::unwrap_used)]
 mod tests {
     use super::*;
-    use crate::test_fixtures::facing_blocks;
-
-    /// Block a = [0, 1] × [−1, 0] and block b = [0.5, 2] × [g, 1] (b's bottom runs past a's end).
-    fn blocks(kind: CellKind, g: f64) -> (Model, Contour, Contour) {
-        facing_blocks(kind, [0.5, 2.0], g, 4, 6, 2)
-    }
-
-    #[test]
-    fn nodes_beyond_the_slave_curve_are_at_their_distance_from_its_end() {
-        // Over a's top (x ≤ 1) b's bottom is at y = g: the gap is g (an interference for g < 0,
-        // b's nodes then lying inside a); beyond it the closest point is the corner (1, 0) and
-        // the node, outside a, is at the distance hypot(x − 1, g). Round-off: 1e-13.
-        for kind in [CellKind::Quad4, CellKind::Quad9] {
-            for g in [0.1, 0.0, -0.1] {
-                let (model, master, slave) = blocks(kind, g);
-                let pairs = crate::pairing::pair_contours(&model, &master, &slave, "a_domain").unwrap();
-                for p in &pairs {
-                    let x = model.mesh.points[p.master.0][0];
-                    let expected = if x <= 1.0 { g } else { (x - 1.0).hypot(g) };
-                    assert!((p.gap - expected).abs() < 1e-13, "{kind:?}, g = {g}, x = {x}: gap {}", p.gap);
-                    assert!((p.normal[1] - 1.0).abs() < 1e-13, "out of a: +y");
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn a_node_behind_a_curve_of_its_own_body_is_open() {
-        // b's top (y = 1) against b's bottom (y = g) through the block: the distance 1 − g, not
-        // the interference −(1 − g) along the bottom's outward normal −y. Round-off: 1e-13.
-        let (model, _, _) = blocks(CellKind::Quad9, 0.1);
-        let master = Contour::from_group(&model.mesh, "b_top").unwrap();
-        let slave = Contour::from_group(&model.mesh, "b_bottom").unwrap();
-        for p in crate::pairing::pair_contours(&model, &master, &slave, "b_domain").unwrap() {
-            assert!((p.gap - 0.9).abs() < 1e-13 && (p.normal[1] + 1.0).abs() < 1e-13, "gap {}", p.gap);
-        }
-    }
 
     #[test]
     fn winding_finds_the_inside_of_both_orientations() {

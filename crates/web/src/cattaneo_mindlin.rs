@@ -25,8 +25,8 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
-use contact2d::generic::{GenericOutcome, GenericReport, GenericScene, solve_generic_on_mesh};
 use contact2d_mesh::parse_msh;
+use contact2d_pipeline::generic::{GenericOutcome, GenericReport, GenericScene, solve_generic_on_mesh};
 
 use crate::WebError;
 use crate::bundled::{CATTANEO_MINDLIN_SCENE, cattaneo_mindlin_mesh};
@@ -76,7 +76,7 @@ impl CattaneoMindlinParams {
     /// is not finite.
     pub fn scene(&self, mesh: &str, scene_file: &Path) -> Result<GenericScene, WebError> {
         let bad = |key: &str, reason: String| {
-            WebError::Scene(contact2d::scene::SceneError::Value {
+            WebError::Scene(contact2d_pipeline::scene::SceneError::Value {
                 path: scene_file.display().to_string(),
                 key: key.into(),
                 reason,

@@ -1,7 +1,7 @@
 //! The flagship on the page: the plate with an insert (Solodovnikov 1998) on a bundled teaching
 //! mesh, set up as the bundled scene `scenes/plate_insert_nogap_mu03.toml` with `--set`
 //! overrides from the sliders, and solved by the facade's own run
-//! ([`contact2d::run::solve_scene_on_mesh`], the same code as `contact2d run`).
+//! ([`contact2d_pipeline::run::solve_scene_on_mesh`], the same code as `contact2d run`).
 //!
 //! ```text
 //! sliders: μ, E2/E1, ε (picks the bundled mesh), w, pairing variant, N (16 or 32)
@@ -12,19 +12,19 @@
 //! algorithm  primal-dual active set, at most 100 iterations (as the bundled scenes)
 //! ```
 //! A set-up that equals a bundled published scene's but for the mesh refinement is that
-//! published case: its values from [`contact2d::plate_insert::published`] are returned beside
+//! published case: its values from [`contact2d_pipeline::plate_insert::published`] are returned beside
 //! the live ones.
 
 use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
-use contact2d::generic::GenericReport;
-use contact2d::plate_insert::outputs::profiles::{ProfileRow, contour_profiles};
-use contact2d::plate_insert::published::{PUBLISHED, PublishedCase};
-use contact2d::plate_insert::scene::{PlateInsertScene, VariantKey};
-use contact2d::run::{RunOutcome, Silent, solve_scene_on_mesh};
 use contact2d_mesh::parse_msh;
+use contact2d_pipeline::generic::GenericReport;
+use contact2d_pipeline::plate_insert::outputs::profiles::{ProfileRow, contour_profiles};
+use contact2d_pipeline::plate_insert::published::{PUBLISHED, PublishedCase};
+use contact2d_pipeline::plate_insert::scene::{PlateInsertScene, VariantKey};
+use contact2d_pipeline::run::{RunOutcome, Silent, solve_scene_on_mesh};
 
 use crate::WebError;
 use crate::bundled::{PUBLISHED_SCENES, flagship_mesh};
@@ -196,7 +196,9 @@ pub fn flagship_view(params: &FlagshipParams, mesh_file: &str, outcome: &RunOutc
         q: rows.iter().map(|r| r.contact.map(|c| c.shear)).collect(),
         state: rows
             .iter()
-            .map(|r| r.contact.map_or("none", |c| contact2d::output::step_view::state_label(c.state, friction)))
+            .map(|r| {
+                r.contact.map_or("none", |c| contact2d_pipeline::output::step_view::state_label(c.state, friction))
+            })
             .collect(),
     };
     let problem = &last.case.problem;

@@ -1,6 +1,6 @@
 //! Any generic scene on the page, through the one pipeline of `contact2d run`: a scene's TOML
-//! text, the `--set` overrides of the page's sliders ([`contact2d::schema`]'s override engine),
-//! a mesh parsed from bytes, [`contact2d::generic::solve_generic_on_mesh`]. Two sources of text
+//! text, the `--set` overrides of the page's sliders ([`contact2d_pipeline::schema`]'s override engine),
+//! a mesh parsed from bytes, [`contact2d_pipeline::generic::solve_generic_on_mesh`]. Two sources of text
 //! and mesh, one solve:
 //!
 //! ```text
@@ -19,12 +19,12 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
-use contact2d::generic::scene::is_generic;
-use contact2d::generic::{GenericOutcome, GenericReport, GenericScene, solve_generic_on_mesh};
-use contact2d::input_file::{MAX_MESH_BYTES, MAX_SCENE_BYTES};
-use contact2d::output::step_view::state_label;
-use contact2d::scene::SceneError;
 use contact2d_mesh::parse_msh;
+use contact2d_pipeline::generic::{GenericOutcome, GenericReport, GenericScene, solve_generic_on_mesh};
+use contact2d_pipeline::input_file::{MAX_MESH_BYTES, MAX_SCENE_BYTES};
+use contact2d_pipeline::output::step_view::state_label;
+use contact2d_pipeline::scene::SceneError;
+use contact2d_pipeline::scene::is_generic;
 
 use crate::WebError;
 use crate::view::{MeshView, PairsView, mesh_view};
@@ -182,7 +182,7 @@ pub fn solve_user_scene(
     }
     let scene = generic_scene(text, Path::new(scene_name), mesh_name, overrides)?;
     let mesh = parse_msh(mesh_bytes).map_err(|source| {
-        WebError::Generic(contact2d::generic::GenericError::Mesh {
+        WebError::Generic(contact2d_pipeline::generic::GenericError::Mesh {
             scene: scene_name.into(),
             mesh: mesh_name.into(),
             source,

@@ -17,8 +17,8 @@ use std::path::Path;
 
 use serde::{Deserialize, Serialize};
 
-use contact2d::generic::{GenericOutcome, GenericReport, GenericScene, solve_generic_on_mesh};
 use contact2d_mesh::parse_msh;
+use contact2d_pipeline::generic::{GenericOutcome, GenericReport, GenericScene, solve_generic_on_mesh};
 
 use crate::WebError;
 use crate::bundled::{HERTZ_SCENE, hertz_mesh};
@@ -51,7 +51,7 @@ impl HertzParams {
     /// [`WebError::Scene`] for a force out of range.
     pub fn scene(&self, mesh: &str, scene_file: &Path) -> Result<GenericScene, WebError> {
         if !(self.force.is_finite() && self.force > 0.0) {
-            return Err(WebError::Scene(contact2d::scene::SceneError::Value {
+            return Err(WebError::Scene(contact2d_pipeline::scene::SceneError::Value {
                 path: scene_file.display().to_string(),
                 key: "force".into(),
                 reason: format!("F = {} must be finite and > 0", self.force),

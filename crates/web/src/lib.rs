@@ -21,8 +21,8 @@
 //! solve_user_scene(scene name, scene bytes, mesh name, mesh bytes, ["--set" strings])
 //!   → the same view, for a scene and mesh dropped on the page (the CLI's limits and messages)
 //! ```
-//! The scenes are the facade's own ([`contact2d::run::solve_scene_on_mesh`],
-//! [`contact2d::generic::solve_generic_on_mesh`]) on meshes compiled into the module
+//! The scenes are the facade's own ([`contact2d_pipeline::run::solve_scene_on_mesh`],
+//! [`contact2d_pipeline::generic::solve_generic_on_mesh`]) on meshes compiled into the module
 //! ([`bundled`]): the numbers are those of `contact2d run` on the same files. A new scene is one
 //! module with its parameters, its solve and its view, plus one
 //! exported function here.
@@ -56,7 +56,7 @@ pub enum WebError {
     NoMesh(String),
     /// A parameter out of range (the scene file's checks).
     #[error(transparent)]
-    Scene(#[from] contact2d::scene::SceneError),
+    Scene(#[from] contact2d_pipeline::scene::SceneError),
     /// A bundled mesh does not parse.
     #[error(transparent)]
     Mesh(#[from] contact2d_mesh::MeshError),
@@ -65,7 +65,7 @@ pub enum WebError {
     Contact(#[from] contact2d_contact::ContactError),
     /// A generic scene could not be set up or solved.
     #[error(transparent)]
-    Generic(#[from] contact2d::generic::GenericError),
+    Generic(#[from] contact2d_pipeline::generic::GenericError),
     /// The solution could not be post-processed.
     #[error("post-processing: {0}")]
     Solve(String),
@@ -196,8 +196,8 @@ pub fn bundled_json() -> String {
         "generic": generic_scene::BUNDLED_GENERIC.iter().map(|b| serde_json::json!({
             "name": b.name, "mesh_file": b.mesh_file,
         })).collect::<Vec<_>>(),
-        "max_scene_bytes": contact2d::input_file::MAX_SCENE_BYTES,
-        "max_mesh_bytes": contact2d::input_file::MAX_MESH_BYTES,
+        "max_scene_bytes": contact2d_pipeline::input_file::MAX_SCENE_BYTES,
+        "max_mesh_bytes": contact2d_pipeline::input_file::MAX_MESH_BYTES,
     })
     .to_string()
 }

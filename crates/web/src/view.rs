@@ -13,8 +13,8 @@ use std::collections::BTreeSet;
 
 use serde::Serialize;
 
-use contact2d::output::step_view::state_label;
 use contact2d_contact::{ContactProblem, ContactSolution};
+use contact2d_pipeline::output::step_view::state_label;
 
 /// The mesh of a solved step as the page draws it.
 #[derive(Debug, Clone, PartialEq, Serialize)]

@@ -15,7 +15,7 @@ use std::f64::consts::PI;
 
 /// Relative distance of a node from the detected line (× the chord) or circle (× the radius)
 /// still taken as on it: 1e-6, as the generic zone ends take a curve as circular
-/// (`src/generic/zones.rs`). Gmsh writes coordinates to 16 digits and places curve nodes on the
+/// (`crates/pipeline/src/generic/zones.rs`). Gmsh writes coordinates to 16 digits and places curve nodes on the
 /// exact geometry, so a meshed line or circle is within ~1e-15 of it; a polygon with a kink or a
 /// circle of another radius is off by far more than 1e-6 of its size.
 pub const TOLERANCE: f64 = 1e-6;

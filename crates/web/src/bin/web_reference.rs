@@ -1,6 +1,6 @@
 //! Writes the native numbers the teaching page's tests compare the WebAssembly module with:
 //! each bundled case solved natively from the mesh *files* (`contact2d run`'s path:
-//! [`contact2d::run::solve_scene`], [`contact2d::generic::solve_generic`]), as JSON on stdout:
+//! [`contact2d_pipeline::run::solve_scene`], [`contact2d_pipeline::generic::solve_generic`]), as JSON on stdout:
 //!
 //! ```text
 //! {"flagship": [{"params": {...}, "view": FlagshipView}, ...],
@@ -18,8 +18,8 @@ use std::path::{Path, PathBuf};
 use anyhow::Context as _;
 use serde_json::{Value, json};
 
-use contact2d::generic::{load_scene, solve_generic};
-use contact2d::run::solve_scene;
+use contact2d_pipeline::generic::{load_scene, solve_generic};
+use contact2d_pipeline::run::solve_scene;
 use contact2d_web::bundled::{cattaneo_mindlin_mesh, flagship_mesh, hertz_mesh};
 use contact2d_web::cattaneo_mindlin::{CattaneoMindlinParams, cattaneo_mindlin_view};
 use contact2d_web::flagship::{FlagshipParams, flagship_view};

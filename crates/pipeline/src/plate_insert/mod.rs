@@ -19,6 +19,7 @@ use contact2d_fem::{Component, Model};
 use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, read_msh};
 
+mod as_preset;
 mod group_geometry;
 pub mod outputs;
 mod placement;
@@ -28,6 +29,7 @@ pub mod report;
 mod results;
 pub mod run;
 pub mod scene;
+pub use as_preset::{PRESET, PlateInsertOutcome};
 pub use contact2d_contact::placement::{ContourHistory, NodePlacement, PlacedLoading, ZoneEndSearch};
 pub use group_geometry::{MisplacedGroup, check_group_geometry};
 pub use placement::{PlacedStep, PlateInsertFamily, place_zone_ends, solve_placed_history};

@@ -18,7 +18,7 @@ use plotters::prelude::*;
 use super::OutputError;
 
 /// DejaVu Sans, embedded so that figures render the same on every machine (no system fonts).
-const FONT_BYTES: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+const FONT_BYTES: &[u8] = include_bytes!("../../../../assets/fonts/DejaVuSans.ttf");
 
 /// The size of every figure, in pixels (the SVG's user units).
 pub const FIGURE_SIZE: (u32, u32) = (1024, 768);
@@ -111,7 +111,7 @@ pub fn register_bundled_font() -> Result<(), OutputError> {
 ///
 /// # Examples
 /// ```
-/// use contact2d::output::chart::{line_chart, Axes, Series};
+/// use contact2d_pipeline::output::chart::{line_chart, Axes, Series};
 /// let dir = std::env::temp_dir().join("contact2d_chart_doctest");
 /// std::fs::create_dir_all(&dir).unwrap();
 /// let axes = Axes { title: "y = x²".into(), x_label: "x (-)".into(), y_label: "y (-)".into(),

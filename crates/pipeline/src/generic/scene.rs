@@ -299,11 +299,6 @@ pub struct GenericScene {
     pub linearised_displacements: bool,
 }
 
-/// Whether the TOML text is a generic scene (it has a top-level `mesh` and no `[plate_insert]`).
-pub fn is_generic(text: &str) -> bool {
-    toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key("mesh") && !t.contains_key("plate_insert"))
-}
-
 impl GenericScene {
     /// Parses `text` as if read from `path`, applies `overrides` and checks the values.
     ///

@@ -1,20 +1,21 @@
-//! What the studies (`compare`, `sweep`) read of a scene ([`Scene`]): a generic scene, or the paper's
-//! case (a `[plate_insert]` section), behind one interface — its pairings, its quantities, its mesh
-//! levels, its published references and one run as the JSON summary — so that the tables, the
-//! references and the figures are the same code for both.
+//! What the studies (`compare`, `sweep`) read of a scene ([`Scene`]): a generic scene, or a
+//! preset's (its [`crate::preset::PresetScene`] answers; the paper's case in
+//! `crate::plate_insert::as_preset`), behind one interface — its pairings, its quantities, its
+//! mesh levels, its published references and one run as the JSON summary — so that the tables,
+//! the references and the figures are the same code for every scene.
 //!
 //! ```text
-//!                 generic scene                        the paper's case
-//! pairings        contact.<i>.pairing = every Pairing  plate_insert.pairs = node_to_node, node_to_segment
-//! mesh key        mesh                                 plate_insert.mesh
-//! meshes          the scene's own                      its *_N16, *_N32, *_N64 siblings (those that exist)
-//! quantities      contacts.<c>.max_pressure,           P, l, b (with friction), Phi_E1, Phi_E2,
-//! (compare)       contact_length, tangential_force      sigma_star
+//!                 generic scene                        a preset's scene
+//! pairings        contact.<i>.pairing = every Pairing  the preset's (paper: plate_insert.pairs)
+//! mesh key        mesh                                 the preset's (paper: plate_insert.mesh)
+//! meshes          the scene's own                      the preset's levels (paper: *_N16, *_N32, *_N64)
+//! quantities      contacts.<c>.max_pressure,           the preset's (paper: P, l, b, Phi_E1, ...)
+//! (compare)       contact_length, tangential_force
 //!                 (μ > 0), energy
-//! sweep columns   contacts.<c>.normal_force,            l, b, P, Phi_E1, Phi_E2, Phi_f, W,
-//!                 contacts.<c>.contact_length           sigma_star, K, insert_hoop_max
-//! sweep plots     the sweep columns                     l, b, P
-//! published       —                                    Solodovnikov (1998) for the bundled scenes
+//! sweep columns   contacts.<c>.normal_force,            the preset's
+//!                 contacts.<c>.contact_length
+//! sweep plots     the sweep columns                     the preset's (paper: l, b, P)
+//! published       —                                    the preset's (paper: Solodovnikov 1998)
 //! ```
 
 use std::path::{Path, PathBuf};
@@ -23,7 +24,6 @@ use contact2d_contact::{ContactError, Pairing};
 use serde_json::Value;
 
 use crate::generic::{GenericError, GenericReport, Silent};
-use crate::plate_insert::published::published_case;
 use crate::scene::Scene;
 
 /// One run as `compare` reads it.
@@ -55,20 +55,12 @@ pub enum RunFailure {
 }
 
 impl Scene {
-    /// The mesh levels to run when none are given: the scene's own mesh (`None`), or for the
-    /// paper's case the N = 16, 32, 64 meshes beside it that exist.
+    /// The mesh levels to run when none are given: the scene's own mesh (`None`), or a preset's
+    /// levels (the paper's case: the N = 16, 32, 64 meshes beside it that exist).
     pub fn default_meshes(&self) -> Vec<Option<PathBuf>> {
-        let own = self.mesh_path();
-        let name = own.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        let levels: Vec<Option<PathBuf>> = match (self, name.rsplit_once("_N")) {
-            (Scene::PlateInsert(_), Some((stem, _))) => ["16", "32", "64"]
-                .iter()
-                .map(|n| own.with_file_name(format!("{stem}_N{n}.msh")))
-                .filter(|p| p.is_file())
-                // Absolute: a mesh override is resolved against the scene's directory.
-                .map(|p| Some(std::path::absolute(&p).unwrap_or(p)))
-                .collect(),
-            _ => vec![],
+        let levels: Vec<Option<PathBuf>> = match self {
+            Scene::Generic(_) => vec![],
+            Scene::Preset(s) => s.mesh_levels().into_iter().map(Some).collect(),
         };
         if levels.is_empty() { vec![None] } else { levels }
     }
@@ -77,7 +69,7 @@ impl Scene {
     pub fn mesh_override(&self, mesh: &Path) -> String {
         let key = match self {
             Scene::Generic(_) => "mesh",
-            Scene::PlateInsert(_) => "plate_insert.mesh",
+            Scene::Preset(s) => s.mesh_key(),
         };
         format!("{key}={}", toml::Value::String(mesh.display().to_string()))
     }
@@ -89,10 +81,7 @@ impl Scene {
                 .iter()
                 .map(|p| (p.key(), (0..s.contact.len()).map(|i| format!("contact.{i}.pairing={}", p.key())).collect()))
                 .collect(),
-            Scene::PlateInsert(_) => ["node_to_node", "node_to_segment"]
-                .into_iter()
-                .map(|p| (p, vec![format!("plate_insert.pairs={p}")]))
-                .collect(),
+            Scene::Preset(s) => s.pairings(),
         }
     }
 
@@ -111,19 +100,12 @@ impl Scene {
                 q.push("energy".into());
                 q
             }
-            Scene::PlateInsert(s) => {
-                let mut q: Vec<String> = ["P", "l"].map(String::from).to_vec();
-                if s.plate_insert.friction > 0.0 {
-                    q.push("b".into());
-                }
-                q.extend(["Phi_E1", "Phi_E2", "sigma_star"].map(String::from));
-                q
-            }
+            Scene::Preset(s) => s.quantities(),
         }
     }
 
     /// The columns a sweep tabulates: each interface's normal force and contact length, or the
-    /// paper's quantities.
+    /// preset's quantities.
     pub fn sweep_columns(&self) -> Vec<String> {
         match self {
             Scene::Generic(s) => s
@@ -133,33 +115,26 @@ impl Scene {
                     [format!("contacts.{}.normal_force", c.name), format!("contacts.{}.contact_length", c.name)]
                 })
                 .collect(),
-            Scene::PlateInsert(_) => {
-                ["l", "b", "P", "Phi_E1", "Phi_E2", "Phi_f", "W", "sigma_star", "K", "insert_hoop_max"]
-                    .map(String::from)
-                    .to_vec()
-            }
+            Scene::Preset(s) => s.sweep_columns(),
         }
     }
 
-    /// The quantities a sweep plots by default: its columns, or the paper's l, b and P.
+    /// The quantities a sweep plots by default: its columns, or the preset's choice (the
+    /// paper's l, b and P).
     pub fn sweep_plots(&self) -> Vec<String> {
         match self {
             Scene::Generic(_) => self.sweep_columns(),
-            Scene::PlateInsert(_) => ["l", "b", "P"].map(String::from).to_vec(),
+            Scene::Preset(s) => s.sweep_plots(),
         }
     }
 
     /// The published values of the scene's quantities (the paper's bundled cases), as
-    /// `(quantity, value)`; empty for a generic scene or a case the paper does not give.
+    /// `(quantity, value)`; empty for a generic scene or a case no source gives.
     pub fn published(&self) -> Vec<(String, f64)> {
-        let Scene::PlateInsert(s) = self else { return vec![] };
-        let Some(case) = published_case(&s.name) else { return vec![] };
-        let compared = self.quantities();
-        case.quantities()
-            .into_iter()
-            .filter(|(q, _)| compared.iter().any(|c| c == q))
-            .map(|(q, v)| (q.into(), v))
-            .collect()
+        match self {
+            Scene::Generic(_) => vec![],
+            Scene::Preset(s) => s.published(),
+        }
     }
 
     /// One run, with a wall-clock deadline checked before each load step if given.

@@ -17,7 +17,6 @@ pub mod field_plot;
 #[cfg(feature = "native")]
 pub mod mesh_plot;
 pub mod preset_files;
-pub mod readme;
 pub mod step_view;
 #[cfg(feature = "native")]
 pub mod vtu;

@@ -228,7 +228,7 @@ impl PlateInsertScene {
     ///
     /// # Examples
     /// ```
-    /// use contact2d::plate_insert::PlateInsertScene;
+    /// use contact2d_pipeline::plate_insert::PlateInsertScene;
     /// let text = "name = \"t\"\n[plate_insert]\nmesh = \"m.msh\"\nvariant = \"hole_master\"\n\
     ///             load = 1.0\n[solver]\nalgorithm = \"active_set\"\n";
     /// let path = std::path::Path::new("scenes/t.toml");
@@ -495,5 +495,42 @@ algorithm = "active_set"
         assert!(matches!(PlateInsertScene::load(&path, &["noequals".into()]), Err(SceneError::Override { .. })));
         assert!(matches!(PlateInsertScene::load(Path::new("/nonexistent.toml"), &[]), Err(SceneError::Io { .. })));
         assert!(matches!(PlateInsertScene::load(Path::new("/dev/zero"), &[]), Err(SceneError::Unreadable { .. })));
+    }
+}
+
+/// The `--set` engine (`crate::schema::overrides`) on the paper's section.
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod override_tests {
+    use super::*;
+
+    const SCENE: &str = "name = \"t\"\n[plate_insert]\nmesh = \"m.msh\"\nvariant = \"hole_master\"\nload = 1.0\n[solver]\nalgorithm = \"active_set\"\n";
+
+    fn load(overrides: &[String]) -> Result<PlateInsertScene, SceneError> {
+        PlateInsertScene::from_toml_str(SCENE, Path::new("t.toml"), overrides)
+    }
+
+    #[test]
+    fn numbers_that_toml_cannot_read_are_named_as_numbers() {
+        for (raw, want) in [(".3", "malformed number"), ("1e400", "out of the range"), ("-1e999", "out of the range")] {
+            let e = load(&[format!("plate_insert.friction={raw}")]).unwrap_err().to_string();
+            assert!(e.contains(want) && e.contains("plate_insert.friction"), "{raw}: {e}");
+        }
+        // Words and paths stay strings.
+        assert!(load(&["plate_insert.mesh=other.msh".into()]).is_ok());
+        assert_eq!(load(&["name=1e5x".into()]).unwrap().name, "1e5x", "not a number: a string");
+    }
+
+    #[test]
+    fn the_overridden_text_loads_as_the_overrides_do() {
+        let sets = ["plate_insert.friction=0.3".to_string()];
+        let text = crate::schema::overridden_scene_text(SCENE, Path::new("t.toml"), &sets).unwrap();
+        let reloaded = PlateInsertScene::from_toml_str(&text, Path::new("t.toml"), &[]).unwrap();
+        assert_eq!(reloaded.plate_insert.friction, 0.3);
+        assert_eq!(reloaded.plate_insert, load(&sets).unwrap().plate_insert);
+        let bad = crate::schema::overridden_scene_text(SCENE, Path::new("t.toml"), &["plate_insert.friction".into()]);
+        assert!(matches!(bad, Err(SceneError::Override { .. })), "{bad:?}");
+        let e = crate::schema::overridden_scene_text("x = [", Path::new("t.toml"), &[]).unwrap_err().to_string();
+        assert!(e.starts_with("scene t.toml: "), "{e}");
     }
 }

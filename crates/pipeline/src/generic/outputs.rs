@@ -24,7 +24,7 @@ use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::step_view::{NodeValues, StepView, state_code};
 use crate::output::{
     FIGURE_EXTENSIONS, OutputDir, OutputError, PresetFiles, SUMMARY_FILE, atomic, field_plot, figure, mesh_plot,
-    readme, step_file_name, vtu,
+    step_file_name, vtu,
 };
 
 /// Writes every output of `outcome` into the prepared folder `out` (each file atomically, stale
@@ -174,7 +174,7 @@ pub fn finish_outputs(
     out.write_with(PVD_FILE, |p| vtu::write_pvd(p, &collection))?;
     let mut names = steps_before_pvd(out.written().to_vec(), |f| f.as_str(), |f| step_files.iter().any(|s| s == f));
     names.extend(["README.txt".to_string(), SUMMARY_FILE.to_string()]);
-    let mut text = readme::generic_readme_text(report, folder.description, &names, preset);
+    let mut text = super::readme::generic_readme_text(report, folder.description, &names, preset);
     if !skipped.is_empty() {
         text.push_str("\nNot drawn (the data cannot be plotted; the CSV and VTU files hold the values):\n");
         for note in &skipped {

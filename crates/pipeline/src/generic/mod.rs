@@ -13,6 +13,7 @@ pub mod fretting_outputs;
 pub mod outputs;
 pub mod placed;
 mod placed_ends;
+pub mod readme;
 pub mod results;
 pub mod scene;
 mod schedule;

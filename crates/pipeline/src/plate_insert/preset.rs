@@ -187,8 +187,7 @@ mod tests {
     /// same matrices in the same order; only round-off of sums may differ.
     #[test]
     fn the_preset_builds_the_papers_own_problem() {
-        let mesh =
-            |eps: &str| format!("{}/meshes/plate_insert/plate_insert_eps{eps}_N16.msh", env!("CARGO_MANIFEST_DIR"));
+        let mesh = |eps: &str| format!("{}/meshes/plate_insert/plate_insert_eps{eps}_N16.msh", crate::REPOSITORY_ROOT);
         let gap = |variant, gap_model| PlateInsert {
             eps: 0.05,
             clearance: 1.0,

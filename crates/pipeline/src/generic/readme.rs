@@ -5,8 +5,8 @@ use std::fmt::Write as _;
 
 use contact2d_contact::ContactAlgorithm;
 
-use super::PresetFiles;
 use crate::generic::GenericReport;
+use crate::output::PresetFiles;
 
 /// What the file `name` of a generic run's folder holds (one line).
 pub fn describe_generic(name: &str) -> &'static str {

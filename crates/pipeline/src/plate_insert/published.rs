@@ -150,7 +150,7 @@ mod tests {
     #[test]
     fn every_case_has_its_scene() {
         for c in PUBLISHED {
-            let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{}.toml", c.scene));
+            let path = std::path::Path::new(crate::REPOSITORY_ROOT).join(format!("scenes/{}.toml", c.scene));
             let text = std::fs::read_to_string(&path).unwrap_or_default();
             assert!(text.contains(&format!("name = \"{}\"", c.scene)), "{}", path.display());
             assert_eq!(published_case(c.scene), Some(&c));

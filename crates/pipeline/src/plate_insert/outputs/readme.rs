@@ -63,7 +63,7 @@ pub fn notes() -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::output::readme::describe_generic;
+    use crate::generic::readme::describe_generic;
 
     #[test]
     fn every_documented_file_is_described() {

@@ -47,7 +47,6 @@ fn parses_patterns_schedule_and_overrides_by_index_and_name() {
     assert_eq!(s.pattern_names(), ["slide", "press"]);
     let schedule = s.schedule().unwrap();
     assert_eq!(schedule.steps(), &[vec![0.0, 1.0], vec![1.0, 1.0]]);
-    assert!(is_generic(SCENE));
 }
 
 #[test]

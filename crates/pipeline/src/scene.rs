@@ -1,21 +1,22 @@
 //! A scene file, whichever it is: one reader, one run and one outcome for every scene.
 //!
-//! A scene is generic, or a preset's: a section of its own (today one preset, the paper's
-//! `[plate_insert]`) that expands into the generic description
+//! A scene is generic, or a preset's: a section of its own (a registered [`crate::preset`];
+//! today one, the paper's `[plate_insert]`) that expands into the generic description
 //! ([`crate::plate_insert::preset`]) and adds a post-processor (the summary's `paper` block and
 //! its files). Both run through the generic pipeline and give the one JSON summary
 //! ([`GenericReport`]); the CLI, the studies and the Python module call this module only, so
 //! what a scene is decides nothing outside it.
 //!
 //! ```text
-//! TOML text ─ read ─▶ Scene::Generic      ─ solve ─▶ Outcome::Generic      ─▶ summary, files
-//!                   └▶ Scene::PlateInsert ─ solve ─▶ Outcome::PlateInsert  ─▶ summary + paper block,
-//!                      (preset section)      (expanded into a generic scene)    files + the paper's
+//! TOML text ─ read ─▶ Scene::Generic ─ solve ─▶ Outcome::Generic ─▶ summary, files
+//!                   └▶ Scene::Preset  ─ solve ─▶ Outcome::Preset  ─▶ summary + the preset's block,
+//!                      (a section of      (expanded into a generic     files + the preset's
+//!                       PRESETS)           scene)
 //! ```
 
 use std::path::{Path, PathBuf};
 
-use contact2d_contact::{BuiltProblem, ContactError, SolvedStep};
+use contact2d_contact::{BuiltProblem, SolvedStep};
 use web_time::Instant;
 
 #[cfg(feature = "native")]
@@ -25,17 +26,27 @@ use crate::generic::{
 };
 #[cfg(feature = "native")]
 use crate::output::{OutputDir, OutputError};
-use crate::plate_insert::PlateInsertScene;
-use crate::plate_insert::report::PaperReport;
-use crate::plate_insert::run::{RunOutcome, solve_scene_with};
+use crate::preset::{Preset, PresetOutcome, PresetScene};
 pub use crate::schema::{SceneError, overridden_scene_text, read_scene_text};
 
-/// The preset sections: a scene with one of them is that preset's, any other a generic scene.
-pub const PRESET_SECTIONS: [&str; 1] = ["plate_insert"];
+/// The registered presets, in the order the scene reader tries their sections: a new preset is
+/// its module ([`crate::preset`]) and one line here.
+pub const PRESETS: &[Preset] = &[crate::plate_insert::PRESET];
 
-/// Whether the TOML `text` is a preset's scene (it has a section of [`PRESET_SECTIONS`]).
+/// The preset whose section the TOML `text` has, if any.
+pub fn preset_of(text: &str) -> Option<&'static Preset> {
+    let table = toml::from_str::<toml::Table>(text).ok()?;
+    PRESETS.iter().find(|p| table.contains_key(p.section))
+}
+
+/// Whether the TOML `text` is a preset's scene (it has the section of one of [`PRESETS`]).
 pub fn is_preset(text: &str) -> bool {
-    toml::from_str::<toml::Table>(text).is_ok_and(|t| PRESET_SECTIONS.iter().any(|s| t.contains_key(*s)))
+    preset_of(text).is_some()
+}
+
+/// Whether the TOML `text` is a generic scene: it has a top-level `mesh` and no preset's section.
+pub fn is_generic(text: &str) -> bool {
+    toml::from_str::<toml::Table>(text).is_ok_and(|t| t.contains_key("mesh")) && !is_preset(text)
 }
 
 /// Any scene.
@@ -43,8 +54,8 @@ pub fn is_preset(text: &str) -> bool {
 pub enum Scene {
     /// A generic scene (bodies, fixes, loads, contacts, schedule).
     Generic(Box<GenericScene>),
-    /// The paper's case (a `[plate_insert]` section).
-    PlateInsert(Box<PlateInsertScene>),
+    /// A preset's scene (a section of [`PRESETS`], e.g. `[plate_insert]`).
+    Preset(Box<dyn PresetScene>),
 }
 
 /// A solved scene: the summary and what the outputs need.
@@ -52,8 +63,8 @@ pub enum Scene {
 pub enum Outcome {
     /// A generic scene's run.
     Generic(Box<GenericOutcome>),
-    /// The paper's case: its scene (its files need the section) and its run.
-    PlateInsert(Box<PlateInsertScene>, Box<RunOutcome>),
+    /// A preset scene's run (its post-processor's block is in the summary).
+    Preset(Box<dyn PresetOutcome>),
 }
 
 impl Scene {
@@ -65,16 +76,16 @@ impl Scene {
         Scene::from_toml_str(&read_scene_text(path)?, path, sets)
     }
 
-    /// Parses `text` as if read from `path`: a preset's scene when it has a preset section
-    /// ([`PRESET_SECTIONS`]), a generic scene otherwise; applies `sets` and checks the values.
+    /// Parses `text` as if read from `path`: a preset's scene when it has a preset's section
+    /// ([`PRESETS`]), a generic scene otherwise; applies `sets` and checks the
+    /// values.
     ///
     /// # Errors
     /// [`SceneError`] naming the file, and the line, key or override at fault.
     pub fn from_toml_str(text: &str, path: &Path, sets: &[String]) -> Result<Scene, SceneError> {
-        Ok(if is_preset(text) {
-            Scene::PlateInsert(Box::new(PlateInsertScene::from_toml_str(text, path, sets)?))
-        } else {
-            Scene::Generic(Box::new(GenericScene::from_toml_str(text, path, sets)?))
+        Ok(match preset_of(text) {
+            Some(preset) => Scene::Preset((preset.read)(text, path, sets)?),
+            None => Scene::Generic(Box::new(GenericScene::from_toml_str(text, path, sets)?)),
         })
     }
 
@@ -82,7 +93,7 @@ impl Scene {
     pub fn name(&self) -> &str {
         match self {
             Scene::Generic(s) => &s.name,
-            Scene::PlateInsert(s) => &s.name,
+            Scene::Preset(s) => s.name(),
         }
     }
 
@@ -90,7 +101,7 @@ impl Scene {
     pub fn file(&self) -> &Path {
         match self {
             Scene::Generic(s) => &s.file,
-            Scene::PlateInsert(s) => &s.file,
+            Scene::Preset(s) => s.file(),
         }
     }
 
@@ -98,7 +109,7 @@ impl Scene {
     pub fn mesh_path(&self) -> PathBuf {
         match self {
             Scene::Generic(s) => s.mesh_path(),
-            Scene::PlateInsert(s) => s.mesh_path(),
+            Scene::Preset(s) => s.mesh_path(),
         }
     }
 
@@ -106,7 +117,7 @@ impl Scene {
     pub fn set_every_profile(&mut self, every: bool) {
         match self {
             Scene::Generic(s) => s.every_profile = every,
-            Scene::PlateInsert(s) => s.every_profile = every,
+            Scene::Preset(s) => s.set_every_profile(every),
         }
     }
 
@@ -118,7 +129,7 @@ impl Scene {
     pub fn check_mesh_file(&self) -> Result<(), SceneError> {
         match self {
             Scene::Generic(_) => Ok(()),
-            Scene::PlateInsert(s) => s.check_mesh_file(),
+            Scene::Preset(s) => s.check_mesh_file(),
         }
     }
 
@@ -136,12 +147,12 @@ impl Scene {
                 })?;
                 Ok(Outcome::Generic(Box::new(outcome)))
             }
-            Scene::PlateInsert(s) => solve_preset(&PlateInsertScene { deadline, ..(**s).clone() }, progress),
+            Scene::Preset(s) => Ok(Outcome::Preset(s.solve(deadline, progress)?)),
         }
     }
 
     /// Solves the scene, handing each solved step of a generic scene to `on_solved` as it is
-    /// solved and keeping only the last (memory flat in the steps); the paper's case keeps its
+    /// solved and keeping only the last (memory flat in the steps); a preset's scene keeps its
     /// steps (its files need all of them) and hands none over.
     ///
     /// # Errors
@@ -156,30 +167,9 @@ impl Scene {
                 let mut on_step = |done, total| progress.step_done(done, total, done as f64);
                 Ok(Outcome::Generic(Box::new(solve_generic_streaming(s, &mut on_step, on_solved)?)))
             }
-            Scene::PlateInsert(s) => solve_preset(s, progress),
+            Scene::Preset(s) => Ok(Outcome::Preset(s.solve(None, progress)?)),
         }
     }
-}
-
-/// The paper's run in the order the CLI has always checked it: the mesh file, its geometry
-/// against the section (ε, the groups), then the solve; every failure names both files.
-fn solve_preset(scene: &PlateInsertScene, progress: &mut dyn Progress) -> Result<Outcome, GenericError> {
-    scene.check_mesh_file()?;
-    let (file, mesh_path) = (scene.file.display().to_string(), scene.mesh_path());
-    let mesh_name = mesh_path.display().to_string();
-    let mesh = contact2d_mesh::read_msh(&mesh_path).map_err(|source| GenericError::Mesh {
-        scene: file.clone(),
-        mesh: mesh_name.clone(),
-        source,
-    })?;
-    scene.check_mesh_geometry(&mesh)?;
-    let contact = |source: ContactError| GenericError::Contact {
-        scene: file.clone(),
-        mesh: mesh_name.clone(),
-        source: Box::new(source),
-    };
-    let run = solve_scene_with(scene, progress).map_err(contact)?;
-    Ok(Outcome::PlateInsert(Box::new(scene.clone()), Box::new(run)))
 }
 
 impl Outcome {
@@ -187,15 +177,15 @@ impl Outcome {
     pub fn report(&self) -> &GenericReport {
         match self {
             Outcome::Generic(o) => &o.report,
-            Outcome::PlateInsert(_, run) => &run.report,
+            Outcome::Preset(o) => o.report(),
         }
     }
 
-    /// The paper's quantities, for the paper's case.
-    pub fn paper(&self) -> Option<&PaperReport> {
+    /// The preset's lines of the text summary (none for a generic scene).
+    pub fn preset_lines(&self) -> Vec<String> {
         match self {
-            Outcome::Generic(_) => None,
-            Outcome::PlateInsert(_, run) => Some(&run.paper),
+            Outcome::Generic(_) => vec![],
+            Outcome::Preset(o) => o.summary_lines(),
         }
     }
 
@@ -208,7 +198,7 @@ impl Outcome {
     pub fn write_outputs_into(&self, folder: OutputDir) -> Result<Vec<PathBuf>, OutputError> {
         match self {
             Outcome::Generic(o) => generic_outputs::write_generic_outputs_into(folder, o),
-            Outcome::PlateInsert(scene, run) => crate::plate_insert::outputs::write_outputs_into(folder, scene, run),
+            Outcome::Preset(o) => o.write_outputs_into(folder),
         }
     }
 
@@ -221,7 +211,23 @@ impl Outcome {
     pub fn finish_streamed_outputs(&self, folder: OutputDir) -> Result<Vec<PathBuf>, OutputError> {
         match self {
             Outcome::Generic(o) => generic_outputs::finish_generic_outputs(folder, o),
-            Outcome::PlateInsert(..) => self.write_outputs_into(folder),
+            Outcome::Preset(o) => o.write_outputs_into(folder),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_scene_is_generic_or_a_presets_by_its_sections() {
+        let generic = "mesh = \"m.msh\"\n[[body]]\nregion = \"a\"\n";
+        let preset = "[plate_insert]\nmesh = \"m.msh\"\n";
+        assert!(is_generic(generic) && !is_preset(generic));
+        assert!(is_preset(preset) && !is_generic(preset));
+        assert!(preset_of(preset).is_some_and(|p| p.section == "plate_insert"));
+        // Both a top-level mesh and a preset's section: the preset's (not generic).
+        assert!(!is_generic(&format!("mesh = \"m.msh\"\n{preset}")));
     }
 }
