@@ -5,11 +5,11 @@
 //                          S (-1, 1.01)            wall_top                          (7, 1.24)
 //                           \__ lead-in arc (R = 25.01, tangent to the wall at M)
 //                              ''--..__ M (0, 0.99) ---------- wall_surface ------------ E (7, 0.99)
-//   (-9, 1) ------------- plug_top ----------- (-1, 1)
-//     |                    plug                   |          plug [-9, -1] x [0, 1]
-//  plug_back                                   plug_tip
-//     |                                           |
-//   (-9, 0) ------------- plug_axis ----------- (-1, 0)      y = 0: the symmetry line
+//   (-8.75, 1) ----------- plug_top ----------- (-0.75, 1)
+//     |                    plug                   |          plug [-8.75, -0.75] x [0, 1]
+//  plug_back                                   plug_tip      (the tip under the lead-in, whose
+//     |                                           |           arc is 0.0012 above it there)
+//   (-8.75, 0) ----------- plug_axis ---------- (-0.75, 0)   y = 0: the symmetry line
 //
 // The lead-in is the circular arc from S = (-ell, a + delta) to M = (0, a - delta), tangent to
 // the flat wall at M: R = (ell^2 + 4 delta^2) / (4 delta) = 25.01 for ell = 1.  It closes the
@@ -32,8 +32,8 @@ DefineConstant[
   a = 1,          // plug half-width
   delta = 0.01,   // interference per side (the wall stands at y = a - delta)
   ell = 1,        // lead-in length along x
-  plug_back = -9, // the plug's back face (driven)
-  plug_tip = -1,  // the plug's tip, under the lead-in's start S
+  plug_back = -8.75, // the plug's back face (driven)
+  plug_tip = -0.75, // the plug's tip, under the lead-in, 0.0012 below it (contact from the first step)
   wall_end = 7,   // the flat wall's end
   wall_t = 0.25   // the wall's thickness (a rigid obstacle: only its surface matters)
 ];
