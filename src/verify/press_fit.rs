@@ -162,7 +162,9 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
     let lead = lead_in_force();
     let mut report = CaseReport {
         name: "press_fit".into(),
-        source: "closed form: a plug pressed between rigid walls, ν = 0: p = E δ / a, F(L) = μ p L + F_lead".into(),
+        source:
+            "closed form: a plug pressed between rigid walls, ν = 0: p = E δ / a, F(L) = μ p L + F_0 (entry offset)"
+                .into(),
         ..CaseReport::default()
     };
     let mut l1_balance = None;
