@@ -8,7 +8,8 @@
 #                                    # hills_nowell_L{1,2,3}.msh, incline.msh, pin_lug_L1.msh, pin_lug_L3.msh,
 #                                    # long_interface_{96,190,380}.msh,
 #                                    # pad_on_base_thin_{032,016}.msh,
-#                                    # sliding_block_{matching,nonmatching}.msh
+#                                    # sliding_block_{matching,nonmatching}.msh,
+#                                    # press_fit_L{1,2}.msh
 #   meshes/generic/generate.sh --no-check
 #
 # Environment: GMSH (default: gmsh), PYTHON (default: python3, must import gmsh for the check).
@@ -64,6 +65,10 @@ mesh incline.geo incline.msh block,ground block_bottom,block_left,block_right,bl
 sb_curves=base_bottom,base_top,block_bottom,block_right,block_top,block_left
 mesh sliding_block.geo sliding_block_matching.msh block,base "$sb_curves" -- -setnumber n_base 40
 mesh sliding_block.geo sliding_block_nonmatching.msh block,base "$sb_curves" -- -setnumber n_base 29
+pf_curves=plug_axis,plug_tip,plug_top,plug_back,wall_surface,wall_top
+for level in 1 2; do
+  mesh press_fit.geo "press_fit_L$level.msh" plug,wall "$pf_curves" -- -setnumber level "$level"
+done
 for n in 96 190 380; do
   mesh long_interface.geo "long_interface_$n.msh" lower,upper lower_bottom,lower_top,upper_bottom,upper_top \
     -- -setnumber n_upper "$n"

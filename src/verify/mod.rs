@@ -22,6 +22,7 @@ pub mod incline;
 pub mod interference_fit;
 pub mod mindlin_deresiewicz;
 pub mod pin_lug;
+pub mod press_fit;
 mod profile;
 pub mod report;
 pub mod sliding_patch;
@@ -153,7 +154,7 @@ pub enum VerifyError {
 }
 
 /// The names of the gallery's cases, in the order they run.
-pub const CASES: [&str; 10] = [
+pub const CASES: [&str; 11] = [
     "contact_patch",
     "hertz",
     "cattaneo_mindlin",
@@ -164,6 +165,7 @@ pub const CASES: [&str; 10] = [
     "pin_lug",
     "flagship",
     "sliding_patch",
+    "press_fit",
 ];
 
 /// Runs one case by name; `root` is the repository root (where `scenes/` and `meshes/` are).
@@ -182,6 +184,7 @@ pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, Ver
         "pin_lug" => pin_lug::run(root, level),
         "flagship" => flagship::run(root, level),
         "sliding_patch" => sliding_patch::run(root, level),
+        "press_fit" => press_fit::run(root, level),
         other => Err(VerifyError::Missing {
             case: other.to_string(),
             reason: format!("no such case (cases: {})", CASES.join(", ")),
@@ -196,7 +199,8 @@ pub struct VerifyArgs {
     #[arg(long, default_value = "fast", value_parser = ["fast", "full"])]
     pub level: String,
     /// Cases to run, comma separated (default: all of contact_patch, hertz, cattaneo_mindlin,
-    /// mindlin_deresiewicz, hills_nowell, interference_fit, incline, pin_lug, flagship, sliding_patch).
+    /// mindlin_deresiewicz, hills_nowell, interference_fit, incline, pin_lug, flagship, sliding_patch,
+    /// press_fit).
     #[arg(long, value_delimiter = ',')]
     pub cases: Vec<String>,
     /// The repository root (where `scenes/` and `meshes/` are).
