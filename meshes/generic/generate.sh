@@ -8,7 +8,7 @@
 #                                    # hills_nowell_L{1,2,3}.msh, incline.msh, pin_lug_L1.msh, pin_lug_L3.msh,
 #                                    # long_interface_{96,190,380}.msh,
 #                                    # pad_on_base_thin_{032,016}.msh,
-#                                    # sliding_block_{matching,nonmatching}.msh
+#                                    # sliding_block_{matching,nonmatching}.msh, moving_roller.msh
 #   meshes/generic/generate.sh --no-check
 #
 # Environment: GMSH (default: gmsh), PYTHON (default: python3, must import gmsh for the check).
@@ -64,6 +64,8 @@ mesh incline.geo incline.msh block,ground block_bottom,block_left,block_right,bl
 sb_curves=base_bottom,base_top,block_bottom,block_right,block_top,block_left
 mesh sliding_block.geo sliding_block_matching.msh block,base "$sb_curves" -- -setnumber n_base 40
 mesh sliding_block.geo sliding_block_nonmatching.msh block,base "$sb_curves" -- -setnumber n_base 29
+mesh moving_roller.geo moving_roller.msh roller,block roller_arc,roller_top,block_top,block_bottom,block_sides \
+  roller_arc:3 block_top:3
 for n in 96 190 380; do
   mesh long_interface.geo "long_interface_$n.msh" lower,upper lower_bottom,lower_top,upper_bottom,upper_top \
     -- -setnumber n_upper "$n"

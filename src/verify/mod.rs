@@ -21,6 +21,7 @@ pub mod hills_nowell;
 pub mod incline;
 pub mod interference_fit;
 pub mod mindlin_deresiewicz;
+pub mod moving_roller;
 pub mod pin_lug;
 mod profile;
 pub mod report;
@@ -152,7 +153,7 @@ pub enum VerifyError {
 }
 
 /// The names of the gallery's cases, in the order they run.
-pub const CASES: [&str; 10] = [
+pub const CASES: [&str; 11] = [
     "contact_patch",
     "hertz",
     "cattaneo_mindlin",
@@ -163,6 +164,7 @@ pub const CASES: [&str; 10] = [
     "pin_lug",
     "flagship",
     "sliding_patch",
+    "moving_roller",
 ];
 
 /// Runs one case by name; `root` is the repository root (where `scenes/` and `meshes/` are).
@@ -181,6 +183,7 @@ pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, Ver
         "pin_lug" => pin_lug::run(root, level),
         "flagship" => flagship::run(root, level),
         "sliding_patch" => sliding_patch::run(root, level),
+        "moving_roller" => moving_roller::run(root, level),
         other => Err(VerifyError::Missing {
             case: other.to_string(),
             reason: format!("no such case (cases: {})", CASES.join(", ")),
@@ -195,7 +198,8 @@ pub struct VerifyArgs {
     #[arg(long, default_value = "fast", value_parser = ["fast", "full"])]
     pub level: String,
     /// Cases to run, comma separated (default: all of contact_patch, hertz, cattaneo_mindlin,
-    /// mindlin_deresiewicz, hills_nowell, interference_fit, incline, pin_lug, flagship, sliding_patch).
+    /// mindlin_deresiewicz, hills_nowell, interference_fit, incline, pin_lug, flagship, sliding_patch,
+    /// moving_roller).
     #[arg(long, value_delimiter = ',')]
     pub cases: Vec<String>,
     /// The repository root (where `scenes/` and `meshes/` are).
