@@ -9,7 +9,7 @@
 #                                    # long_interface_{96,190,380}.msh,
 #                                    # pad_on_base_thin_{032,016}.msh,
 #                                    # sliding_block_{matching,nonmatching}.msh,
-#                                    # press_fit_L{1,2}.msh
+#                                    # press_fit_L{1,2}.msh, moving_roller_L{1,3}.msh
 #   meshes/generic/generate.sh --no-check
 #
 # Environment: GMSH (default: gmsh), PYTHON (default: python3, must import gmsh for the check).
@@ -68,6 +68,10 @@ mesh sliding_block.geo sliding_block_nonmatching.msh block,base "$sb_curves" -- 
 pf_curves=plug_axis,plug_tip,plug_top,plug_back,wall_surface,wall_top
 for level in 1 2; do
   mesh press_fit.geo "press_fit_L$level.msh" plug,wall "$pf_curves" -- -setnumber level "$level"
+done
+for level in 1 3; do
+  mesh moving_roller.geo "moving_roller_L$level.msh" roller,block roller_arc,roller_top,block_top,block_bottom,block_sides \
+    roller_arc:3 block_top:3 -- -setnumber level "$level"
 done
 for n in 96 190 380; do
   mesh long_interface.geo "long_interface_$n.msh" lower,upper lower_bottom,lower_top,upper_bottom,upper_top \

@@ -21,6 +21,7 @@ pub mod hills_nowell;
 pub mod incline;
 pub mod interference_fit;
 pub mod mindlin_deresiewicz;
+pub mod moving_roller;
 pub mod pin_lug;
 pub mod press_fit;
 mod profile;
@@ -154,7 +155,7 @@ pub enum VerifyError {
 }
 
 /// The names of the gallery's cases, in the order they run.
-pub const CASES: [&str; 11] = [
+pub const CASES: [&str; 12] = [
     "contact_patch",
     "hertz",
     "cattaneo_mindlin",
@@ -166,6 +167,7 @@ pub const CASES: [&str; 11] = [
     "flagship",
     "sliding_patch",
     "press_fit",
+    "moving_roller",
 ];
 
 /// Runs one case by name; `root` is the repository root (where `scenes/` and `meshes/` are).
@@ -185,6 +187,7 @@ pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, Ver
         "flagship" => flagship::run(root, level),
         "sliding_patch" => sliding_patch::run(root, level),
         "press_fit" => press_fit::run(root, level),
+        "moving_roller" => moving_roller::run(root, level),
         other => Err(VerifyError::Missing {
             case: other.to_string(),
             reason: format!("no such case (cases: {})", CASES.join(", ")),
@@ -200,7 +203,7 @@ pub struct VerifyArgs {
     pub level: String,
     /// Cases to run, comma separated (default: all of contact_patch, hertz, cattaneo_mindlin,
     /// mindlin_deresiewicz, hills_nowell, interference_fit, incline, pin_lug, flagship, sliding_patch,
-    /// press_fit).
+    /// press_fit, moving_roller).
     #[arg(long, value_delimiter = ',')]
     pub cases: Vec<String>,
     /// The repository root (where `scenes/` and `meshes/` are).

@@ -1,6 +1,6 @@
-//! Finite sliding, small strain: the node-to-segment pairs are formed again on the current
-//! configuration before every load step, so that contact follows bodies that slide along each
-//! other by many segments.
+//! Finite sliding, small strain: the node-to-segment or segment-to-segment pairs are formed
+//! again on the current configuration before every load step, so that contact follows bodies
+//! that slide along each other by many segments.
 //!
 //! ```text
 //! before step i, with u = u_{i−1} (the last converged step; u_0 = 0):
@@ -17,6 +17,10 @@
 //!     free  : a projection past an end of an open slave curve, by more than 1e−9 of the curve's
 //!             length along its end tangent — no normal and no tangential unknown (no force)
 //! solve step i on these pairs from (s0, τ0) with the chosen algorithm
+//!
+//! segment to segment (crate::segment_to_segment, formed on x): the same with the pair's rows
+//!     g0_k  = g̃_k − (B_N u)_k,   s0_k = (B_T u)_k       (g̃_k the weighted gap on x; the rows
+//!                                                       Σ_a c_a · u_a integrated on x)
 //! ```
 //!
 //! Δs_k is the motion of the master node relative to the material point of the slave curve it
@@ -43,6 +47,7 @@ use crate::history::Retention;
 use crate::loading::LoadSchedule;
 use crate::pairing::{ContactPair, pair_contours};
 use crate::problem::ContactProblem;
+use crate::segment_to_segment::pair_segments;
 use crate::solution::{PairState, StepStart};
 use crate::solve::{ContactAlgorithm, History, SolvedStep, SolverSettings, solve_step_from};
 
@@ -56,8 +61,8 @@ use crate::solve::{ContactAlgorithm, History, SolvedStep, SolverSettings, solve_
 /// # Errors
 /// [`ContactError::InvalidInput`] when `finite` does not hold one flag per interface;
 /// [`ContactError::NotApplicable`] for an algorithm other than the active set and the augmented
-/// Lagrangian; [`ContactError::FiniteSliding`] for an interface that is not node to segment or
-/// has a given gap; a schedule naming a pattern the problem does not have; every error of the
+/// Lagrangian; [`ContactError::FiniteSliding`] for an interface that is neither node to segment
+/// nor segment to segment, or has a given gap; a schedule naming a pattern the problem does not have; every error of the
 /// pairing, factorisation and step solve.
 pub fn solve_finite_sliding(
     built: &BuiltProblem,
@@ -125,10 +130,10 @@ fn check_applies(built: &BuiltProblem, finite: &[bool], algorithm: ContactAlgori
     }
     for info in built.interfaces.iter().zip(finite).filter(|(_, f)| **f).map(|(info, _)| info) {
         let refuse = |reason: &str| ContactError::FiniteSliding { contact: info.name.clone(), reason: reason.into() };
-        if info.pairing != Pairing::NodeToSegment {
+        if !matches!(info.pairing, Pairing::NodeToSegment | Pairing::SegmentToSegment) {
             return Err(refuse(
-                "only node-to-segment pairing is formed again on the current configuration; set pairing = \
-                 \"node_to_segment\" or sliding = \"small\"",
+                "only node-to-segment and segment-to-segment pairing are formed again on the current \
+                 configuration; set pairing = \"segment_to_segment\" or sliding = \"small\"",
             ));
         }
         let given = info.pairs.clone().any(|k| built.problem.gap[k] != built.problem.pairs[k].gap);
@@ -157,7 +162,24 @@ fn relative_displacement(pair: &ContactPair, u: &[f64]) -> [f64; 2] {
     d
 }
 
-/// The start slips of a step: `s0_k = t_k · (u_m − Σ_j N_j u_j)` on the new pairs of the finite
+/// `[(B_N u)_k, (B_T u)_k]` of a pair at `u`: `n · d`, `t · d` with `d = u_m − Σ_j N_j u_j`
+/// (node to segment), or the integrated rows `Σ_a c_a · u_a` over the master and slave nodes
+/// (segment to segment, [`crate::segment_to_segment`]; the slave coefficients carry their sign).
+fn row_values(pair: &ContactPair, u: &[f64]) -> [f64; 2] {
+    match &pair.integrated {
+        None => {
+            let d = relative_displacement(pair, u);
+            [pair.normal[0] * d[0] + pair.normal[1] * d[1], pair.tangent[0] * d[0] + pair.tangent[1] * d[1]]
+        }
+        Some(rows) => rows.master.iter().chain(&rows.slave).fold([0.0; 2], |acc, c| {
+            let ua = node_displacement(u, c.node.0);
+            [acc[0] + c.normal[0] * ua[0] + c.normal[1] * ua[1], acc[1] + c.tangent[0] * ua[0] + c.tangent[1] * ua[1]]
+        }),
+    }
+}
+
+/// The start slips of a step: `s0_k = (B_T u)_k` (`t_k · (u_m − Σ_j N_j u_j)` node to
+/// segment) on the new pairs of the finite
 /// interfaces, the slip the previous step ended with on the others (their pairs are unchanged).
 fn start_slip(
     built: &BuiltProblem,
@@ -169,8 +191,7 @@ fn start_slip(
     let mut slip = previous.slip.clone();
     for info in built.interfaces.iter().zip(finite).filter(|(_, f)| **f).map(|(info, _)| info) {
         for k in info.pairs.clone() {
-            let (p, d) = (&problem.pairs[k], relative_displacement(&problem.pairs[k], u));
-            slip[k] = p.tangent[0] * d[0] + p.tangent[1] * d[1];
+            slip[k] = row_values(&problem.pairs[k], u)[1];
         }
     }
     slip
@@ -189,7 +210,11 @@ fn pair_current(built: &BuiltProblem, finite: &[bool], u: &[f64]) -> Result<(Con
     let mut free = vec![false; built.problem.num_pairs()];
     for info in built.interfaces.iter().zip(finite).filter(|(_, f)| **f).map(|(info, _)| info) {
         let (master, slave) = current_contours(&moved, info)?;
-        let formed = pair_contours(&moved, &master, &slave, &info.slave_region)?;
+        let formed = if info.pairing == Pairing::SegmentToSegment {
+            pair_segments(&moved, &master, &slave, &info.slave_region)?
+        } else {
+            pair_contours(&moved, &master, &slave, &info.slave_region)?
+        };
         if formed.len() != info.pairs.len() {
             return Err(ContactError::FiniteSliding {
                 contact: info.name.clone(),
@@ -199,8 +224,7 @@ fn pair_current(built: &BuiltProblem, finite: &[bool], u: &[f64]) -> Result<(Con
         for (k, mut pair) in info.pairs.clone().zip(formed) {
             debug_assert_eq!(pair.master, built.problem.pairs[k].master, "pairs keep their master node");
             free[k] = past_end(&slave, &pair, moved.mesh.points[pair.master.0]);
-            let d = relative_displacement(&pair, u);
-            pair.gap -= pair.normal[0] * d[0] + pair.normal[1] * d[1];
+            pair.gap -= row_values(&pair, u)[0];
             gaps[k] = pair.gap;
             pairs[k] = pair;
         }

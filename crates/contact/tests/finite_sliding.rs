@@ -90,7 +90,7 @@ struct Seen {
     normal: Vec<f64>,
     tangential: Vec<f64>,
     state: Vec<PairState>,
-    /// Per pair: the y components of its current normal and tangent.
+    /// Per pair: the y components of the force on the block per unit λ and τ.
     directions: Vec<[f64; 2]>,
     /// Per pair: the block node's x where the step started (`X + u` of the step before) and the
     /// x of its projection on the base, formed on that configuration.
@@ -107,7 +107,17 @@ fn run(built: &BuiltProblem, settings: &SolverSettings, steps: usize) -> Vec<See
         let follows =
             problem.pairs.iter().map(|p| (points[p.master.0][0] + before[2 * p.master.0], p.slave_point[0])).collect();
         before.clone_from(&step.solution.displacement);
-        let directions = problem.pairs.iter().map(|p| [p.normal[1], p.tangent[1]]).collect();
+        // The y components of the force per unit λ and τ on the block: n and t of a node-to-segment
+        // pair; of a segment-to-segment pair the sums of its master coefficients,
+        // (1/w) ∫ φ_k (n_y, t_y) ds (the mean of the normal along the segment, not normalised).
+        let directions = problem
+            .pairs
+            .iter()
+            .map(|p| match &p.integrated {
+                None => [p.normal[1], p.tangent[1]],
+                Some(rows) => rows.master.iter().fold([0.0, 0.0], |a, c| [a[0] + c.normal[1], a[1] + c.tangent[1]]),
+            })
+            .collect();
         seen.push(Seen {
             push: step.factors[slide] * PUSH,
             normal: step.solution.normal_force.clone(),
@@ -216,6 +226,28 @@ fn a_block_pushed_ten_cells_on_a_non_matching_mesh_carries_mu_p() {
 }
 
 #[test]
+fn a_block_pushed_ten_cells_with_frictionless_segment_to_segment_pairs_carries_p() {
+    // The non-matching mesh above, frictionless, with segment-to-segment pairs formed again on the
+    // current configuration before every step. Closed forms: the press is carried along the
+    // pairs' current normals (1e-8 P, the floating iteration's tolerance as above), no tangential
+    // force, and the pairs follow the block (1e-2 of a cell, as above). (With μ = 0.3 the
+    // frictional active set stops at max_iterations on the fifth push step with these rows —
+    // reported as the step's status, and why the frictional tests above stay node to segment.)
+    let mut description = scene(5, Pairing::SegmentToSegment);
+    description.contacts[0].friction = 0.0;
+    let built = description.build().unwrap();
+    let seen = run(&built, &SolverSettings::new(ContactAlgorithm::ActiveSet), 19);
+    for s in &seen {
+        let vertical: f64 = s.normal.iter().zip(&s.directions).map(|(l, [ny, _])| l * ny).sum();
+        assert!((vertical.abs() - Q).abs() <= 1e-8 * Q, "push {}: vertical {vertical}, P = {Q}", s.push);
+        assert!(s.tangential.iter().all(|t| *t == 0.0), "push {}: a tangential force", s.push);
+        for (k, (x, y)) in s.follows.iter().enumerate() {
+            assert!((x - y).abs() <= 1e-2 * CELL, "push {} pair {k}: node at {x}, projection {y}", s.push);
+        }
+    }
+}
+
+#[test]
 fn what_finite_sliding_does_not_handle_is_refused_before_solving() {
     let built = scene(4, Pairing::NodeToSegment).build().unwrap();
     let mut nothing = |_: usize, _: &contact2d_contact::SolvedStep, _: &BuiltProblem| panic!("solved a step");
@@ -225,8 +257,4 @@ fn what_finite_sliding_does_not_handle_is_refused_before_solving() {
             solve_finite_sliding(&built, &[true], &settings, &schedule(2), Retention::All, &mut nothing).unwrap_err();
         assert!(matches!(e, ContactError::NotApplicable { .. }), "{algorithm:?}: {e}");
     }
-    let s2s = scene(4, Pairing::SegmentToSegment).build().unwrap();
-    let settings = SolverSettings::new(ContactAlgorithm::ActiveSet);
-    let e = solve_finite_sliding(&s2s, &[true], &settings, &schedule(2), Retention::All, &mut nothing).unwrap_err();
-    assert!(matches!(e, ContactError::FiniteSliding { .. }), "{e}");
 }

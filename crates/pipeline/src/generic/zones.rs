@@ -75,7 +75,7 @@ fn circle_through(points: &[[f64; 2]]) -> Option<[f64; 2]> {
 /// each end moved into the neighbouring interval where the quantity `opening` of the next two
 /// outside pairs opens like the 3/2 power; an end whose neighbour is outside the contact
 /// (`in_contact` false while measuring a stick zone) or missing stays at the last inside pair.
-pub(crate) fn zone_length(arc: &[f64], inside: &[bool], opening: &[f64], in_contact: &[bool]) -> f64 {
+pub fn zone_length(arc: &[f64], inside: &[bool], opening: &[f64], in_contact: &[bool]) -> f64 {
     let (Some(first), Some(last)) = (inside.iter().position(|v| *v), inside.iter().rposition(|v| *v)) else {
         return 0.0;
     };
