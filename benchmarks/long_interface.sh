@@ -19,7 +19,10 @@
 #        the second layout (issue 22): scenes/generic/pad_on_base.toml, a pad pressed on a
 #        longer base in one frictional step, on meshes/generic/pad_on_base.geo with cell length
 #        h along the pad (pairs = 2 Round(3 / h) + 1; default 0.032 0.016 0.008 0.004 0.002,
-#        189 to 3,001 pairs); LINEAR and CONTINUATION as above
+#        189 to 3,001 pairs); LINEAR and CONTINUATION as above; FLOATING=1 runs
+#        scenes/generic/pad_on_base_floating.toml instead (the pad's top free sideways: a body
+#        held sideways by friction alone; the iterations are the inner solves' summed, the
+#        Newton iterations on its rigid motion in brackets)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 layout=long_interface
@@ -39,7 +42,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cargo build --release --quiet --manifest-path "$root/Cargo.toml" --bin contact2d
 bin="$root/target/release/contact2d"
-cp "$root/scenes/generic/$layout.toml" "$work/"
+scene=$layout
+[ "$layout" = pad_on_base ] && [ "${FLOATING:-0}" = 1 ] && scene=pad_on_base_floating
+cp "$root/scenes/generic/$scene.toml" "$work/$layout.toml"
 
 echo "| run | linear | continuation | pairs | DOFs | iterations | wall s | CPU s | peak RSS MiB | read | assemble | factor | condense | solve | post |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
@@ -70,6 +75,8 @@ wall, user, system, rss = open(timing).read().split()[-4:]
 t = d["time_s"]
 phases = " | ".join(f"{t[k]:.3f}" for k in ("read", "assemble", "factor", "condense", "solve", "post"))
 status = "" if d["status"] == "converged" else f" ({d['status']})"
+outer = d["kkt"].get("floating_iterations", 0)
+status += f" [{outer}]" if outer else ""
 print(f"| {run} | {linear} | {continuation} | {d['pairs']} | {d['dofs']} | {d['iterations']}{status} | {float(wall):.2f} | "
       f"{float(user) + float(system):.2f} | {int(rss) // 1024} | {phases} |")
 EOF

@@ -154,6 +154,10 @@ pub(crate) struct FloatingStep<'a> {
     pub max_iterations: usize,
     /// Relative tolerance on the pins' forces.
     pub tolerance: f64,
+    /// Whether the warm starts for long interfaces are on (`stick_continuation.rs`): the final
+    /// leg's `α` predicted from the landing leg's, and the inner solves after a Newton step or a
+    /// landing started with the stick continuation from their guess.
+    pub predict: bool,
 }
 
 /// The answer of a floating step: the solution, the Newton iterations, the pins' force left.
@@ -161,11 +165,16 @@ pub(crate) struct FloatingAnswer {
     pub solution: ContactSolution,
     pub iterations: usize,
     pub residual: f64,
+    /// `α` after the last rigid travel of the leg (its start without one): from there on the
+    /// pieces moved with the contact's deformation only.
+    pub engaged_from: Vec<f64>,
 }
 
-/// The contact solve of one step at given `α`, `start` and warm-start `guess`.
+/// The contact solve of one step at given `α`, `start` and warm-start `guess`; the flag says
+/// whether the guess may be far from the answer (the pins moved by a Newton step or a landing
+/// since the guess was solved; `StartingStates::Far` of `stick_continuation.rs`).
 pub(crate) type StepSolver<'s> =
-    dyn Fn(&ContactProblem, &Interface, &StepStart, Option<&[PairState]>) -> ContactSolution + 's;
+    dyn Fn(&ContactProblem, &Interface, &StepStart, Option<&[PairState]>, bool) -> ContactSolution + 's;
 
 /// Solves one step with the floating pieces' rigid motions `α` as unknowns (module docs);
 /// `alpha` enters as the previous step's and leaves as this step's.
@@ -200,21 +209,36 @@ pub(crate) fn solve_floating_step(
         None if free_at_start && moves => Some(0.0),
         None => None,
     };
+    // (θ, factors) of the legs.
     let mut legs = vec![];
     if let Some(theta) = release {
         if theta > 0.0 {
-            legs.push(along(theta));
+            legs.push((theta, along(theta)));
         }
-        legs.push(along(theta + LANDING_FRACTION * (1.0 - theta)));
+        let landing = theta + LANDING_FRACTION * (1.0 - theta);
+        legs.push((landing, along(landing)));
     }
-    legs.push(step.factors.to_vec());
+    legs.push((1.0, step.factors.to_vec()));
     let (mut start, mut guess) = (step.start.clone(), step.guess.map(<[PairState]>::to_vec));
     let (mut dissipation, mut inner, mut outer) = (0.0, 0, 0);
     let mut trace = vec![];
     let mut friction_slip = vec![0.0; step.start.slip.len()];
     let mut last = None;
-    for leg in &legs {
+    for (i, (theta, leg)) in legs.iter().enumerate() {
         let answer = balance_pins(loaded, interface, modes, step, leg, &start, guess.as_deref(), alpha, solve)?;
+        // After the landing leg (from `θ*` to `θ_L`), the final leg's `α` is predicted by
+        // proportion: α ← α + (α − α_engaged)(1 − θ_L) / (θ_L − θ*), the motion the contact's
+        // deformation gave the pieces over the landing leg, extended to the step's end (exact
+        // where the answer is proportional to the load, as a press from closed gaps is). The
+        // Newton iteration corrects the rest.
+        if step.predict
+            && let Some(released) = release
+            && i + 2 == legs.len()
+            && *theta > released
+        {
+            let scale = (1.0 - theta) / (theta - released);
+            alpha.iter_mut().zip(&answer.engaged_from).for_each(|(a, e)| *a += (*a - e) * scale);
+        }
         dissipation += answer.solution.dissipation;
         friction_slip.iter_mut().zip(&answer.solution.slip_increment).for_each(|(a, d)| *a += d);
         let done = inner;
@@ -271,6 +295,12 @@ fn release_fraction(
     Ok((dot(&at, &at).sqrt() <= 1e-12 * scale).then_some(theta))
 }
 
+/// The pins' force, relative to the step's force scale, above which a Newton step on `α` is
+/// taken to move the stick–slip fronts far (`balance_pins`). Measured on the floating pad
+/// (docs/benchmarks.md, "Floating bodies on long interfaces"): the Newton steps start at
+/// 0.15–0.18 and end at 1e-5–1e-4.
+const FAR_IMBALANCE: f64 = 1e-3;
+
 /// The fraction of a step's load increment at which a piece free at the step's start lands.
 const LANDING_FRACTION: f64 = 1e-3;
 
@@ -304,11 +334,12 @@ fn balance_pins(
                     interface: &mut Interface,
                     alpha: &[f64],
                     start: &StepStart,
-                    guess: Option<&[PairState]>|
+                    guess: Option<&[PairState]>,
+                    far: bool|
      -> Result<(ContactSolution, Vec<f64>), ContactError> {
         loaded.apply_load(factors, Some(&modes.anchor_load(alpha)))?;
         interface.update_load(loaded);
-        let solution = solve(loaded, interface, start, guess);
+        let solution = solve(loaded, interface, start, guess, far && step.predict);
         let done = inner_iterations.get();
         trace
             .borrow_mut()
@@ -318,13 +349,14 @@ fn balance_pins(
         let s = modes.pin_forces(&u_free, alpha);
         Ok((solution, s))
     };
-    let (mut solution, mut s) = evaluate(loaded, interface, alpha, &start, step_guess)?;
+    let (mut solution, mut s) = evaluate(loaded, interface, alpha, &start, step_guess, false)?;
     let mut iterations = 0;
     let size = length_scale(loaded);
-    let finish = |mut solution: ContactSolution, iterations: usize, s: &[f64]| {
+    let mut engaged_from = alpha.clone();
+    let finish = |mut solution: ContactSolution, iterations: usize, s: &[f64], engaged_from: Vec<f64>| {
         solution.iterations = inner_iterations.get();
         solution.trace = trace.take();
-        FloatingAnswer { solution, iterations, residual: norm1(s) }
+        FloatingAnswer { solution, iterations, residual: norm1(s), engaged_from }
     };
     loop {
         let scale = force_scale(load_scale, &solution);
@@ -333,11 +365,11 @@ fn balance_pins(
         // of the tolerance where the load and the contact forces vanish (an unloaded step).
         let allowed = (step.tolerance * scale).max(1e-16 * modes.stiffness() * size);
         if !residual.is_finite() || !solution.status.is_solved() || residual <= allowed {
-            return Ok(finish(solution, iterations, &s));
+            return Ok(finish(solution, iterations, &s, engaged_from));
         }
         if iterations >= step.max_iterations {
             solution.status = ContactStatus::MaxIterations;
-            return Ok(finish(solution, iterations, &s));
+            return Ok(finish(solution, iterations, &s, engaged_from));
         }
         iterations += 1;
         let guess = solution.state.clone();
@@ -353,7 +385,7 @@ fn balance_pins(
             let hj = if force[j] < 0.0 { -h } else { h };
             let mut shifted = alpha.clone();
             shifted[j] += hj;
-            let (_, sj) = evaluate(loaded, interface, &shifted, &start, Some(&guess))?;
+            let (_, sj) = evaluate(loaded, interface, &shifted, &start, Some(&guess), false)?;
             for (i, (a, b)) in sj.iter().zip(&s).enumerate() {
                 jacobian[(i, j)] = (a - b) / hj;
             }
@@ -361,7 +393,7 @@ fn balance_pins(
         let svd = jacobian.svd(true, true);
         let (Some(u), Some(v_t)) = (svd.u.as_ref(), svd.v_t.as_ref()) else {
             solution.status = ContactStatus::Numerical;
-            return Ok(finish(solution, iterations, &s));
+            return Ok(finish(solution, iterations, &s, engaged_from));
         };
         let engaged = |sigma: f64| sigma > 1e-8 * modes.stiffness();
         // The modal force in the null space of J: where the pieces move freely.
@@ -380,10 +412,15 @@ fn balance_pins(
             let t = t * (1.0 + 1e-6);
             alpha.iter_mut().zip(direction.iter()).for_each(|(a, d)| *a += t * d);
             anchor_open_pairs(loaded, modes, &open_at_start, step_start, &alpha_start, alpha, &mut start);
-            (solution, s) = evaluate(loaded, interface, alpha, &start, Some(&guess))?;
+            engaged_from.clone_from(alpha);
+            (solution, s) = evaluate(loaded, interface, alpha, &start, Some(&guess), true)?;
             continue;
         }
-        // Newton on the engaged modes, backtracked on ‖s‖₁.
+        // Newton on the engaged modes, backtracked on ‖s‖₁. Pins that carry more than
+        // `FAR_IMBALANCE` of the force scale hold the pieces far from where the contact would:
+        // the states of the step's end may differ from the guess's along whole stick–slip
+        // fronts, and the inner solve starts with the stick continuation.
+        let far = residual > FAR_IMBALANCE * scale;
         let mut delta = DVector::<f64>::zeros(modes.len());
         let s_vec = DVector::from_column_slice(&s);
         for (k, sigma) in svd.singular_values.iter().enumerate() {
@@ -396,7 +433,7 @@ fn balance_pins(
         let mut improved = false;
         for _ in 0..8 {
             let trial: Vec<f64> = alpha.iter().zip(delta.iter()).map(|(a, d)| a + fraction * d).collect();
-            let (trial_solution, trial_s) = evaluate(loaded, interface, &trial, &start, Some(&guess))?;
+            let (trial_solution, trial_s) = evaluate(loaded, interface, &trial, &start, Some(&guess), far)?;
             improved = norm1(&trial_s) < residual;
             if best.is_none() || improved {
                 best = Some((trial, trial_solution, trial_s));
@@ -410,7 +447,7 @@ fn balance_pins(
         // it is the solve's round-off (a condensed solve is accurate to about 1e-12 of the
         // displacements, and the pins' forces are k times them), and the answer stands.
         if !improved && residual <= 1e-8 * scale {
-            return Ok(finish(solution, iterations, &s));
+            return Ok(finish(solution, iterations, &s, engaged_from));
         }
         if let Some((next_alpha, next_solution, next_s)) = best {
             *alpha = next_alpha;

@@ -22,9 +22,9 @@
 use crate::algorithms::augmented_lagrangian::solve_augmented_lagrangian;
 use crate::algorithms::boussinesq::{BoussinesqLoading, solve_boussinesq_step};
 use crate::algorithms::clarabel_tresca::solve_frictional_qp_on;
-use crate::algorithms::frictional_active_set::solve_frictional_active_set_with;
+use crate::algorithms::frictional_active_set::solve_frictional_active_set_from;
 use crate::algorithms::penalty::{PenaltyParameters, solve_penalty};
-use crate::algorithms::stick_continuation::StickContinuation;
+use crate::algorithms::stick_continuation::{StartingStates, StickContinuation, applies};
 use crate::error::ContactError;
 use crate::floating::{FloatingStep, RigidModes, solve_floating_step as solve_floating_step_with};
 use crate::history::{HistoryStep, Retention, march_keeping};
@@ -307,7 +307,7 @@ pub fn solve_keeping(
             if settings.deadline.is_some_and(|d| web_time::Instant::now() >= d) {
                 return Err(ContactError::DeadlineExceeded { step, steps: targets.len() });
             }
-            let context = StepContext { order: &order, start, guess, step };
+            let context = StepContext { order: &order, start, guess, far_guess: false, step };
             let previous = if step >= 2 { &targets[step - 2] } else { &zeros };
             let factors = StepFactors { target, previous };
             let (solution, iterations, residual) =
@@ -407,6 +407,9 @@ struct StepContext<'a> {
     order: &'a [usize],
     start: &'a StepStart,
     guess: Option<&'a [PairState]>,
+    /// Whether `guess` may be far from the answer (a floating body's Newton step,
+    /// `floating.rs`): the active set's stick continuation then runs from it.
+    far_guess: bool,
     step: usize,
 }
 
@@ -435,9 +438,14 @@ fn solve_floating_step(
         step: context.step,
         max_iterations: settings.max_floating_iterations,
         tolerance: settings.floating_tolerance,
+        predict: settings.algorithm == ContactAlgorithm::ActiveSet && applies(loaded, settings.stick_continuation),
     };
-    let solve = |problem: &ContactProblem, interface: &Interface, start: &StepStart, guess: Option<&[PairState]>| {
-        let inner = StepContext { order: context.order, start, guess, step: context.step };
+    let solve = |problem: &ContactProblem,
+                 interface: &Interface,
+                 start: &StepStart,
+                 guess: Option<&[PairState]>,
+                 far_guess: bool| {
+        let inner = StepContext { order: context.order, start, guess, far_guess, step: context.step };
         solve_step(problem, interface, settings, &inner)
     };
     let answer = solve_floating_step_with(loaded, interface, modes, &step, alpha, &solve)?;
@@ -469,7 +477,9 @@ fn solve_step(
     match settings.algorithm {
         ContactAlgorithm::ActiveSet => {
             let continuation = settings.stick_continuation;
-            solve_frictional_active_set_with(problem, interface, 1.0, context.start, context.guess, max, continuation)
+            let starting = StartingStates::of(context.guess.is_some(), context.far_guess);
+            let (start, guess) = (context.start, context.guess);
+            solve_frictional_active_set_from(problem, interface, 1.0, start, guess, starting, max, continuation)
         }
         ContactAlgorithm::Clarabel => solve_frictional_qp_on(problem, interface, 1.0, context.start, max),
         ContactAlgorithm::Boussinesq => {
@@ -509,7 +519,7 @@ pub(crate) fn solve_step_from(
     };
     let modes = RigidModes::of(problem);
     alpha.resize(modes.len(), 0.0);
-    let context = StepContext { order: &[], start, guess, step };
+    let context = StepContext { order: &[], start, guess, far_guess: false, step };
     let factors = StepFactors { target, previous };
     solve_floating_step(&mut loaded, &mut interface, settings, &factors, &context, &modes, alpha)
 }

@@ -30,7 +30,9 @@ use nalgebra::{DMatrix, DVector};
 use crate::algorithms::semi_smooth::{Iterate, admissible, next_state};
 use crate::algorithms::sparse_active_set::solve_sparse_active_set;
 use crate::algorithms::state_equations::{combine, solve_regularised_state_equations};
-use crate::algorithms::stick_continuation::{StickContinuation, StickStage, add_layer_slip, stage_limit};
+use crate::algorithms::stick_continuation::{
+    StartingStates, StickContinuation, StickStage, add_layer_slip, stage_limit,
+};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
@@ -63,8 +65,26 @@ pub fn solve_frictional_active_set_with(
     max_iterations: usize,
     continuation: StickContinuation,
 ) -> ContactSolution {
+    let starting = StartingStates::of(guess.is_some(), false);
+    solve_frictional_active_set_from(problem, interface, w, start, guess, starting, max_iterations, continuation)
+}
+
+/// [`solve_frictional_active_set_with`] told how far `guess` may be from the answer: from a
+/// [`StartingStates::Far`] guess the regularised stages run as from the all-stick start
+/// (`stick_continuation.rs`; a floating body's Newton step, `floating.rs`).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn solve_frictional_active_set_from(
+    problem: &ContactProblem,
+    interface: &Interface,
+    w: f64,
+    start: &StepStart,
+    guess: Option<&[PairState]>,
+    starting: StartingStates,
+    max_iterations: usize,
+    continuation: StickContinuation,
+) -> ContactSolution {
     if !interface.is_condensed() {
-        return solve_sparse_active_set(problem, interface, w, start, guess, max_iterations, continuation);
+        return solve_sparse_active_set(problem, interface, w, start, guess, starting, max_iterations, continuation);
     }
     let clock = Instant::now();
     let m = problem.num_pairs();
@@ -84,7 +104,7 @@ pub fn solve_frictional_active_set_with(
     let mut status = ContactStatus::MaxIterations;
     let mut iterations = 0;
     let mut trace = Vec::new();
-    let mut stage = StickStage::first(problem, continuation, c_t, frictional, guess.is_some());
+    let mut stage = StickStage::first(problem, continuation, c_t, frictional, starting);
     let mut compliances = stage.map(|s| s.compliances(problem)).unwrap_or_default();
     let mut stage_iterations = 0;
     for it in 1..=max_iterations {

@@ -77,6 +77,38 @@ impl StickContinuation {
     }
 }
 
+/// Where a step's iteration starts, as the stages see it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum StartingStates {
+    /// No guess: every pair in contact and sticking (stages from 300 pairs).
+    AllStick,
+    /// A guess close to the answer (the previous step's states, or a floating body's Jacobian
+    /// probe): the plain iteration from it.
+    Close,
+    /// A guess that may be far from the answer (a floating body's Newton step moved its pins,
+    /// `floating.rs`): stages from the guess's states, as from the all-stick start.
+    Far,
+}
+
+impl StartingStates {
+    /// `AllStick` without a guess, `Close` or `Far` (as `far`) with one.
+    pub(crate) fn of(guessed: bool, far: bool) -> StartingStates {
+        match (guessed, far) {
+            (false, _) => StartingStates::AllStick,
+            (true, false) => StartingStates::Close,
+            (true, true) => StartingStates::Far,
+        }
+    }
+}
+
+/// Whether the warm starts for long interfaces are on: `continuation` is
+/// [`StickContinuation::Auto`] and the problem has at least
+/// `MIN_FIRST_LEVEL / FIRST_LEVEL_PER_PAIR` = 300 pairs. They are the stages of this module and,
+/// for floating bodies, the prediction of the final leg's rigid motion (`floating.rs`).
+pub(crate) fn applies(problem: &ContactProblem, continuation: StickContinuation) -> bool {
+    continuation == StickContinuation::Auto && FIRST_LEVEL_PER_PAIR * problem.num_pairs() as f64 >= MIN_FIRST_LEVEL
+}
+
 /// One regularised stage: the level `ρ` of the module docs and what turns it into compliances.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct StickStage {
@@ -90,20 +122,20 @@ pub(crate) struct StickStage {
 
 impl StickStage {
     /// The first regularised stage of a step, or `None` when the step solves the exact law from
-    /// the start (continuation off, no friction, a guess of the states, fewer than 300 pairs,
-    /// or no usable `c_T`).
+    /// the start (continuation off, no friction, a close guess of the states, fewer than 300
+    /// pairs, or no usable `c_T`).
     pub(crate) fn first(
         problem: &ContactProblem,
         continuation: StickContinuation,
         c_t: f64,
         frictional: bool,
-        guessed: bool,
+        starting: StartingStates,
     ) -> Option<StickStage> {
         let m = problem.num_pairs();
         let level = FIRST_LEVEL_PER_PAIR * m as f64;
         let mean_weight = problem.pairs.iter().map(|p| p.weight).sum::<f64>() / m.max(1) as f64;
         let usable = c_t.is_finite() && c_t > 0.0 && mean_weight.is_finite() && mean_weight > 0.0;
-        let wanted = continuation == StickContinuation::Auto && frictional && !guessed && level >= MIN_FIRST_LEVEL;
+        let wanted = frictional && starting != StartingStates::Close && applies(problem, continuation);
         (wanted && usable).then_some(StickStage { level, c_t, mean_weight })
     }
 
@@ -142,10 +174,27 @@ mod tests {
     use super::*;
 
     #[test]
-    fn stages_are_skipped_below_300_pairs_and_with_a_guess() {
+    fn stages_are_skipped_below_300_pairs_whatever_the_start() {
         let problem = crate::test_fixtures::two_blocks(CellKind::Quad9, 0.0, 0.004, 2.0, 0.05, 5, 3);
         assert!(problem.num_pairs() < 300);
-        assert_eq!(StickStage::first(&problem, StickContinuation::Auto, 1.0, true, false), None);
+        for starting in [StartingStates::AllStick, StartingStates::Close, StartingStates::Far] {
+            assert_eq!(StickStage::first(&problem, StickContinuation::Auto, 1.0, true, starting), None);
+        }
+    }
+
+    #[test]
+    fn from_300_pairs_stages_start_without_a_guess_or_from_a_far_one() {
+        let problem = crate::test_fixtures::two_blocks(CellKind::Quad4, 0.0, 0.0, 1.0, 0.05, 300, 300);
+        assert!(problem.num_pairs() >= 300, "{}", problem.num_pairs());
+        let first = |continuation, starting| StickStage::first(&problem, continuation, 1.0, true, starting);
+        assert!(first(StickContinuation::Auto, StartingStates::AllStick).is_some());
+        assert!(first(StickContinuation::Auto, StartingStates::Far).is_some());
+        assert_eq!(first(StickContinuation::Auto, StartingStates::Close), None);
+        assert_eq!(first(StickContinuation::Off, StartingStates::Far), None);
+        assert_eq!(StickStage::first(&problem, StickContinuation::Auto, 1.0, false, StartingStates::Far), None);
+        assert!(applies(&problem, StickContinuation::Auto) && !applies(&problem, StickContinuation::Off));
+        assert_eq!(StartingStates::of(false, true), StartingStates::AllStick);
+        assert_eq!(StartingStates::of(true, true), StartingStates::Far);
     }
 
     #[test]

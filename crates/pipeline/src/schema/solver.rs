@@ -11,6 +11,7 @@
 //! place_zone_ends = true     # boussinesq: nodes at l* and b* (preset default; generic: straight or circular master)
 //! linear = "auto"            # condensed, sparse: how the contact states' equations are solved
 //! stick_continuation = "auto" # off: the active set without regularised stick stages
+//! floating_tolerance = 1e-10 # bodies held only by contact: the pins' force left, relative
 //! ```
 
 use serde::de::Error as _;
@@ -102,6 +103,10 @@ pub struct SolverEntry {
     /// frictional interfaces: `auto` (default) or `off` ([`StickContinuation`]).
     #[serde(default, deserialize_with = "deserialize_continuation")]
     pub stick_continuation: StickContinuation,
+    /// Bodies held only by contact: the force their pins may still carry, relative to the
+    /// step's force scale (default 1e-10; [`SolverSettings::with_floating_tolerance`]).
+    #[serde(default)]
+    pub floating_tolerance: Option<f64>,
 }
 
 impl Default for SolverEntry {
@@ -114,6 +119,7 @@ impl Default for SolverEntry {
             place_zone_ends: None,
             linear: LinearSolver::Auto,
             stick_continuation: StickContinuation::Auto,
+            floating_tolerance: None,
         }
     }
 }
@@ -144,6 +150,12 @@ impl SolverEntry {
             .with_linear(self.linear)
             .map_err(|e| fail("solver.linear", e.to_string()))?
             .with_stick_continuation(self.stick_continuation);
+        let settings = match self.floating_tolerance {
+            Some(tolerance) => settings
+                .with_floating_tolerance(tolerance)
+                .map_err(|e| fail("solver.floating_tolerance", e.to_string()))?,
+            None => settings,
+        };
         let given = [("solver.penalty", self.penalty), ("solver.tangential_penalty", self.tangential_penalty)];
         if algorithm != ContactAlgorithm::Penalty {
             if let Some((key, _)) = given.iter().find(|(_, v)| v.is_some()) {
@@ -187,6 +199,17 @@ mod tests {
         let entry: SolverEntry = toml::from_str("algorithm = \"clarabel\"\nlinear = \"sparse\"").unwrap();
         let fail = |key: &str, reason: String| SceneError::Value { path: "s.toml".into(), key: key.into(), reason };
         assert!(matches!(entry.settings(fail), Err(SceneError::Value { key, .. }) if key == "solver.linear"));
+    }
+
+    #[test]
+    fn the_floating_tolerance_is_passed_on_and_refused_out_of_range() {
+        let fail = |key: &str, reason: String| SceneError::Value { path: "s.toml".into(), key: key.into(), reason };
+        let entry: SolverEntry = toml::from_str("floating_tolerance = 1e-13").unwrap();
+        assert_eq!(entry.settings(fail).unwrap().floating_tolerance(), 1e-13);
+        assert_eq!(SolverEntry::default().settings(fail).unwrap().floating_tolerance(), 1e-10);
+        let entry: SolverEntry = toml::from_str("floating_tolerance = 0.1").unwrap();
+        let refused = entry.settings(fail);
+        assert!(matches!(refused, Err(SceneError::Value { key, .. }) if key == "solver.floating_tolerance"));
     }
 
     #[test]
