@@ -158,7 +158,7 @@ fn measure_step(built: &BuiltProblem, step: &SolvedStep, reference: &Undeformed)
     })
 }
 
-/// Solves the scene on its level-3 mesh ([`MESH`]; the scene file's own is the coarse level 1)
+/// Solves the scene on its level-3 mesh (`moving_roller_L3.msh`; the scene file's own is the coarse level 1)
 /// with `overrides` after it, and measures every step.
 ///
 /// # Errors
