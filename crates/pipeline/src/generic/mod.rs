@@ -447,6 +447,7 @@ fn solve_generic_from(
     let input = SummaryInput {
         scene,
         built: summarised,
+        initial: &built,
         last,
         groups,
         scaled: history.scaled,

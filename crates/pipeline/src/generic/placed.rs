@@ -246,8 +246,17 @@ fn summary_of_steps(
         solve: steps.iter().map(|(s, _)| s.step.solution.time.as_secs_f64()).sum(),
         ..Times::default()
     };
-    let input =
-        SummaryInput { scene, built, last: last_step, groups, scaled: false, total_steps: steps.len(), times, clock };
+    let input = SummaryInput {
+        scene,
+        built,
+        initial: built,
+        last: last_step,
+        groups,
+        scaled: false,
+        total_steps: steps.len(),
+        times,
+        clock,
+    };
     let mut report = summarise(input, rows)?;
     for (i, (step, _)) in steps.iter().enumerate() {
         super::placed_ends::set_placed_ends(&mut report, i, step);

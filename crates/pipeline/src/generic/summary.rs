@@ -93,6 +93,10 @@ pub struct SummaryInput<'s> {
     pub scene: &'s GenericScene,
     /// The problem the last step was solved on.
     pub built: &'s BuiltProblem,
+    /// The problem as built from the scene, before any step: the initial gaps and the pairs the
+    /// fixes hold are read here (with finite sliding `built` holds the last step's pairs, whose
+    /// gaps are that step's linearised offsets, not an initial interference).
+    pub initial: &'s BuiltProblem,
     /// The last solved step.
     pub last: &'s SolvedStep,
     /// The groups the scene names.
@@ -115,7 +119,8 @@ pub struct SummaryInput<'s> {
 /// first non-finite number.
 pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<GenericReport, ContactError> {
     let post_clock = Instant::now();
-    let SummaryInput { scene, built, last: last_step, groups, scaled, total_steps: total, mut times, clock } = input;
+    let SummaryInput { scene, built, initial, last: last_step, groups, scaled, total_steps: total, mut times, clock } =
+        input;
     let SummaryRows { results, rows: summary_steps, first_non_finite, sliding, fretting, .. } = rows;
     let Some(last) = summary_steps.last() else {
         return Err(ContactError::InvalidInput("no load step solved".into()));
@@ -134,11 +139,11 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
     // energy), so the energy balance is no check of the numbers there.
     // An interference (a negative initial gap) stores energy that no load put in: no balance
     // either.
-    let extent = built.problem.model.mesh.bounding_box().map_or(1.0, |[lo, hi]| (hi[0] - lo[0]).max(hi[1] - lo[1]));
-    let interference = built.problem.gap.iter().any(|g| *g < -1e-9 * extent);
+    let extent = initial.problem.model.mesh.bounding_box().map_or(1.0, |[lo, hi]| (hi[0] - lo[0]).max(hi[1] - lo[1]));
+    let interference = initial.problem.gap.iter().any(|g| *g < -1e-9 * extent);
     // Gaps below 1e-9 of the extent (round-off of a turned or morphed geometry) close with no
     // rigid travel worth counting.
-    let touching = built.problem.gap.iter().all(|g| g.abs() <= 1e-9 * extent);
+    let touching = initial.problem.gap.iter().all(|g| g.abs() <= 1e-9 * extent);
     let balance_checked = !interference && (scaled || built.problem.system.floating.is_empty() || touching);
     let (status, failed_check) = certified_status(scaled, &summary_steps, balance_checked);
     let floating_bodies = built
@@ -151,8 +156,8 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
     let mut notes = scene.element_warnings();
     let regions: Vec<String> = scene.body.iter().map(|b| b.region.clone()).collect();
     notes.extend(setup_notes::shared_node_notes(&built.problem.model.mesh, &regions));
-    notes.extend(setup_notes::deep_interference_notes(built));
-    notes.extend(setup_notes::held_pair_notes(built, &last_step.solution.gap));
+    notes.extend(setup_notes::deep_interference_notes(initial));
+    notes.extend(setup_notes::held_pair_notes(initial, &last_step.solution.gap));
     let node_to_segment: Vec<bool> =
         scene.contact.iter().map(|c| c.pairing == scene::PairingKey::NodeToSegment).collect();
     notes.extend(setup_notes::quadratic_node_to_segment_notes(built, &node_to_segment));

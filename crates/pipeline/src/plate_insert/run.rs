@@ -240,8 +240,17 @@ fn outcome_of_steps(
     };
     let groups = crate::generic::group_reports(expanded, &built.problem.model.mesh)?;
     let total_steps = steps.len();
-    let input =
-        SummaryInput { scene: expanded, built, last: last_step, groups, scaled, total_steps, times, clock: start };
+    let input = SummaryInput {
+        scene: expanded,
+        built,
+        initial: built,
+        last: last_step,
+        groups,
+        scaled,
+        total_steps,
+        times,
+        clock: start,
+    };
     let report = summarise(input, rows)?;
     with_paper_block(report, steps, w, mu, start)
 }
