@@ -33,24 +33,22 @@ pub fn solve_frictionless_active_set(
     max_iterations: usize,
 ) -> ContactSolution {
     if !interface.is_condensed() {
-        // The sparse path solves the problem's own friction law: a frictionless copy.
+        // The sparse path solves the problem's own friction law: a frictionless copy if it has
+        // friction.
+        let frictionless;
+        let problem = if problem.is_frictional() {
+            frictionless = {
+                let mut copy = problem.clone();
+                copy.friction.iter_mut().for_each(|mu| *mu = 0.0);
+                copy
+            };
+            &frictionless
+        } else {
+            problem
+        };
         let initial = StepStart::initial(problem.num_pairs());
-        if !problem.is_frictional() {
-            return solve_sparse_active_set(
-                problem,
-                interface,
-                w,
-                &initial,
-                None,
-                StartingStates::AllStick,
-                max_iterations,
-                StickContinuation::Off,
-            );
-        }
-        let mut frictionless = problem.clone();
-        frictionless.friction.iter_mut().for_each(|mu| *mu = 0.0);
         return solve_sparse_active_set(
-            &frictionless,
+            problem,
             interface,
             w,
             &initial,
