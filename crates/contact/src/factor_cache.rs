@@ -19,16 +19,35 @@ impl Clone for StateFactorCache {
     }
 }
 
-/// One factored reduced system: its key, its LU and the permutations of its rows.
+/// What a reduced system's matrix depends on besides the compliances: the states, the friction
+/// coefficients, the tangential flags, whether friction is on, and the bits of the stick rows'
+/// regularising compliances (empty: exact).
+pub(crate) type StateKey = (Vec<PairState>, Vec<f64>, Vec<bool>, bool, Vec<u64>);
+
+/// One factored reduced system: its key, its LU and the permutations of its rows, and what
+/// the low-rank updates from it have computed (`algorithms/state_update.rs`).
 #[derive(Debug)]
 pub(crate) struct StateFactor {
-    /// States, friction coefficients, tangential flags, whether friction is on, and the bits
-    /// of the stick rows' regularising compliances (empty: exact).
-    pub(crate) key: (Vec<PairState>, Vec<f64>, Vec<bool>, bool, Vec<u64>),
+    /// The state the LU is of.
+    pub(crate) key: StateKey,
     /// The LU factors.
     pub(crate) lu: Mat<f64>,
     /// Row permutation.
     pub(crate) forward: Vec<usize>,
     /// Its inverse.
     pub(crate) inverse: Vec<usize>,
+    /// `F⁻¹ e_i` of the full system of the factored state, per full row `i` an update has
+    /// changed (kept while this factor lives).
+    pub(crate) update_columns: Vec<(usize, Vec<f64>)>,
+    /// `‖F‖∞` bound of the full systems on this interface, once an update has needed it.
+    pub(crate) row_norm: Option<f64>,
+    /// The states last solved by an update of this factor.
+    pub(crate) last_updated: Option<Vec<PairState>>,
+}
+
+impl StateFactor {
+    /// A fresh factor of the state `key`, no update computed yet.
+    pub(crate) fn new(key: StateKey, lu: Mat<f64>, forward: Vec<usize>, inverse: Vec<usize>) -> StateFactor {
+        StateFactor { key, lu, forward, inverse, update_columns: Vec::new(), row_norm: None, last_updated: None }
+    }
 }

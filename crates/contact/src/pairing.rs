@@ -99,10 +99,11 @@ pub fn pair_contours(
     let err = |reason: String| ContactError::Pairing { master: master.name.clone(), slave: slave.name.clone(), reason };
     let body = SlaveBody::new(model, slave_region, slave).map_err(err)?;
     let weights = tributary_weights(master);
+    let boxes = EdgeBoxes::of(slave);
     let mut pairs = Vec::with_capacity(master.nodes.len());
     for (k, &m) in master.nodes.iter().enumerate() {
         let x = model.mesh.points[m.0];
-        let (edge_index, xi) = closest_point(slave, &model.mesh.points, x);
+        let (edge_index, xi) = closest_point(slave, &boxes, &model.mesh.points, x);
         let edge = &slave.edges[edge_index];
         let (y, t, _) = slave.edge_frame(edge, xi);
         let projection = Projection { edge: edge_index, xi, point: y, tangent: t, own: &[m] };
@@ -139,40 +140,52 @@ pub(crate) fn edge_shape(quadratic: bool, xi: f64) -> [f64; 3] {
 
 /// The edge of `slave` and the reference coordinate of the point closest to `x`, rounded to a
 /// node where it is there to round-off.
-fn closest_point(slave: &Contour, points: &[[f64; 2]], x: [f64; 2]) -> (usize, f64) {
-    let (edge, xi) = closest_point_unsnapped(slave, points, x);
+fn closest_point(slave: &Contour, boxes: &EdgeBoxes, points: &[[f64; 2]], x: [f64; 2]) -> (usize, f64) {
+    let (edge, xi) = boxes.closest_point_unsnapped(slave, points, x);
     (edge, snap(xi))
 }
 
-/// The edge of `slave` and the reference coordinate of the point closest to `x`: of the
-/// candidates of [`edge_candidates`], edge by edge, the first that is closer than the best so far
-/// by more than 1e-15.
-///
-/// Edges are skipped unsolved when their bounding box lies farther than a candidate already
-/// found (`U`, from the edge of the nearest box) plus a margin `1e-9 (U + its box's size)`: all of
-/// their candidates are then farther than the closest one by more than the margin, so they can be
-/// neither the answer nor, as a passing best, decide between candidates within 1e-15 of each
-/// other — the same answer as solving every edge.
-pub(crate) fn closest_point_unsnapped(slave: &Contour, points: &[[f64; 2]], x: [f64; 2]) -> (usize, f64) {
-    // (Distances are those of `Contour::edge_point`, on the contour's own points.)
-    let own = slave.points();
-    let boxes: Vec<[f64; 4]> = slave.edges.iter().map(|e| edge_box(e, own)).collect();
-    let box_distance =
-        |[x0, y0, x1, y1]: [f64; 4]| (x0 - x[0]).max(x[0] - x1).max(0.0).hypot((y0 - x[1]).max(x[1] - y1).max(0.0));
-    let lower: Vec<f64> = boxes.iter().map(|b| box_distance(*b)).collect();
-    let Some(nearest) = (0..lower.len()).min_by(|&a, &b| lower[a].total_cmp(&lower[b])) else { return (0, 0.0) };
-    let upper = edge_candidates(slave, points, nearest, x).iter().map(|c| c.1).fold(f64::INFINITY, f64::min);
-    let [x0, y0, x1, y1] = boxes[nearest];
-    let cutoff = upper + 1e-9 * (upper + (x1 - x0).hypot(y1 - y0));
-    let mut best = (0, 0.0, f64::INFINITY);
-    for i in (0..slave.edges.len()).filter(|&i| lower[i] <= cutoff) {
-        for (xi, dist) in edge_candidates(slave, points, i, x) {
-            if dist < best.2 - 1e-15 {
-                best = (i, xi, dist);
+/// The bounding boxes of a contour's edges (quadratic edges: of their control points), computed
+/// once for the many closest-point searches on one contour (a contour's pairing asks one per
+/// master node or integration point).
+pub(crate) struct EdgeBoxes(Vec<[f64; 4]>);
+
+impl EdgeBoxes {
+    /// The boxes of `contour`'s edges, on its own points.
+    pub(crate) fn of(contour: &Contour) -> EdgeBoxes {
+        let own = contour.points();
+        EdgeBoxes(contour.edges.iter().map(|e| edge_box(e, own)).collect())
+    }
+
+    /// The edge of `slave` and the reference coordinate of the point closest to `x`: of the
+    /// candidates of [`edge_candidates`], edge by edge, the first that is closer than the best so far
+    /// by more than 1e-15.
+    ///
+    /// Edges are skipped unsolved when their bounding box lies farther than a candidate already
+    /// found (`U`, from the edge of the nearest box) plus a margin `1e-9 (U + its box's size)`: all of
+    /// their candidates are then farther than the closest one by more than the margin, so they can be
+    /// neither the answer nor, as a passing best, decide between candidates within 1e-15 of each
+    /// other — the same answer as solving every edge. `self` must be the boxes of `slave`.
+    pub(crate) fn closest_point_unsnapped(&self, slave: &Contour, points: &[[f64; 2]], x: [f64; 2]) -> (usize, f64) {
+        // (Distances are those of `Contour::edge_point`, on the contour's own points.)
+        let boxes = &self.0;
+        let box_distance =
+            |[x0, y0, x1, y1]: [f64; 4]| (x0 - x[0]).max(x[0] - x1).max(0.0).hypot((y0 - x[1]).max(x[1] - y1).max(0.0));
+        let lower: Vec<f64> = boxes.iter().map(|b| box_distance(*b)).collect();
+        let Some(nearest) = (0..lower.len()).min_by(|&a, &b| lower[a].total_cmp(&lower[b])) else { return (0, 0.0) };
+        let upper = edge_candidates(slave, points, nearest, x).iter().map(|c| c.1).fold(f64::INFINITY, f64::min);
+        let [x0, y0, x1, y1] = boxes[nearest];
+        let cutoff = upper + 1e-9 * (upper + (x1 - x0).hypot(y1 - y0));
+        let mut best = (0, 0.0, f64::INFINITY);
+        for i in (0..slave.edges.len()).filter(|&i| lower[i] <= cutoff) {
+            for (xi, dist) in edge_candidates(slave, points, i, x) {
+                if dist < best.2 - 1e-15 {
+                    best = (i, xi, dist);
+                }
             }
         }
+        (best.0, best.1)
     }
-    (best.0, best.1)
 }
 
 /// `(ξ, distance)` of Newton's method on `f(ξ) = (x(ξ) − x) · x'(ξ) = 0` from the starts −0.5, 0,
@@ -228,8 +241,9 @@ fn edge_box(edge: &ContourEdge, points: &[[f64; 2]]) -> [f64; 4] {
 pub fn nodes_face_each_other(points: &[[f64; 2]], a: &Contour, b: &Contour) -> bool {
     const TOLERANCE: f64 = 1e-6;
     let onto = |from: &Contour, to: &Contour| {
+        let boxes = EdgeBoxes::of(to);
         from.nodes.iter().all(|n| {
-            let (e, xi) = closest_point_unsnapped(to, points, points[n.0]);
+            let (e, xi) = boxes.closest_point_unsnapped(to, points, points[n.0]);
             (xi.abs() - 1.0).abs() <= TOLERANCE || (xi.abs() <= TOLERANCE && to.edges[e].quadratic)
         })
     };

@@ -53,7 +53,7 @@ use contact2d_fem::Model;
 use contact2d_mesh::{Contour, ContourEdge, NodeId};
 
 use crate::error::ContactError;
-use crate::pairing::{ContactPair, IntegratedRows, RowCoefficient, closest_point_unsnapped, edge_shape, pair_contours};
+use crate::pairing::{ContactPair, EdgeBoxes, IntegratedRows, RowCoefficient, edge_shape, pair_contours};
 use crate::side::{Projection, SlaveBody};
 
 /// The per-node sums of the integrals, before the division by `w_k`.
@@ -87,6 +87,7 @@ pub fn pair_segments(
     let (gx, gw) = gauss_legendre(5).map_err(|e| err(e.to_string()))?;
     let points = &model.mesh.points;
     let mut sums = vec![NodeIntegrals::default(); master.nodes.len()];
+    let boxes = EdgeBoxes::of(slave);
     for edge in &master.edges {
         let local = contour_indices(master, edge);
         let count = if edge.quadratic { 3 } else { 2 };
@@ -99,7 +100,7 @@ pub fn pair_segments(
                 let (x, _, ds) = master.edge_frame(edge, xi);
                 let n_master = edge_shape(edge.quadratic, xi);
                 let phi = multiplier_shape(edge.quadratic, xi);
-                let (e, eta) = closest_point_unsnapped(slave, points, x);
+                let (e, eta) = boxes.closest_point_unsnapped(slave, points, x);
                 let slave_edge = &slave.edges[e];
                 let (y, t, _) = slave.edge_frame(slave_edge, eta);
                 let projection = Projection { edge: e, xi: eta, point: y, tangent: t, own: &edge.nodes[..count] };

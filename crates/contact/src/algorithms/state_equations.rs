@@ -33,6 +33,7 @@ use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::lu::partial_pivoting::{factor, solve};
 use nalgebra::DMatrix;
 
+use crate::algorithms::state_update::{StateUpdate, UPDATE_FROM};
 use crate::factor_cache::StateFactor;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
@@ -115,13 +116,76 @@ impl StateSystem {
 
 /// How pair `k`'s tangential force follows from its state.
 #[derive(Debug, Clone, Copy, PartialEq)]
-enum Tangential {
+pub(crate) enum Tangential {
     /// `τ_k = 0` (free, no tangential unknown, or μ = 0).
     Zero,
     /// `τ_k` is an unknown of the reduced system at this position (stick).
     Unknown(usize),
     /// `τ_k = factor · λ_k` (slip: −μ for slip+, +μ for slip−).
     Slip(f64),
+}
+
+/// Which unknowns a state leaves open and how the others follow from them (module docs).
+pub(crate) struct Layout {
+    /// The pairs in contact: their `λ` are the first unknowns of the reduced system, in order.
+    pub(crate) contact: Vec<usize>,
+    /// The sticking pairs with a tangential unknown: their `τ` follow, in order.
+    pub(crate) stick: Vec<usize>,
+    /// Per pair, how its `τ` follows.
+    pub(crate) tangential: Vec<Tangential>,
+}
+
+impl Layout {
+    /// The layout of `state`; `frictional` says whether the interface has tangential compliances.
+    pub(crate) fn of(problem: &ContactProblem, state: &[PairState], frictional: bool) -> Layout {
+        let m = state.len();
+        let contact: Vec<usize> = (0..m).filter(|&k| state[k] != PairState::Free).collect();
+        let mut tangential = vec![Tangential::Zero; m];
+        let mut stick = Vec::new();
+        for &k in &contact {
+            let mu = problem.friction[k];
+            if !frictional || !problem.tangential[k] || mu == 0.0 {
+                continue;
+            }
+            tangential[k] = match state[k] {
+                PairState::Stick => {
+                    stick.push(k);
+                    Tangential::Unknown(contact.len() + stick.len() - 1)
+                }
+                PairState::SlipPositive => Tangential::Slip(-mu),
+                PairState::SlipNegative => Tangential::Slip(mu),
+                PairState::Free => Tangential::Zero,
+            };
+        }
+        Layout { contact, stick, tangential }
+    }
+
+    /// The size of the reduced system.
+    pub(crate) fn size(&self) -> usize {
+        self.contact.len() + self.stick.len()
+    }
+
+    /// Row `i` of the reduced system as `(pair, normal)`: the gap row of `contact[i]` (`i < na`)
+    /// or the slip row of `stick[i − na]`.
+    pub(crate) fn rows(&self) -> Vec<(usize, bool)> {
+        self.contact.iter().map(|&k| (k, true)).chain(self.stick.iter().map(|&k| (k, false))).collect()
+    }
+
+    /// The right-hand sides of the full `2m × 2` system (A1: unit load, A2: gaps and history):
+    /// nonzero on the gap rows of the pairs in contact and the slip rows of the sticking ones.
+    pub(crate) fn full_rhs(&self, problem: &ContactProblem, interface: &Interface, start: &StepStart) -> Mat<f64> {
+        let m = self.tangential.len();
+        let mut b = Mat::<f64>::zeros(2 * m, 2);
+        for &k in &self.contact {
+            b[(k, 0)] = -interface.h_normal[k];
+            b[(k, 1)] = -problem.gap[k];
+        }
+        for &k in &self.stick {
+            b[(m + k, 0)] = -interface.h_tangent[k];
+            b[(m + k, 1)] = start.slip[k];
+        }
+        b
+    }
 }
 
 /// Solves the equations of `state` on the reduced system of the module docs: `[x₁ x₂]`
@@ -139,7 +203,9 @@ pub(crate) fn solve_state_equations(
 
 /// [`solve_state_equations`] with the stick rows regularised: `Δs_k + e_k τ_k = 0` instead of
 /// `Δs_k = 0` (an elastic tangential spring of compliance `e_k` in series with the interface;
-/// `stick_compliance` empty: `e = 0`, the exact equations).
+/// `stick_compliance` empty: `e = 0`, the exact equations). A state close to the one factored
+/// last on a large interface is solved as a low-rank update of that factor
+/// (`state_update.rs`).
 pub(crate) fn solve_regularised_state_equations(
     problem: &ContactProblem,
     interface: &Interface,
@@ -149,25 +215,9 @@ pub(crate) fn solve_regularised_state_equations(
     stick_compliance: &[f64],
 ) -> Option<DMatrix<f64>> {
     let m = state.len();
-    let contact: Vec<usize> = (0..m).filter(|&k| state[k] != PairState::Free).collect();
-    let mut tangential = vec![Tangential::Zero; m];
-    let mut stick = Vec::new();
-    for &k in &contact {
-        let mu = problem.friction[k];
-        if !frictional || !problem.tangential[k] || mu == 0.0 {
-            continue;
-        }
-        tangential[k] = match state[k] {
-            PairState::Stick => {
-                stick.push(k);
-                Tangential::Unknown(contact.len() + stick.len() - 1)
-            }
-            PairState::SlipPositive => Tangential::Slip(-mu),
-            PairState::SlipNegative => Tangential::Slip(mu),
-            PairState::Free => Tangential::Zero,
-        };
-    }
-    let r = contact.len() + stick.len();
+    let layout = Layout::of(problem, state, frictional);
+    let (contact, stick, tangential) = (&layout.contact, &layout.stick, &layout.tangential);
+    let r = layout.size();
     let mut x = DMatrix::<f64>::zeros(2 * m, 2);
     if r == 0 {
         return Some(x);
@@ -176,12 +226,21 @@ pub(crate) fn solve_regularised_state_equations(
     let key = (state.to_vec(), problem.friction.clone(), problem.tangential.clone(), frictional, compliance_bits);
     let mut cache = interface.last_state.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     let hit = cache.as_ref().is_some_and(|c| c.key == key && c.lu.nrows() == r);
+    if !hit && let Some(base) = cache.as_mut() {
+        let system = StateUpdate { problem, interface, frictional, stick_compliance, from: UPDATE_FROM };
+        if let Some(z) = system.solve(base, &key, &layout, &layout.full_rhs(problem, interface, start)) {
+            drop(cache);
+            for c in 0..2 {
+                for i in 0..2 * m {
+                    x[(i, c)] = z[(i, c)];
+                }
+            }
+            return x.iter().all(|v| v.is_finite()).then_some(x);
+        }
+    }
     let mut a = if hit { Mat::<f64>::zeros(0, 0) } else { Mat::<f64>::zeros(r, r) };
     let mut b = Mat::<f64>::zeros(r, 2);
-    // Row i of the reduced system: the gap row of contact[i] (i < na) or the slip row of
-    // stick[i − na]; (c_n·, c_t·) are that row's compliances against λ and τ.
-    let rows: Vec<(usize, bool)> =
-        contact.iter().map(|&k| (k, true)).chain(stick.iter().map(|&k| (k, false))).collect();
+    let rows = layout.rows();
     for (i, &(k, normal)) in rows.iter().enumerate() {
         if normal {
             b[(i, 0)] = -interface.h_normal[k];
@@ -230,7 +289,7 @@ pub(crate) fn solve_regularised_state_equations(
     if !hit {
         let (mut forward, mut inverse) = (vec![0usize; r], vec![0usize; r]);
         factor::lu_in_place(a.as_mut(), &mut forward, &mut inverse, par, stack, Default::default());
-        *cache = Some(StateFactor { key, lu: a, forward, inverse });
+        *cache = Some(StateFactor::new(key, a, forward, inverse));
     }
     let factored = cache.as_ref()?;
     if (0..r).any(|i| factored.lu[(i, i)] == 0.0) {
