@@ -57,6 +57,8 @@ pub struct Interface {
     /// the next solve has the same state (a load step starting from the previous step's
     /// states).
     pub(crate) last_state: crate::factor_cache::StateFactorCache,
+    /// The last two contact forces whose displacements were solved ([`Interface::free_displacement`]).
+    force_span: crate::force_span::ForceSpan,
     /// Whether the compliances were computed ([`Interface::new`]) or left empty for the sparse
     /// path ([`Interface::sparse`]).
     condensed: bool,
@@ -177,6 +179,7 @@ impl Interface {
             tangent_rows: tangent.to_vec(),
             pattern_u0: vec![None; problem.patterns().len()],
             last_state: Default::default(),
+            force_span: Default::default(),
             condensed: true,
             kkt: Default::default(),
         }
@@ -205,6 +208,7 @@ impl Interface {
             tangent_rows: tangent.to_vec(),
             pattern_u0: vec![None; problem.patterns().len()],
             last_state: Default::default(),
+            force_span: Default::default(),
             condensed: false,
             kkt: Default::default(),
         }
@@ -264,8 +268,29 @@ impl Interface {
     }
 
     /// Free displacements `w u0 + K⁻¹ (B_Nᵀ λ + B_Tᵀ τ)` (one solve; `τ` is ignored without
-    /// friction).
+    /// friction). On a large problem, forces in the span of the last two solved take their
+    /// displacements by linearity, without a solve (`force_span.rs`).
     pub fn free_displacement(&self, w: f64, lambda: &[f64], tau: &[f64]) -> Vec<f64> {
+        let x = if self.u0.len() >= crate::force_span::SPAN_FROM_DOFS {
+            let forces: Vec<f64> = lambda
+                .iter()
+                .take(self.normal_rows.len())
+                .chain(tau.iter().take(self.tangent_rows.len()))
+                .copied()
+                .collect();
+            self.force_span.solution(&forces).unwrap_or_else(|| {
+                let x = self.contact_displacement(lambda, tau);
+                self.force_span.remember(forces, x.clone());
+                x
+            })
+        } else {
+            self.contact_displacement(lambda, tau)
+        };
+        x.iter().zip(&self.u0).map(|(x, u)| w * u + x).collect()
+    }
+
+    /// `K⁻¹ (B_Nᵀ λ + B_Tᵀ τ)` (one solve).
+    fn contact_displacement(&self, lambda: &[f64], tau: &[f64]) -> Vec<f64> {
         let mut f = vec![0.0; self.u0.len()];
         for (row, l) in self.normal_rows.iter().zip(lambda) {
             for &(i, v) in &row.free {
@@ -277,7 +302,6 @@ impl Interface {
                 f[i] += v * t;
             }
         }
-        let x = self.solver.solve(&f);
-        x.iter().zip(&self.u0).map(|(x, u)| w * u + x).collect()
+        self.solver.solve(&f)
     }
 }

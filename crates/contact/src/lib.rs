@@ -29,6 +29,7 @@ pub mod error;
 mod factor_cache;
 pub mod finite_sliding;
 mod floating;
+mod force_span;
 pub mod history;
 pub mod interface;
 mod kkt;
