@@ -21,6 +21,8 @@
 //! the zones given, so both conditions of the paper hold at their nodes: at b*, v − vh = v_s_τ
 //! and f = 0; at l*, f = 0 (or stick) and p = 0.
 
+use std::rc::Rc;
+
 use crate::{BoussinesqLoading, ContactProblem};
 use crate::{
     ContactError, ContactStatus, Interface, IterationRecord, PairState, StepStart, Zones, finish_zones,
@@ -82,7 +84,7 @@ struct Search<'a, F: PlaceableContact> {
     /// One record per residual evaluated by the root finders.
     trace: Vec<IterationRecord>,
     /// The last few meshes solved, by their placement (see [`Placement`]).
-    recent: Vec<(Placement, Evaluation<F::Case>)>,
+    recent: Vec<(Placement, Rc<Evaluation<F::Case>>)>,
 }
 
 /// What an evaluation depends on within one search (the loading and history being fixed):
@@ -114,17 +116,21 @@ impl<F: PlaceableContact> Search<'_, F> {
     /// Solves the adjusted mesh with l (and b, if given) placed; without b, the stick zone comes
     /// from the Boussinesq b iteration on the nodes. A placement solved a few evaluations ago
     /// is not solved again ([`Placement`]).
-    fn evaluate(&mut self, l: f64, b: Option<(f64, usize, PairState)>) -> Result<Evaluation<F::Case>, ContactError> {
+    fn evaluate(
+        &mut self,
+        l: f64,
+        b: Option<(f64, usize, PairState)>,
+    ) -> Result<Rc<Evaluation<F::Case>>, ContactError> {
         let placement: Placement =
             (self.l_corner, l.to_bits(), b.map(|(eta, corner, slip)| (eta.to_bits(), corner, slip)));
         if let Some((_, e)) = self.recent.iter().find(|(p, _)| *p == placement) {
-            return Ok(e.clone());
+            return Ok(Rc::clone(e));
         }
-        let e = self.solve_mesh(l, b)?;
+        let e = Rc::new(self.solve_mesh(l, b)?);
         if self.recent.len() == RECENT_EVALUATIONS {
             self.recent.remove(0);
         }
-        self.recent.push((placement, e.clone()));
+        self.recent.push((placement, Rc::clone(&e)));
         Ok(e)
     }
 
@@ -252,6 +258,9 @@ fn search_placed<F: PlaceableContact>(
     for _attempt in 0..8 {
         match search_zone_ends(&mut run, base, l_estimate, b_estimate, search.tolerance) {
             Ok((last, stick_end)) => {
+                // The last evaluation, owned once the kept ones are let go.
+                run.recent.clear();
+                let last = Rc::try_unwrap(last).unwrap_or_else(|shared| (*shared).clone());
                 let residual_cone = last.b_pair.map_or(0.0, |k| last.cone(k).abs() / last.pressure_scale());
                 return finish((run.evaluations, clock.elapsed()), last, stick_end, residual_cone, run.trace)
                     .map_err(|e| (e, run.evaluations));
@@ -288,7 +297,7 @@ fn search_zone_ends<F: PlaceableContact>(
     l_estimate: f64,
     b_estimate: Option<(f64, PairState)>,
     tol: f64,
-) -> Result<(Evaluation<F::Case>, StickEnd), Miss> {
+) -> Result<(Rc<Evaluation<F::Case>>, StickEnd), Miss> {
     let loading = run.loading;
     let (mut l, mut b, slip) = match b_estimate {
         Some((b, slip)) => (l_estimate, b, slip),
