@@ -84,8 +84,11 @@ struct Search<'a, F: PlaceableContact> {
     /// One record per residual evaluated by the root finders.
     trace: Vec<IterationRecord>,
     /// The last few meshes solved, by their placement (see [`Placement`]).
-    recent: Vec<(Placement, Rc<Evaluation<F::Case>>)>,
+    recent: Vec<(Placement, Shared<F::Case>)>,
 }
+
+/// An evaluation shared between the search and its kept evaluations.
+type Shared<C> = Rc<Evaluation<C>>;
 
 /// What an evaluation depends on within one search (the loading and history being fixed):
 /// the l corner and the bits of l, and the b corner, the bits of b and the slip direction.
@@ -116,11 +119,7 @@ impl<F: PlaceableContact> Search<'_, F> {
     /// Solves the adjusted mesh with l (and b, if given) placed; without b, the stick zone comes
     /// from the Boussinesq b iteration on the nodes. A placement solved a few evaluations ago
     /// is not solved again ([`Placement`]).
-    fn evaluate(
-        &mut self,
-        l: f64,
-        b: Option<(f64, usize, PairState)>,
-    ) -> Result<Rc<Evaluation<F::Case>>, ContactError> {
+    fn evaluate(&mut self, l: f64, b: Option<(f64, usize, PairState)>) -> Result<Shared<F::Case>, ContactError> {
         let placement: Placement =
             (self.l_corner, l.to_bits(), b.map(|(eta, corner, slip)| (eta.to_bits(), corner, slip)));
         if let Some((_, e)) = self.recent.iter().find(|(p, _)| *p == placement) {
@@ -297,7 +296,7 @@ fn search_zone_ends<F: PlaceableContact>(
     l_estimate: f64,
     b_estimate: Option<(f64, PairState)>,
     tol: f64,
-) -> Result<(Rc<Evaluation<F::Case>>, StickEnd), Miss> {
+) -> Result<(Shared<F::Case>, StickEnd), Miss> {
     let loading = run.loading;
     let (mut l, mut b, slip) = match b_estimate {
         Some((b, slip)) => (l_estimate, b, slip),
