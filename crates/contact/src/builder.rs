@@ -231,9 +231,9 @@ impl ProblemDescription {
     /// from `previous`'s.
     pub fn build_reusing(&self, previous: Option<&ContactProblem>) -> Result<BuiltProblem, ContactError> {
         self.check_values()?;
-        let mut mesh = self.mesh.clone();
+        let mut model = self.model(self.mesh.clone())?;
         if self.contacts.iter().any(|c| c.pairing == Pairing::NodeToNode) {
-            let model = self.model(mesh.clone())?;
+            let mut mesh = self.mesh.clone();
             for c in self.contacts.iter().filter(|c| c.pairing == Pairing::NodeToNode) {
                 let (pairs, slave, _) = self.pair(&model, c)?;
                 let targets = node_to_node_targets(&pairs, &slave).map_err(|e| match e {
@@ -250,8 +250,9 @@ impl ProblemDescription {
                     reason: format!("node-to-node pairing of contact \"{}\": {e}", c.name),
                 })?;
             }
+            // The same model as built on the moved mesh.
+            model.move_points(mesh.points)?;
         }
-        let model = self.model(mesh)?;
         let mut pairs = vec![];
         let mut rigid = vec![];
         let mut interfaces = vec![];

@@ -10,7 +10,9 @@
 //! slave nodes carry `−N_j λ_k n_k`. Rows are split into their free and constrained parts, so a
 //! prescribed displacement (the pulled edge) enters the gap as `w (B_N,c u_c)`.
 
-use contact2d_fem::{CholeskySolver, LinearSystem, Model, assemble};
+use std::sync::{Arc, OnceLock};
+
+use contact2d_fem::{CholeskySolver, ElementMatrices, LinearSystem, Model, assemble};
 
 use crate::error::ContactError;
 pub use crate::pair_rows::{PairRow, SparseRow, condensed_rows};
@@ -69,6 +71,9 @@ pub struct ContactProblem {
     /// Whether `solver` was factored bordered by the pair rows (false above
     /// [`crate::linear::SPARSE_FROM_PAIRS`] pairs: `K` alone, [`ContactProblem::is_bordered`]).
     bordered: bool,
+    /// This problem's element matrices, kept by the first [`ContactProblem::rebuild_moved`] for
+    /// the next (the moved meshes' unmoved cells reuse them).
+    element_matrices: OnceLock<Arc<ElementMatrices>>,
 }
 
 /// Where a problem's set-up time went.
@@ -144,12 +149,21 @@ impl ContactProblem {
     /// friction coefficients are kept (when the number of pairs is unchanged; else μ = 0); the
     /// slave side stays deformable or rigid as in `self`. `K` and the new pair rows are
     /// refactored together (numerically only, while the bordered sparsity pattern is the same).
+    /// The element matrices of the cells whose nodes did not move are `self`'s (kept from the
+    /// first call: [`ElementMatrices`]); the system is bit for bit that of assembling anew.
     ///
     /// # Errors
     /// From assembly or factorisation; [`ContactError::InvalidInput`] if the DOF numbering or
     /// the sparsity pattern differs.
     pub fn rebuild_moved(&self, model: Model, pairs: Vec<ContactPair>) -> Result<ContactProblem, ContactError> {
-        let system = assemble(&model)?;
+        let matrices = match self.element_matrices.get() {
+            Some(m) => Arc::clone(m),
+            None => {
+                let m = Arc::new(ElementMatrices::new(&self.model, &self.system)?);
+                Arc::clone(self.element_matrices.get_or_init(|| m))
+            }
+        };
+        let system = matrices.assemble_moved(&model)?;
         if system.dofs != self.system.dofs {
             return Err(ContactError::InvalidInput("rebuild_moved: the DOF numbering differs".into()));
         }
@@ -263,6 +277,7 @@ impl ContactProblem {
             slave,
             build_times: BuildTimes::default(),
             bordered: true,
+            element_matrices: OnceLock::new(),
         }
     }
 

@@ -18,6 +18,7 @@ use std::collections::HashMap;
 
 use contact2d_mesh::{CellKind, NodeId};
 use faer::sparse::Triplet;
+use nalgebra::DMatrix;
 use rayon::prelude::*;
 
 use crate::dof::{Component, Dof, DofKind, DofMap};
@@ -65,10 +66,11 @@ pub struct LinearSystem {
 /// conditioned as `K_ff` with Dirichlet conditions.
 pub const FLOATING_PIN_STIFFNESS: f64 = 1.0;
 
+/// The `K_fc` and `K_cc` entries, in the order they are scattered.
 #[derive(Default)]
-struct Triplets {
-    fc: Vec<Triplet<usize, usize, f64>>,
-    cc: Vec<Triplet<usize, usize, f64>>,
+pub(crate) struct Triplets {
+    pub(crate) fc: Vec<Triplet<usize, usize, f64>>,
+    pub(crate) cc: Vec<Triplet<usize, usize, f64>>,
 }
 
 impl Triplets {
@@ -86,14 +88,8 @@ impl Triplets {
 /// construction failure.
 pub fn assemble(model: &Model) -> Result<LinearSystem, FemError> {
     let dofs = model.dof_map()?;
-    let floating = if model.allow_floating {
-        floating_pieces(model, &dofs)
-    } else {
-        check_rigid_modes(model, &dofs)?;
-        vec![]
-    };
-    let cells: Vec<(usize, usize)> =
-        model.bodies.iter().enumerate().flat_map(|(b, body)| (0..body.num_cells()).map(move |i| (b, i))).collect();
+    let floating = floating_of(model, &dofs)?;
+    let cells = model_cells(model);
     let triplets = cells
         .par_chunks(256)
         .map(|chunk| {
@@ -106,9 +102,7 @@ pub fn assemble(model: &Model) -> Result<LinearSystem, FemError> {
         .try_reduce(Triplets::default, |a, b| Ok(a.append(b)))?;
     let (nf, nc) = (dofs.num_free(), dofs.num_constrained());
     // K_fc and K_cc from the cells with a constrained DOF; K_ff in place in its pattern.
-    let build = |n: usize, m: usize, t: &[Triplet<usize, usize, f64>]| {
-        Csc::try_new_from_triplets(n, m, t).map_err(|e| FemError::Factorization(format!("sparse assembly: {e:?}")))
-    };
+    let build = sparse_from_triplets;
     let graph = NodeGraph::of_model(model);
     let mut stiffness = assemble_free_free(model, &dofs, &graph)?;
     let stabilisation = stabilise(&mut stiffness, model, &dofs, &floating);
@@ -123,9 +117,35 @@ pub fn assemble(model: &Model) -> Result<LinearSystem, FemError> {
     })
 }
 
+/// Every cell of the model as `(body, cell)`, bodies in order: the order the entries of `K` are
+/// summed in.
+pub(crate) fn model_cells(model: &Model) -> Vec<(usize, usize)> {
+    model.bodies.iter().enumerate().flat_map(|(b, body)| (0..body.num_cells()).map(move |i| (b, i))).collect()
+}
+
+/// The floating pieces (with [`Model::allow_floating`]), or the rigid-mode check.
+pub(crate) fn floating_of(model: &Model, dofs: &DofMap) -> Result<Vec<FloatingPiece>, FemError> {
+    if model.allow_floating {
+        Ok(floating_pieces(model, dofs))
+    } else {
+        check_rigid_modes(model, dofs)?;
+        Ok(vec![])
+    }
+}
+
+/// An `n × m` sparse matrix from triplets (duplicates summed in their order).
+pub(crate) fn sparse_from_triplets(n: usize, m: usize, t: &[Triplet<usize, usize, f64>]) -> Result<Csc, FemError> {
+    Csc::try_new_from_triplets(n, m, t).map_err(|e| FemError::Factorization(format!("sparse assembly: {e:?}")))
+}
+
 /// Adds the pins of [`LinearSystem::stabilisation`] to the diagonal of `K_ff` (lower
 /// triangle, sorted rows: the diagonal is the first entry of its column).
-fn stabilise(stiffness: &mut Csc, model: &Model, dofs: &DofMap, floating: &[FloatingPiece]) -> Vec<(usize, f64)> {
+pub(crate) fn stabilise(
+    stiffness: &mut Csc,
+    model: &Model,
+    dofs: &DofMap,
+    floating: &[FloatingPiece],
+) -> Vec<(usize, f64)> {
     let mut springs = vec![];
     for piece in floating {
         let free: Vec<(usize, Dof)> = piece
@@ -199,16 +219,32 @@ fn pin_dofs(model: &Model, piece: &FloatingPiece, free: &[(usize, Dof)]) -> Vec<
 }
 
 fn scatter_cell(model: &Model, dofs: &DofMap, b: usize, i: usize, t: &mut Triplets) -> Result<(), FemError> {
-    let body = &model.bodies[b];
-    let kinds: Vec<DofKind> = body.cell_dofs(i).map(|d| dofs.kind(d)).collect();
+    let kinds = cell_kinds(model, dofs, b, i);
     if !kinds.iter().any(|k| matches!(k, DofKind::Constrained(_))) {
         return Ok(());
     }
+    let k = element_matrix(model, b, i)?;
+    scatter_constrained(&kinds, &k, t);
+    Ok(())
+}
+
+/// The DOF kinds of cell `i` of body `b`, in element order.
+pub(crate) fn cell_kinds(model: &Model, dofs: &DofMap, b: usize, i: usize) -> Vec<DofKind> {
+    model.bodies[b].cell_dofs(i).map(|d| dofs.kind(d)).collect()
+}
+
+/// The stiffness matrix of cell `i` of body `b` (its body's material, thickness, formulation).
+pub(crate) fn element_matrix(model: &Model, b: usize, i: usize) -> Result<DMatrix<f64>, FemError> {
+    let body = &model.bodies[b];
     let element = body.elements[i];
     let coords = body.cell_coords(&model.mesh, i);
     let rule = GaussRule::stiffness_rule(element);
-    let k = element_stiffness_with(element, &coords, &body.material, body.thickness, &rule, body.formulation)
-        .map_err(|source| FemError::Element { body: body.name.clone(), cell: body.cell_tags[i], source })?;
+    element_stiffness_with(element, &coords, &body.material, body.thickness, &rule, body.formulation)
+        .map_err(|source| FemError::Element { body: body.name.clone(), cell: body.cell_tags[i], source })
+}
+
+/// The `K_fc` and `K_cc` entries of a cell's matrix `k` as triplets, column by column.
+pub(crate) fn scatter_constrained(kinds: &[DofKind], k: &DMatrix<f64>, t: &mut Triplets) {
     for (col, kc) in kinds.iter().enumerate() {
         for (row, kr) in kinds.iter().enumerate() {
             let v = k[(row, col)];
@@ -219,7 +255,6 @@ fn scatter_cell(model: &Model, dofs: &DofMap, b: usize, i: usize, t: &mut Triple
             }
         }
     }
-    Ok(())
 }
 
 /// Consistent nodal forces of `loads` (edge loads on `model`'s mesh), in global DOF order: the

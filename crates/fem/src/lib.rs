@@ -6,6 +6,7 @@
 //!   → fill_reducing_permutation (AMD or nested dissection, chosen DOFs last; optional)
 //!   → CholeskySolver::factor / factor_with_permutation (symbolic analysis kept for refactoring)
 //!     or factor_with_constraints (K bordered by rows B: solves with K and C = B K⁻¹ Bᵀ)
+//!   → ElementMatrices::assemble_moved (a morphed copy: the unmoved cells' matrices reused)
 //!   → Solution (displacements, reactions) → strain_energy, nodal_stresses, stresses_along_curve
 //! ```
 //!
@@ -19,6 +20,7 @@ pub mod error;
 pub mod model;
 pub mod ordering;
 mod pattern;
+pub mod reassembly;
 pub mod recovery;
 pub mod rigid;
 pub mod saddle;
@@ -33,6 +35,7 @@ pub use dof::{Component, Dof, DofKind, DofMap};
 pub use error::FemError;
 pub use model::{Body, BodyId, Dirichlet, EdgeLoad, Model, element_type};
 pub use ordering::{Ordering, fill_reducing_permutation};
+pub use reassembly::ElementMatrices;
 pub use recovery::{CurveSample, StressRecovery, nodal_stresses, stresses_along_curve};
 pub use rigid::{FloatingPiece, check_rigid_modes, floating_pieces};
 pub use saddle::SaddlePointSolver;

@@ -217,6 +217,38 @@ impl Model {
         Ok(())
     }
 
+    /// The same model on moved nodes (mesh morphing, e.g. `contact2d_mesh::morph::move_nodes`:
+    /// the same cells): the mesh's points become `points`, and the cells with a moved node are
+    /// checked as [`Model::add_body`] checks every cell. That is the model built anew on the
+    /// moved mesh whenever no cell changes its orientation (which the morph refuses; a cell
+    /// that did would be refused here as inverted, where building anew would renumber it), for
+    /// a check of the moved cells only.
+    ///
+    /// # Errors
+    /// [`FemError::InvalidInput`] for a number of points other than the mesh's or a non-finite
+    /// point; [`FemError::InvertedElement`] (or [`FemError::Element`]) for a moved cell, the
+    /// model then unchanged.
+    pub fn move_points(&mut self, points: Vec<[f64; 2]>) -> Result<(), FemError> {
+        if points.len() != self.mesh.points.len() || points.iter().any(|p| !(p[0].is_finite() && p[1].is_finite())) {
+            return Err(FemError::InvalidInput(format!(
+                "move_points: {} finite points needed for the mesh's {} nodes",
+                points.len(),
+                self.mesh.points.len()
+            )));
+        }
+        let bits = |p: &[f64; 2]| [p[0].to_bits(), p[1].to_bits()];
+        let moved: Vec<bool> = points.iter().zip(&self.mesh.points).map(|(p, q)| bits(p) != bits(q)).collect();
+        let old = std::mem::replace(&mut self.mesh.points, points);
+        for body in &self.bodies {
+            let cells = (0..body.num_cells()).filter(|&i| body.cell_nodes(i).iter().any(|n| moved[n.0]));
+            if let Err(e) = check_cell_jacobians(&self.mesh, body, cells) {
+                self.mesh.points = old;
+                return Err(e);
+            }
+        }
+        Ok(())
+    }
+
     /// Prescribes `component = value` on every node of the physical group `group`.
     ///
     /// # Errors
@@ -309,7 +341,12 @@ fn check_formulation(body: &Body, formulation: Formulation) -> Result<(), FemErr
 }
 
 fn check_jacobians(mesh: &Mesh, body: &Body) -> Result<(), FemError> {
-    for i in 0..body.num_cells() {
+    check_cell_jacobians(mesh, body, 0..body.num_cells())
+}
+
+/// [`check_jacobians`] on the given cells of `body`.
+fn check_cell_jacobians(mesh: &Mesh, body: &Body, cells: impl Iterator<Item = usize>) -> Result<(), FemError> {
+    for i in cells {
         let element = body.elements[i];
         let coords = body.cell_coords(mesh, i);
         let rule = GaussRule::stiffness_rule(element);
@@ -348,5 +385,30 @@ mod tests {
         let id = tri3.add_body("domain", m, 1.0).unwrap();
         assert!(tri3.set_formulation(id, Formulation::BBar).is_err());
         assert_eq!(tri3.bodies[id.0].formulation, Formulation::Standard);
+    }
+
+    #[test]
+    fn moving_points_gives_the_model_built_on_the_moved_mesh() {
+        let m = Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap();
+        let build = |mesh: Mesh| {
+            let mut model = Model::new(mesh);
+            model.add_body("domain", m, 1.0).unwrap();
+            model
+        };
+        let mesh = rectangle(CellKind::Quad9, [0.0, 4.0], [0.0, 4.0], 4, 4);
+        let node = (0..mesh.points.len()).find(|&i| mesh.points[i] == [2.0, 0.0]).unwrap();
+        let mut moved = mesh.clone();
+        contact2d_mesh::morph::move_nodes(&mut moved, &[(NodeId(node), [2.3, 0.0])], 2).unwrap();
+        let mut model = build(mesh.clone());
+        model.move_points(moved.points.clone()).unwrap();
+        let anew = build(moved);
+        assert_eq!((&model.mesh, &model.bodies), (&anew.mesh, &anew.bodies));
+        // A point that inverts a cell is refused and leaves the model alone.
+        let mut inverted = mesh.points.clone();
+        inverted[node] = [3.3, 0.0];
+        let before = model.mesh.points.clone();
+        assert!(matches!(model.move_points(inverted), Err(FemError::InvertedElement { .. })));
+        assert_eq!(model.mesh.points, before);
+        assert!(matches!(model.move_points(vec![]), Err(FemError::InvalidInput(_))));
     }
 }

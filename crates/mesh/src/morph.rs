@@ -128,7 +128,19 @@ fn culprit(mesh: &Mesh, cell: &[NodeId], coords: &[[f64; 2]], targets: &[(NodeId
 /// Nodes sharing a 2D cell with each node, in ascending order.
 fn node_neighbours(mesh: &Mesh) -> Vec<Vec<usize>> {
     let len = mesh.points.len();
-    let mut nb: Vec<Vec<usize>> = vec![vec![]; len];
+    // Each list allocated once at its largest length (before the duplicates go): growing them
+    // was most of a morph's time on the flagship's meshes.
+    let mut capacity = vec![0usize; len];
+    for block in mesh.blocks.iter().filter(|b| b.kind.dim() == 2) {
+        for cell in block.cells() {
+            for a in cell {
+                if let Some(c) = capacity.get_mut(a.0) {
+                    *c += cell.len();
+                }
+            }
+        }
+    }
+    let mut nb: Vec<Vec<usize>> = capacity.into_iter().map(Vec::with_capacity).collect();
     for block in mesh.blocks.iter().filter(|b| b.kind.dim() == 2) {
         for cell in block.cells() {
             for a in cell {

@@ -21,6 +21,8 @@
 //! the zones given, so both conditions of the paper hold at their nodes: at b*, v − vh = v_s_τ
 //! and f = 0; at l*, f = 0 (or stick) and p = 0.
 
+use std::rc::Rc;
+
 use crate::{BoussinesqLoading, ContactProblem};
 use crate::{
     ContactError, ContactStatus, Interface, IterationRecord, PairState, StepStart, Zones, finish_zones,
@@ -37,6 +39,7 @@ use super::{
 };
 
 /// A mesh evaluation during the search.
+#[derive(Clone)]
 struct Evaluation<C> {
     case: C,
     interface: Interface,
@@ -80,7 +83,26 @@ struct Search<'a, F: PlaceableContact> {
     limit: usize,
     /// One record per residual evaluated by the root finders.
     trace: Vec<IterationRecord>,
+    /// The last few meshes solved, by their placement (see [`Placement`]).
+    recent: Vec<(Placement, Shared<F::Case>)>,
 }
+
+/// An evaluation shared between the search and its kept evaluations.
+type Shared<C> = Rc<Evaluation<C>>;
+
+/// What an evaluation depends on within one search (the loading and history being fixed):
+/// the l corner and the bits of l, and the b corner, the bits of b and the slip direction.
+///
+/// The root finders start where the previous one stopped (each returns a point it evaluated:
+/// the l root at the b just found, then the b root at that l), the polish starts at the
+/// alternating roots' answer and ends at its best iterate, and the step is finished there: each
+/// such point is asked for twice. An evaluation is a deterministic function of its placement,
+/// so the one kept is bit for bit the one a new mesh would give.
+type Placement = (usize, u64, Option<(u64, usize, PairState)>);
+
+/// Evaluations kept: the polish's best iterate is at most four evaluations back (its own, the
+/// two difference quotients', and the next iterate's that did not improve).
+const RECENT_EVALUATIONS: usize = 4;
 
 impl<F: PlaceableContact> Search<'_, F> {
     /// Logs an evaluation: its zones and the residual the root finder sees.
@@ -95,8 +117,24 @@ impl<F: PlaceableContact> Search<'_, F> {
     }
 
     /// Solves the adjusted mesh with l (and b, if given) placed; without b, the stick zone comes
-    /// from the Boussinesq b iteration on the nodes.
-    fn evaluate(&mut self, l: f64, b: Option<(f64, usize, PairState)>) -> Result<Evaluation<F::Case>, ContactError> {
+    /// from the Boussinesq b iteration on the nodes. A placement solved a few evaluations ago
+    /// is not solved again ([`Placement`]).
+    fn evaluate(&mut self, l: f64, b: Option<(f64, usize, PairState)>) -> Result<Shared<F::Case>, ContactError> {
+        let placement: Placement =
+            (self.l_corner, l.to_bits(), b.map(|(eta, corner, slip)| (eta.to_bits(), corner, slip)));
+        if let Some((_, e)) = self.recent.iter().find(|(p, _)| *p == placement) {
+            return Ok(Rc::clone(e));
+        }
+        let e = Rc::new(self.solve_mesh(l, b)?);
+        if self.recent.len() == RECENT_EVALUATIONS {
+            self.recent.remove(0);
+        }
+        self.recent.push((placement, Rc::clone(&e)));
+        Ok(e)
+    }
+
+    /// [`Search::evaluate`] on a new mesh.
+    fn solve_mesh(&mut self, l: f64, b: Option<(f64, usize, PairState)>) -> Result<Evaluation<F::Case>, ContactError> {
         self.evaluations += 1;
         if self.evaluations > self.limit {
             return Err(ContactError::InvalidInput(format!(
@@ -212,12 +250,16 @@ fn search_placed<F: PlaceableContact>(
         evaluations: 0,
         limit: search.max_evaluations,
         trace: vec![],
+        recent: vec![],
     };
     // A zone end beyond the range of the corner chosen for it moves the search to the corner
     // the root finder points at.
     for _attempt in 0..8 {
         match search_zone_ends(&mut run, base, l_estimate, b_estimate, search.tolerance) {
             Ok((last, stick_end)) => {
+                // The last evaluation, owned once the kept ones are let go.
+                run.recent.clear();
+                let last = Rc::try_unwrap(last).unwrap_or_else(|shared| (*shared).clone());
                 let residual_cone = last.b_pair.map_or(0.0, |k| last.cone(k).abs() / last.pressure_scale());
                 return finish((run.evaluations, clock.elapsed()), last, stick_end, residual_cone, run.trace)
                     .map_err(|e| (e, run.evaluations));
@@ -254,7 +296,7 @@ fn search_zone_ends<F: PlaceableContact>(
     l_estimate: f64,
     b_estimate: Option<(f64, PairState)>,
     tol: f64,
-) -> Result<(Evaluation<F::Case>, StickEnd), Miss> {
+) -> Result<(Shared<F::Case>, StickEnd), Miss> {
     let loading = run.loading;
     let (mut l, mut b, slip) = match b_estimate {
         Some((b, slip)) => (l_estimate, b, slip),

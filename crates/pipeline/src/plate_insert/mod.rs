@@ -184,14 +184,19 @@ impl PlateInsert {
             let targets = self.placement_targets(&mesh, &master)?;
             move_nodes(&mut mesh, &targets, 2)?;
         }
+        let (mut model, mut hole, mut insert_edge) = self.model(mesh.clone())?;
         if self.pairs == PairDiscretisation::NodeToNode {
-            // Pair once node-to-segment, slide the slave nodes to the paired points, pair again.
-            let (model, hole, insert) = self.model(mesh.clone())?;
-            let (pairs, slave) = self.pair(&model, &hole, &insert)?;
-            let targets = node_to_node_targets(&pairs, slave)?;
+            // Pair once node-to-segment, slide the slave nodes to the paired points, pair again
+            // (the model moved with them: the same model as built on the moved mesh).
+            let targets = {
+                let (pairs, slave) = self.pair(&model, &hole, &insert_edge)?;
+                node_to_node_targets(&pairs, slave)?
+            };
             move_nodes(&mut mesh, &targets, 2)?;
+            model.move_points(mesh.points)?;
+            hole = Contour::from_group(&model.mesh, "hole_edge")?;
+            insert_edge = Contour::from_group(&model.mesh, "insert_edge")?;
         }
-        let (model, hole, insert_edge) = self.model(mesh)?;
         let (pairs, _) = self.pair(&model, &hole, &insert_edge)?;
         let mut problem = if let Some(previous) = previous {
             previous.rebuild_moved(model, pairs)?
