@@ -65,6 +65,8 @@ enum Ordering {
     Amd,
     /// The library's nested dissection (`contact2d_fem::fill_reducing_permutation`).
     Nd,
+    /// The library's AMD on the node graph (`contact2d_fem::Ordering::NodeAmd`).
+    NodeAmd,
 }
 
 /// The cell type of the structured mesh.
@@ -160,8 +162,10 @@ fn main() -> Result<()> {
 
     let perm = match args.ordering {
         Ordering::Amd => None,
-        Ordering::Nd => {
-            let forward = fill_reducing_permutation(&model, &dofs, &k, FemOrdering::NestedDissection, &[])?;
+        Ordering::Nd | Ordering::NodeAmd => {
+            let library =
+                if args.ordering == Ordering::Nd { FemOrdering::NestedDissection } else { FemOrdering::NodeAmd };
+            let forward = fill_reducing_permutation(&model, &dofs, &k, library, &[])?;
             let mut inverse = vec![0; forward.len()];
             for (new, &old) in forward.iter().enumerate() {
                 inverse[old] = new;

@@ -2,6 +2,8 @@
 //!
 //! ```text
 //! Amd:               faer's approximate minimum degree on the DOF graph of K_ff
+//! NodeAmd:           the same on the node graph (nodes with a free DOF, ~ if they share a cell),
+//!                    each node's DOFs then together: a quarter of the entries for AMD to read
 //! NestedDissection:  geometric nested dissection of the node graph (nodes ~ if they share a cell):
 //!   dissect(V): |V| ≤ 128 → minimum degree on V's graph (the surrounding separators counted)
 //!               else for both axes: split V at the median coordinate into A | B, separator S =
@@ -37,6 +39,9 @@ pub enum Ordering {
     /// Geometric nested dissection on the node graph (needs the node coordinates): 7–12 % less
     /// fill and 20 % fewer flops than AMD on large structured meshes.
     NestedDissection,
+    /// Approximate minimum degree (faer's) on the node graph, both DOFs of a node together: the
+    /// graph AMD reads has a quarter of the DOF graph's entries (docs/benchmarks.md, "10⁶ DOFs").
+    NodeAmd,
 }
 
 /// Node sets of at most this many nodes are ordered by minimum degree instead of dissected.
@@ -122,7 +127,7 @@ pub fn fill_reducing_permutation(
     }
     match ordering {
         Ordering::Amd => amd_with_last(stiffness, last),
-        Ordering::NestedDissection => {
+        Ordering::NestedDissection | Ordering::NodeAmd => {
             let mut tail: Vec<usize> = vec![];
             let mut seen = HashSet::new();
             for &i in last {
@@ -131,9 +136,47 @@ pub fn fill_reducing_permutation(
                     tail.push(node);
                 }
             }
-            Ok(nested_dissection(model, dofs, &tail))
+            if ordering == Ordering::NodeAmd {
+                node_amd(model, dofs, &tail)
+            } else {
+                Ok(nested_dissection(model, dofs, &tail))
+            }
         }
     }
+}
+
+/// faer's AMD on the graph of the nodes with a free DOF (the nodes `tail` left out and ordered
+/// last), each node's free DOFs together.
+fn node_amd(model: &Model, dofs: &DofMap, tail: &[usize]) -> Result<Vec<usize>, FemError> {
+    let graph = NodeGraph::of_model(model);
+    let num_nodes = model.mesh.num_nodes();
+    let mut index = vec![usize::MAX; num_nodes];
+    let mut nodes = Vec::new();
+    let in_tail: HashSet<usize> = tail.iter().copied().collect();
+    for (n, slot) in index.iter_mut().enumerate() {
+        let free = free_index(dofs, 2 * n).is_some() || free_index(dofs, 2 * n + 1).is_some();
+        if free && !in_tail.contains(&n) {
+            *slot = nodes.len();
+            nodes.push(n);
+        }
+    }
+    let mut col_ptr = Vec::with_capacity(nodes.len() + 1);
+    col_ptr.push(0);
+    let mut row_idx = Vec::with_capacity(graph.adj.len());
+    for &n in &nodes {
+        row_idx.extend(graph.neighbours(n).iter().map(|&m| index[m]).filter(|&i| i != usize::MAX));
+        col_ptr.push(row_idx.len());
+    }
+    let m = nodes.len();
+    let pattern = SymbolicSparseColMat::new_checked(m, m, col_ptr, None, row_idx);
+    let (mut fwd, mut inv) = (vec![0usize; m], vec![0usize; m]);
+    let mut mem = MemBuffer::try_new(amd::order_maybe_unsorted_scratch::<usize>(m, pattern.compute_nnz()))
+        .map_err(|e| FemError::Factorization(format!("AMD workspace: {e:?}")))?;
+    amd::order_maybe_unsorted(&mut fwd, &mut inv, pattern.as_ref(), Default::default(), MemStack::new(&mut mem))
+        .map_err(|e| FemError::Factorization(format!("AMD: {e:?}")))?;
+    let mut order: Vec<usize> = fwd.iter().map(|&i| nodes[i]).collect();
+    order.extend_from_slice(tail);
+    Ok(dofs_of_nodes(&order, dofs))
 }
 
 /// Free index of global DOF `g`, if it is free.

@@ -161,7 +161,7 @@ impl CholeskySolver {
     ) -> Result<CholeskySolver, FemError> {
         match ordering {
             Ordering::Amd => CholeskySolver::factor(&system.stiffness),
-            Ordering::NestedDissection => {
+            Ordering::NestedDissection | Ordering::NodeAmd => {
                 let forward = fill_reducing_permutation(model, &system.dofs, &system.stiffness, ordering, &[])?;
                 CholeskySolver::factor_with_permutation(&system.stiffness, &forward)
             }
