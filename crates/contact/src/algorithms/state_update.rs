@@ -165,7 +165,24 @@ impl StateUpdate<'_> {
             accurate_now = accurate(&z, &self.residual(&new, &z, b));
         }
         base.last_updated = Some(key.0.clone());
-        accurate_now.then_some(z)
+        if !accurate_now {
+            return None;
+        }
+        // The trivial rows hold exactly, as in a fresh solve: a free pair carries no force and
+        // a slipping pair's τ is f λ (their right-hand sides are zero).
+        for k in 0..m {
+            for c in 0..b.ncols() {
+                if new.row_kind(k) == RowKind::Identity {
+                    z[(k, c)] = 0.0;
+                }
+                match new.row_kind(m + k) {
+                    RowKind::Identity => z[(m + k, c)] = 0.0,
+                    RowKind::Slip(_, f) => z[(m + k, c)] = f * z[(k, c)],
+                    RowKind::Gap(_) | RowKind::Stick(_) => {}
+                }
+            }
+        }
+        Some(z)
     }
 
     /// Computes and keeps `F_b⁻¹ e_i` for the rows `changed` not kept yet, and returns where
