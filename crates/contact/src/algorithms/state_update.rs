@@ -112,7 +112,9 @@ impl StateUpdate<'_> {
         // A state solved twice in a row (a load step starting from the last one's answer) is
         // worth its own factor: the next solves of it are then reuses.
         let repeated = base.last_updated.as_ref() == Some(&key.0);
-        if r < self.from || !same_matrix_family || repeated {
+        // A singular base (kept by the cache even when its state was refused) updates nothing.
+        let regular = (0..r).all(|i| base.lu[(i, i)] != 0.0 && base.lu[(i, i)].is_finite());
+        if r < self.from || !same_matrix_family || repeated || !regular {
             return None;
         }
         let base_state = base.key.0.clone();
@@ -154,7 +156,10 @@ impl StateUpdate<'_> {
         };
         let accurate = |z: &Mat<f64>, residual: &Mat<f64>| {
             let inf = |v: faer::ColRef<'_, f64>| v.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-            (0..b.ncols()).all(|c| inf(residual.col(c)) <= BACKWARD_ERROR * (norm * inf(z.col(c)) + inf(b.col(c))))
+            // (`max` passes over NaN, so finiteness is its own test.)
+            z.col_iter().all(|col| col.iter().all(|v| v.is_finite()))
+                && (0..b.ncols())
+                    .all(|c| inf(residual.col(c)) <= BACKWARD_ERROR * (norm * inf(z.col(c)) + inf(b.col(c))))
         };
         let mut z = woodbury(b);
         let residual = self.residual(&new, &z, b);
