@@ -168,12 +168,7 @@ fn node_amd(model: &Model, dofs: &DofMap, tail: &[usize]) -> Result<Vec<usize>, 
         col_ptr.push(row_idx.len());
     }
     let m = nodes.len();
-    let pattern = SymbolicSparseColMat::new_checked(m, m, col_ptr, None, row_idx);
-    let (mut fwd, mut inv) = (vec![0usize; m], vec![0usize; m]);
-    let mut mem = MemBuffer::try_new(amd::order_maybe_unsorted_scratch::<usize>(m, pattern.compute_nnz()))
-        .map_err(|e| FemError::Factorization(format!("AMD workspace: {e:?}")))?;
-    amd::order_maybe_unsorted(&mut fwd, &mut inv, pattern.as_ref(), Default::default(), MemStack::new(&mut mem))
-        .map_err(|e| FemError::Factorization(format!("AMD: {e:?}")))?;
+    let fwd = amd_order(m, col_ptr, row_idx)?;
     let mut order: Vec<usize> = fwd.iter().map(|&i| nodes[i]).collect();
     order.extend_from_slice(tail);
     Ok(dofs_of_nodes(&order, dofs))
@@ -349,12 +344,7 @@ fn amd_with_last(stiffness: &Csc, last: &[usize]) -> Result<Vec<usize>, FemError
         col_ptr.push(row_idx.len());
     }
     let m = rest.len();
-    let pattern = SymbolicSparseColMat::new_checked(m, m, col_ptr, None, row_idx);
-    let (mut fwd, mut inv) = (vec![0usize; m], vec![0usize; m]);
-    let mut mem = MemBuffer::try_new(amd::order_maybe_unsorted_scratch::<usize>(m, pattern.compute_nnz()))
-        .map_err(|e| FemError::Factorization(format!("AMD workspace: {e:?}")))?;
-    amd::order_maybe_unsorted(&mut fwd, &mut inv, pattern.as_ref(), Default::default(), MemStack::new(&mut mem))
-        .map_err(|e| FemError::Factorization(format!("AMD: {e:?}")))?;
+    let fwd = amd_order(m, col_ptr, row_idx)?;
     let mut seen = vec![false; n];
     let mut forward: Vec<usize> = fwd.iter().map(|&i| rest[i]).collect();
     for &i in last {
@@ -363,6 +353,17 @@ fn amd_with_last(stiffness: &Csc, last: &[usize]) -> Result<Vec<usize>, FemError
         }
     }
     Ok(forward)
+}
+
+/// faer's AMD order (`forward[new] = old`) of the `m × m` pattern given by columns.
+fn amd_order(m: usize, col_ptr: Vec<usize>, row_idx: Vec<usize>) -> Result<Vec<usize>, FemError> {
+    let pattern = SymbolicSparseColMat::new_checked(m, m, col_ptr, None, row_idx);
+    let (mut fwd, mut inv) = (vec![0usize; m], vec![0usize; m]);
+    let mut mem = MemBuffer::try_new(amd::order_maybe_unsorted_scratch::<usize>(m, pattern.compute_nnz()))
+        .map_err(|e| FemError::Factorization(format!("AMD workspace: {e:?}")))?;
+    amd::order_maybe_unsorted(&mut fwd, &mut inv, pattern.as_ref(), Default::default(), MemStack::new(&mut mem))
+        .map_err(|e| FemError::Factorization(format!("AMD: {e:?}")))?;
+    Ok(fwd)
 }
 
 /// Whether `forward` is a permutation of `0..n`.

@@ -27,14 +27,11 @@
 //! with the fixed [`contact2d_fem::parallelism`]: the same solution up to round-off, at the
 //! cost of the contact zone only (a long interface with a short contact zone pays for its zone).
 
-use contact2d_fem::parallelism;
 use faer::Mat;
-use faer::dyn_stack::{MemBuffer, MemStack};
-use faer::linalg::lu::partial_pivoting::{factor, solve};
 use nalgebra::DMatrix;
 
 use crate::algorithms::state_update::{StateUpdate, UPDATE_FROM};
-use crate::factor_cache::StateFactor;
+use crate::factor_cache::{DenseLu, StateFactor};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::solution::{PairState, StepStart};
@@ -225,7 +222,7 @@ pub(crate) fn solve_regularised_state_equations(
     let compliance_bits = stick_compliance.iter().map(|e| e.to_bits()).collect();
     let key = (state.to_vec(), problem.friction.clone(), problem.tangential.clone(), frictional, compliance_bits);
     let mut cache = interface.last_state.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-    let hit = cache.as_ref().is_some_and(|c| c.key == key && c.lu.nrows() == r);
+    let hit = cache.as_ref().is_some_and(|c| c.key == key && c.lu.size() == r);
     if !hit && let Some(base) = cache.as_mut() {
         let system = StateUpdate { problem, interface, frictional, stick_compliance, from: UPDATE_FROM };
         if let Some(z) = system.solve(base, &key, &layout, &layout.full_rhs(problem, interface, start)) {
@@ -280,24 +277,15 @@ pub(crate) fn solve_regularised_state_equations(
             }
         }
     }
-    let par = parallelism();
-    let mut memory = MemBuffer::new(
-        factor::lu_in_place_scratch::<usize, f64>(r, r, par, Default::default())
-            .or(solve::solve_in_place_scratch::<usize, f64>(r, 2, par)),
-    );
-    let stack = MemStack::new(&mut memory);
     if !hit {
-        let (mut forward, mut inverse) = (vec![0usize; r], vec![0usize; r]);
-        factor::lu_in_place(a.as_mut(), &mut forward, &mut inverse, par, stack, Default::default());
-        *cache = Some(StateFactor::new(key, a, forward, inverse));
+        let carried = cache.as_ref().and_then(|c| c.compliance_row_norm);
+        *cache = Some(StateFactor::new(key, DenseLu::factor(a), carried));
     }
     let factored = cache.as_ref()?;
-    if (0..r).any(|i| factored.lu[(i, i)] == 0.0) {
+    if (0..r).any(|i| factored.lu.pivot(i) == 0.0) {
         return None;
     }
-    // The arrays are the permutation and its inverse written by `lu_in_place`.
-    let perm = faer::perm::PermRef::new_checked(&factored.forward, &factored.inverse, r);
-    solve::solve_in_place(factored.lu.as_ref(), factored.lu.as_ref(), perm, b.as_mut(), par, stack);
+    factored.lu.solve_in_place(&mut b);
     drop(cache);
     for (jc, &j) in contact.iter().enumerate() {
         for c in 0..2 {

@@ -28,14 +28,12 @@
 //! solution is the fresh LU's up to round-off (both backward stable to ~1e-16 of `‖F‖ ‖z‖`).
 
 use contact2d_fem::parallelism;
-use faer::dyn_stack::{MemBuffer, MemStack};
-use faer::linalg::lu::partial_pivoting::{factor, solve};
 use faer::linalg::matmul::matmul;
 use faer::{Accum, Mat};
 use nalgebra::DMatrix;
 
 use crate::algorithms::state_equations::{Layout, Tangential};
-use crate::factor_cache::{StateFactor, StateKey};
+use crate::factor_cache::{DenseLu, StateFactor, StateKey};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::solution::PairState;
@@ -106,15 +104,14 @@ impl StateUpdate<'_> {
         layout: &Layout,
         b: &Mat<f64>,
     ) -> Option<Mat<f64>> {
-        let r = base.lu.nrows();
+        let r = base.lu.size();
         let same_matrix_family =
             base.key.1 == key.1 && base.key.2 == key.2 && base.key.3 == key.3 && base.key.4 == key.4;
         // A state solved twice in a row (a load step starting from the last one's answer) is
         // worth its own factor: the next solves of it are then reuses.
         let repeated = base.last_updated.as_ref() == Some(&key.0);
         // A singular base (kept by the cache even when its state was refused) updates nothing.
-        let regular = (0..r).all(|i| base.lu[(i, i)] != 0.0 && base.lu[(i, i)].is_finite());
-        if r < self.from || !same_matrix_family || repeated || !regular {
+        if r < self.from || !same_matrix_family || repeated || !base.lu.is_regular() {
             return None;
         }
         let base_state = base.key.0.clone();
@@ -133,7 +130,8 @@ impl StateUpdate<'_> {
             return None;
         }
         let kept = self.keep_columns(base, &old, &changed)?;
-        let norm = *base.row_norm.get_or_insert_with(|| self.row_norm());
+        let compliance = *base.compliance_row_norm.get_or_insert_with(|| self.compliance_row_norm());
+        let norm = self.row_norm(compliance);
         let p = changed.len();
         let columns = Mat::<f64>::from_fn(2 * m, p, |i, j| base.update_columns[kept[j]].1[i]);
         let mut d = Mat::<f64>::zeros(p, 2 * m);
@@ -144,7 +142,10 @@ impl StateUpdate<'_> {
         let par = parallelism();
         let mut s = Mat::<f64>::identity(p, p);
         matmul(s.as_mut(), Accum::Add, d.as_ref(), columns.as_ref(), 1.0, par);
-        let capacitance = DenseLu::of(s)?;
+        let capacitance = DenseLu::factor(s);
+        if !capacitance.is_regular() {
+            return None;
+        }
         let woodbury = |y: &Mat<f64>| -> Mat<f64> {
             let mut z = y.clone();
             self.apply_base_inverse(base, &old, &mut z);
@@ -196,7 +197,7 @@ impl StateUpdate<'_> {
     fn keep_columns(&self, base: &mut StateFactor, old: &FullSystem<'_>, changed: &[usize]) -> Option<Vec<usize>> {
         let missing: Vec<usize> =
             changed.iter().copied().filter(|i| !base.update_columns.iter().any(|(row, _)| row == i)).collect();
-        if (base.update_columns.len() + missing.len()) * MAX_KEPT_FRACTION > base.lu.nrows() {
+        if (base.update_columns.len() + missing.len()) * MAX_KEPT_FRACTION > base.lu.size() {
             return None;
         }
         let n = 2 * old.state.len();
@@ -268,10 +269,7 @@ impl StateUpdate<'_> {
                 }
             }
         }
-        let par = parallelism();
-        let mut memory = MemBuffer::new(solve::solve_in_place_scratch::<usize, f64>(r, k, par));
-        let perm = faer::perm::PermRef::new_checked(&base.forward, &base.inverse, r);
-        solve::solve_in_place(base.lu.as_ref(), base.lu.as_ref(), perm, o.as_mut(), par, MemStack::new(&mut memory));
+        base.lu.solve_in_place(&mut o);
         let mut position = vec![usize::MAX; m];
         for (jc, &j) in layout.contact.iter().enumerate() {
             position[j] = jc;
@@ -321,58 +319,35 @@ impl StateUpdate<'_> {
         })
     }
 
-    /// A bound of `‖F‖∞` over every state: the largest absolute row sum of the gap and slip
-    /// rows (with the largest regularising compliance), and `1 + max μ` of the slip rows.
-    fn row_norm(&self) -> f64 {
+    /// The largest absolute row sums of the interface's compliance rows: `[C_NN]`,
+    /// `[C_NN C_NT]` and `[C_TN C_TT]` (the last two zero without tangential compliances).
+    fn compliance_row_norm(&self) -> [f64; 3] {
         let it = self.interface;
         let m = it.c_nn.nrows();
-        let mut normal = vec![0.0f64; m];
-        let mut tangential = vec![0.0f64; m];
+        let tangents = it.c_tt.nrows() == m && it.c_nt.nrows() == m && it.c_tn.nrows() == m;
+        let (mut nn, mut nt, mut t) = (vec![0.0f64; m], vec![0.0f64; m], vec![0.0f64; m]);
         for j in 0..m {
             for i in 0..m {
-                normal[i] += it.c_nn[(i, j)].abs();
-                if self.frictional {
-                    normal[i] += it.c_nt[(i, j)].abs();
-                    tangential[i] += it.c_tn[(i, j)].abs() + it.c_tt[(i, j)].abs();
+                nn[i] += it.c_nn[(i, j)].abs();
+                if tangents {
+                    nt[i] += it.c_nt[(i, j)].abs();
+                    t[i] += it.c_tn[(i, j)].abs() + it.c_tt[(i, j)].abs();
                 }
             }
         }
+        let max = |v: &[f64]| v.iter().fold(0.0f64, |a, s| a.max(*s));
+        let with_nt: Vec<f64> = nn.iter().zip(&nt).map(|(a, b)| a + b).collect();
+        [max(&nn), max(&with_nt), max(&t)]
+    }
+
+    /// A bound of `‖F‖∞` over every state from the compliance rows' sums: the gap rows (with
+    /// `C_NT` when frictional), the slip rows with the largest regularising compliance, and
+    /// `1 + max μ` of the slipping pairs' rows.
+    fn row_norm(&self, [nn, with_nt, slip]: [f64; 3]) -> f64 {
         let e = self.stick_compliance.iter().fold(0.0f64, |a, e| a.max(e.abs()));
         let mu = self.problem.friction.iter().fold(0.0f64, |a, f| a.max(f.abs()));
-        normal.iter().chain(&tangential).fold(1.0 + mu, |a, s| a.max(s + e))
-    }
-}
-
-/// A small dense LU (partial pivoting), for the capacitance matrix `S`.
-struct DenseLu {
-    lu: Mat<f64>,
-    forward: Vec<usize>,
-    inverse: Vec<usize>,
-}
-
-impl DenseLu {
-    /// `None` if `a` is singular (a zero pivot).
-    fn of(mut a: Mat<f64>) -> Option<DenseLu> {
-        let n = a.nrows();
-        let par = parallelism();
-        let mut memory = MemBuffer::new(factor::lu_in_place_scratch::<usize, f64>(n, n, par, Default::default()));
-        let (mut forward, mut inverse) = (vec![0usize; n], vec![0usize; n]);
-        factor::lu_in_place(
-            a.as_mut(),
-            &mut forward,
-            &mut inverse,
-            par,
-            MemStack::new(&mut memory),
-            Default::default(),
-        );
-        (0..n).all(|i| a[(i, i)] != 0.0 && a[(i, i)].is_finite()).then_some(DenseLu { lu: a, forward, inverse })
-    }
-
-    fn solve_in_place(&self, b: &mut Mat<f64>) {
-        let (n, par) = (self.lu.nrows(), parallelism());
-        let mut memory = MemBuffer::new(solve::solve_in_place_scratch::<usize, f64>(n, b.ncols(), par));
-        let perm = faer::perm::PermRef::new_checked(&self.forward, &self.inverse, n);
-        solve::solve_in_place(self.lu.as_ref(), self.lu.as_ref(), perm, b.as_mut(), par, MemStack::new(&mut memory));
+        let rows = if self.frictional { with_nt.max(slip + e) } else { nn };
+        rows.max(1.0 + mu)
     }
 }
 
