@@ -100,16 +100,30 @@ pub fn assemble(model: &Model) -> Result<LinearSystem, FemError> {
             Ok::<_, FemError>(t)
         })
         .try_reduce(Triplets::default, |a, b| Ok(a.append(b)))?;
-    let (nf, nc) = (dofs.num_free(), dofs.num_constrained());
     // K_fc and K_cc from the cells with a constrained DOF; K_ff in place in its pattern.
-    let build = sparse_from_triplets;
     let graph = NodeGraph::of_model(model);
-    let mut stiffness = assemble_free_free(model, &dofs, &graph)?;
+    let stiffness = assemble_free_free(model, &dofs, &graph)?;
+    system_of(model, dofs, floating, stiffness, &triplets)
+}
+
+/// The linear system of `model` from its assembled `K_ff` and the constrained blocks' triplets:
+/// `K_ff` stabilised for the floating bodies, `K_fc` and `K_cc` built, the edge loads assembled.
+///
+/// # Errors
+/// A sparse construction failure or an invalid edge load.
+pub(crate) fn system_of(
+    model: &Model,
+    dofs: DofMap,
+    floating: Vec<FloatingPiece>,
+    mut stiffness: Csc,
+    triplets: &Triplets,
+) -> Result<LinearSystem, FemError> {
+    let (nf, nc) = (dofs.num_free(), dofs.num_constrained());
     let stabilisation = stabilise(&mut stiffness, model, &dofs, &floating);
     Ok(LinearSystem {
         stiffness,
-        coupling: build(nf, nc, &triplets.fc)?,
-        constrained: build(nc, nc, &triplets.cc)?,
+        coupling: sparse_from_triplets(nf, nc, &triplets.fc)?,
+        constrained: sparse_from_triplets(nc, nc, &triplets.cc)?,
         load: assemble_edge_loads(model, &model.edge_loads)?,
         dofs,
         floating,

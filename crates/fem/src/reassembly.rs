@@ -21,8 +21,8 @@ use nalgebra::DMatrix;
 use rayon::prelude::*;
 
 use crate::assembly::{
-    LinearSystem, Triplets, assemble, assemble_edge_loads, cell_kinds, element_matrix, floating_of, model_cells,
-    scatter_constrained, sparse_from_triplets, stabilise,
+    LinearSystem, Triplets, assemble, cell_kinds, element_matrix, floating_of, model_cells, scatter_constrained,
+    system_of,
 };
 use crate::dof::{DofKind, DofMap};
 use crate::error::FemError;
@@ -130,18 +130,7 @@ impl ElementMatrices {
                 scatter_constrained(&base.kinds, k, &mut triplets);
             }
         }
-        let (nf, nc) = (dofs.num_free(), dofs.num_constrained());
-        let mut stiffness = Csc::new(self.pattern.clone(), values);
-        let stabilisation = stabilise(&mut stiffness, model, &dofs, &floating);
-        Ok(LinearSystem {
-            stiffness,
-            coupling: sparse_from_triplets(nf, nc, &triplets.fc)?,
-            constrained: sparse_from_triplets(nc, nc, &triplets.cc)?,
-            load: assemble_edge_loads(model, &model.edge_loads)?,
-            dofs,
-            floating,
-            stabilisation,
-        })
+        system_of(model, dofs, floating, Csc::new(self.pattern.clone(), values), &triplets)
     }
 
     /// How many of `model`'s cells [`ElementMatrices::assemble_moved`] computes anew (their
