@@ -13,8 +13,9 @@
 //! Averaging is per body: a node is never averaged across a material interface. `D B` is the
 //! body's formulation: with B-bar, `σ = D B̄ u` (the projected dilatation, as in the stiffness).
 
-use contact2d_element::{GaussRule, gauss_to_node_extrapolation, stress_at_with};
+use contact2d_element::{ElementType, GaussRule, gauss_to_node_extrapolation, stress_at_with};
 use contact2d_mesh::{Contour, NodeId};
+use nalgebra::DMatrix;
 
 use crate::error::FemError;
 use crate::model::{BodyId, Model};
@@ -39,9 +40,23 @@ pub fn nodal_stresses(
     u: &[f64],
     recovery: StressRecovery,
 ) -> Result<Vec<Option<[f64; 3]>>, FemError> {
+    nodal_stresses_of_cells(model, body, u, recovery, |_| true)
+}
+
+/// [`nodal_stresses`] from the cells `i` of `body` where `keep(i)`: at a node all of whose
+/// cells are kept, the same values bit for bit (the same cells, summed in the same order).
+fn nodal_stresses_of_cells(
+    model: &Model,
+    body: BodyId,
+    u: &[f64],
+    recovery: StressRecovery,
+    keep: impl Fn(usize) -> bool,
+) -> Result<Vec<Option<[f64; 3]>>, FemError> {
     let b = &model.bodies[body.0];
     let mut sum = vec![[0.0; 4]; model.mesh.num_nodes()];
-    for i in 0..b.num_cells() {
+    // The Gauss-to-node matrix of each element type met (it depends on the type alone).
+    let mut extrapolation: Vec<(ElementType, DMatrix<f64>)> = Vec::new();
+    for i in (0..b.num_cells()).filter(|&i| keep(i)) {
         let element = b.elements[i];
         let coords = b.cell_coords(&model.mesh, i);
         let ue: Vec<f64> = b.cell_dofs(i).map(|d| u[d.0]).collect();
@@ -61,7 +76,13 @@ pub fn nodal_stresses(
                     .map(|xi| stress_at_with(element, &coords, &b.material, &ue, *xi, b.formulation))
                     .collect::<Result<_, _>>()
                     .map_err(err)?;
-                let e = gauss_to_node_extrapolation(element, &rule).map_err(err)?;
+                let e = match extrapolation.iter().position(|(t, _)| *t == element) {
+                    Some(k) => &extrapolation[k].1,
+                    None => {
+                        extrapolation.push((element, gauss_to_node_extrapolation(element, &rule).map_err(err)?));
+                        &extrapolation[extrapolation.len() - 1].1
+                    }
+                };
                 (0..element.num_nodes())
                     .map(|a| {
                         let mut s = [0.0; 3];
@@ -121,7 +142,12 @@ pub fn stresses_along_curve(
     u: &[f64],
     recovery: StressRecovery,
 ) -> Result<Vec<CurveSample>, FemError> {
-    let nodal = nodal_stresses(model, body, u, recovery)?;
+    // Only the cells that touch the curve: its nodes' averages are the whole body's.
+    let mut on_curve = vec![false; model.mesh.num_nodes()];
+    contour.nodes.iter().for_each(|n| on_curve[n.0] = true);
+    let b = &model.bodies[body.0];
+    let touches = |i: usize| b.cell_nodes(i).iter().any(|n| on_curve[n.0]);
+    let nodal = nodal_stresses_of_cells(model, body, u, recovery, touches)?;
     contour
         .nodes
         .iter()
