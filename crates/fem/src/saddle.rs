@@ -86,10 +86,10 @@ impl SaddlePointSolver {
     pub fn analyse(k: &Csc, rows: &[&[(usize, f64)]]) -> Result<SaddlePointSolver, FemError> {
         crate::solve::check_square(k)?;
         let (n, r) = (k.nrows(), rows.len());
-        let (matrix, row_entries, row_diagonal) = saddle_lower(k, rows)?;
+        let (lower, row_entries, row_diagonal) = saddle_lower(k, rows)?;
         // AMD on the whole pattern: it knows that each row joins the DOFs of a pair (AMD on K
         // alone, the rows then inserted, gave 5 times the fill on the long-interface meshes).
-        let amd = fill_reducing_permutation_of_pattern(&matrix)?;
+        let amd = fill_reducing_permutation_of_pattern(&lower)?;
         // Each row just after the last DOF of its support (a row with no support first).
         let mut position = vec![0usize; n + r];
         for (p, &i) in amd.iter().enumerate() {
@@ -106,7 +106,8 @@ impl SaddlePointSolver {
         for (new, &old) in forward.iter().enumerate() {
             inverse[old] = new;
         }
-        let (matrix, moved) = permute_lower(&matrix, &inverse);
+        let (matrix, moved) = permute_lower(&lower, &inverse);
+        drop(lower);
         let row_entries =
             row_entries.into_iter().map(|row| row.into_iter().map(|(p, v)| (moved[p], v)).collect()).collect();
         let row_diagonal = row_diagonal.into_iter().map(|p| moved[p]).collect();
@@ -114,12 +115,13 @@ impl SaddlePointSolver {
             CholeskySymbolicParams { supernodal_flop_ratio_threshold: SupernodalThreshold::AUTO, ..Default::default() };
         // faer's analysis without an ordering reads the upper triangle whatever side it is told.
         let upper = matrix
-            .as_ref()
+            .symbolic()
             .transpose()
             .to_col_major()
             .map_err(|e| FemError::Factorization(format!("symbolic analysis: {e:?}")))?;
-        let symbolic = factorize_symbolic_cholesky(upper.symbolic(), Side::Upper, SymmetricOrdering::Identity, params)
+        let symbolic = factorize_symbolic_cholesky(upper.as_ref(), Side::Upper, SymmetricOrdering::Identity, params)
             .map_err(|e| FemError::Factorization(format!("symbolic analysis: {e:?}")))?;
+        drop(upper);
         let par = parallelism();
         let scratch = symbolic
             .factorize_numeric_ldlt_scratch::<f64>(par, Default::default())
