@@ -33,6 +33,7 @@
 //! GMRES's residual weighs both alike.
 
 use contact2d_fem::{FemError, SaddlePointSolver};
+use rayon::prelude::*;
 
 use crate::problem::ContactProblem;
 use crate::solution::{PairState, StepStart};
@@ -356,15 +357,28 @@ impl Operator<'_> {
         let p = self.problem;
         let (n, m, s) = (p.system.dofs.num_free(), self.state.len(), a(self.scale));
         let k = p.system.stiffness.as_ref();
-        let mut y = vec![0.0; x.len()];
-        for j in 0..n {
-            for (i, &v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
-                let v = a(v);
-                y[i] += v * x[j];
-                if i != j {
-                    y[j] += v * x[i];
+        // `K x` from the lower triangle, by blocks of columns in parallel, the blocks' parts
+        // summed in block order: the same bits on any number of threads.
+        let parts: Vec<Vec<f64>> = column_blocks(k.col_ptr(), PRODUCT_BLOCKS)
+            .into_par_iter()
+            .map(|(first, end)| {
+                // Block [first, end) reaches rows first.. only (the lower triangle).
+                let mut part = vec![0.0; n - first];
+                for j in first..end {
+                    for (i, &v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
+                        let v = a(v);
+                        part[i - first] += v * x[j];
+                        if i != j {
+                            part[j - first] += v * x[i];
+                        }
+                    }
                 }
-            }
+                part
+            })
+            .collect();
+        let mut y = vec![0.0; x.len()];
+        for (part, (first, _)) in parts.iter().zip(column_blocks(k.col_ptr(), PRODUCT_BLOCKS)) {
+            y[first..n].iter_mut().zip(part).for_each(|(y, p)| *y += p);
         }
         let dot = |row: &crate::problem::PairRow| row.free.iter().map(|&(i, v)| a(v) * x[i]).sum::<f64>();
         for kk in 0..m {
@@ -394,6 +408,25 @@ impl Operator<'_> {
         }
         y
     }
+}
+
+/// Column blocks of `K`'s product in [`Operator`] (a constant, not the thread count, so that
+/// the product's bits are the same on any machine).
+const PRODUCT_BLOCKS: usize = 4;
+
+/// `blocks` ranges `[first, end)` of the columns with about equal numbers of entries (from the
+/// column pointers `col_ptr`).
+fn column_blocks(col_ptr: &[usize], blocks: usize) -> Vec<(usize, usize)> {
+    let n = col_ptr.len() - 1;
+    let nnz = col_ptr[n];
+    let mut ranges = Vec::with_capacity(blocks);
+    let mut first = 0;
+    for b in 1..=blocks {
+        let end = if b == blocks { n } else { col_ptr.partition_point(|&p| p < nnz * b / blocks).min(n).max(first) };
+        ranges.push((first, end));
+        first = end;
+    }
+    ranges
 }
 
 /// The state system an interface keeps for the sparse path (a cache, like

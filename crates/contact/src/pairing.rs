@@ -22,6 +22,7 @@
 
 use contact2d_fem::Model;
 use contact2d_mesh::{Contour, ContourEdge, NodeId};
+use rayon::prelude::*;
 
 use crate::error::ContactError;
 use crate::side::{Projection, SlaveBody};
@@ -100,32 +101,37 @@ pub fn pair_contours(
     let body = SlaveBody::new(model, slave_region, slave).map_err(err)?;
     let weights = tributary_weights(master);
     let boxes = EdgeBoxes::of(slave);
-    let mut pairs = Vec::with_capacity(master.nodes.len());
-    for (k, &m) in master.nodes.iter().enumerate() {
-        let x = model.mesh.points[m.0];
-        let (edge_index, xi) = closest_point(slave, &boxes, &model.mesh.points, x);
-        let edge = &slave.edges[edge_index];
-        let (y, t, _) = slave.edge_frame(edge, xi);
-        let projection = Projection { edge: edge_index, xi, point: y, tangent: t, own: &[m] };
-        let (normal, gap) = body.normal_and_gap(slave, x, &projection);
-        let shape = edge_shape(edge.quadratic, xi);
-        let count = if edge.quadratic { 3 } else { 2 };
-        let slave_nodes: Vec<(NodeId, f64)> =
-            (0..count).map(|a| (edge.nodes[a], shape[a])).filter(|(_, w)| w.abs() > 1e-14).collect();
-        pairs.push(ContactPair {
-            master: m,
-            slave: slave_nodes,
-            slave_point: y,
-            normal,
-            tangent: [-normal[1], normal[0]],
-            gap,
-            weight: weights[k],
-            gamma: 1.0,
-            master_arc_length: master.arc_length[k],
-            slave_arc_length: slave.arc_length[edge.first] + slave.edge_length(edge, xi),
-            integrated: None,
-        });
-    }
+    // Each master node's closest point is independent: in parallel, collected in node order.
+    let mut pairs: Vec<ContactPair> = master
+        .nodes
+        .par_iter()
+        .enumerate()
+        .map(|(k, &m)| {
+            let x = model.mesh.points[m.0];
+            let (edge_index, xi) = closest_point(slave, &boxes, &model.mesh.points, x);
+            let edge = &slave.edges[edge_index];
+            let (y, t, _) = slave.edge_frame(edge, xi);
+            let projection = Projection { edge: edge_index, xi, point: y, tangent: t, own: &[m] };
+            let (normal, gap) = body.normal_and_gap(slave, x, &projection);
+            let shape = edge_shape(edge.quadratic, xi);
+            let count = if edge.quadratic { 3 } else { 2 };
+            let slave_nodes: Vec<(NodeId, f64)> =
+                (0..count).map(|a| (edge.nodes[a], shape[a])).filter(|(_, w)| w.abs() > 1e-14).collect();
+            ContactPair {
+                master: m,
+                slave: slave_nodes,
+                slave_point: y,
+                normal,
+                tangent: [-normal[1], normal[0]],
+                gap,
+                weight: weights[k],
+                gamma: 1.0,
+                master_arc_length: master.arc_length[k],
+                slave_arc_length: slave.arc_length[edge.first] + slave.edge_length(edge, xi),
+                integrated: None,
+            }
+        })
+        .collect();
     set_gamma(&mut pairs);
     Ok(pairs)
 }

@@ -51,10 +51,26 @@
 use contact2d_element::gauss_legendre;
 use contact2d_fem::Model;
 use contact2d_mesh::{Contour, ContourEdge, NodeId};
+use rayon::prelude::*;
 
 use crate::error::ContactError;
 use crate::pairing::{ContactPair, EdgeBoxes, IntegratedRows, RowCoefficient, edge_shape, pair_contours};
 use crate::side::{Projection, SlaveBody};
+
+/// One quadrature point of a master edge: what [`pair_segments`] adds to its nodes' integrals.
+struct EdgeSample {
+    /// Gauss weight, the sub-interval's half length in ξ, and `ds/dξ`.
+    weight: [f64; 3],
+    /// The multiplier basis and the master edge's shape functions at the point.
+    phi: [f64; 3],
+    n_master: [f64; 3],
+    /// The slave normal and geometric gap at the closest point.
+    normal: [f64; 2],
+    g0: f64,
+    /// The slave edge of the closest point and its shape functions there.
+    slave_edge: usize,
+    n_slave: [f64; 3],
+}
 
 /// The per-node sums of the integrals, before the division by `w_k`.
 #[derive(Debug, Clone, Default)]
@@ -88,39 +104,64 @@ pub fn pair_segments(
     let points = &model.mesh.points;
     let mut sums = vec![NodeIntegrals::default(); master.nodes.len()];
     let boxes = EdgeBoxes::of(slave);
-    for edge in &master.edges {
+    // The quadrature points of each master edge, sampled in parallel (each edge's closest
+    // points and gaps are independent), then summed edge by edge in contour order: the same
+    // additions in the same order as one sequential pass, so the same bits on any number of
+    // threads.
+    let sampled: Vec<Vec<EdgeSample>> = master
+        .edges
+        .par_iter()
+        .map(|edge| {
+            let local = contour_indices(master, edge);
+            let count = if edge.quadratic { 3 } else { 2 };
+            let reach = local[..count].iter().map(|&k| pairs[k].gap.abs()).fold(0.0, f64::max);
+            let cuts = breakpoints(master, edge, slave, reach);
+            let mut samples = Vec::with_capacity(gx.len() * (cuts.len() - 1));
+            for span in cuts.windows(2) {
+                let (mid, half) = (0.5 * (span[0] + span[1]), 0.5 * (span[1] - span[0]));
+                for (g, &wg) in gx.iter().zip(&gw) {
+                    let xi = mid + half * g;
+                    let (x, _, ds) = master.edge_frame(edge, xi);
+                    let (e, eta) = boxes.closest_point_unsnapped(slave, points, x);
+                    let slave_edge = &slave.edges[e];
+                    let (y, t, _) = slave.edge_frame(slave_edge, eta);
+                    let projection = Projection { edge: e, xi: eta, point: y, tangent: t, own: &edge.nodes[..count] };
+                    let (normal, g0) = body.normal_and_gap(slave, x, &projection);
+                    samples.push(EdgeSample {
+                        weight: [wg, half, ds],
+                        phi: multiplier_shape(edge.quadratic, xi),
+                        n_master: edge_shape(edge.quadratic, xi),
+                        normal,
+                        g0,
+                        slave_edge: e,
+                        n_slave: edge_shape(slave_edge.quadratic, eta),
+                    });
+                }
+            }
+            samples
+        })
+        .collect();
+    for (edge, samples) in master.edges.iter().zip(&sampled) {
         let local = contour_indices(master, edge);
         let count = if edge.quadratic { 3 } else { 2 };
-        let reach = local[..count].iter().map(|&k| pairs[k].gap.abs()).fold(0.0, f64::max);
-        let cuts = breakpoints(master, edge, slave, reach);
-        for span in cuts.windows(2) {
-            let (mid, half) = (0.5 * (span[0] + span[1]), 0.5 * (span[1] - span[0]));
-            for (g, wg) in gx.iter().zip(&gw) {
-                let xi = mid + half * g;
-                let (x, _, ds) = master.edge_frame(edge, xi);
-                let n_master = edge_shape(edge.quadratic, xi);
-                let phi = multiplier_shape(edge.quadratic, xi);
-                let (e, eta) = boxes.closest_point_unsnapped(slave, points, x);
-                let slave_edge = &slave.edges[e];
-                let (y, t, _) = slave.edge_frame(slave_edge, eta);
-                let projection = Projection { edge: e, xi: eta, point: y, tangent: t, own: &edge.nodes[..count] };
-                let (normal, g0) = body.normal_and_gap(slave, x, &projection);
-                let tangent = [-normal[1], normal[0]];
-                let n_slave = edge_shape(slave_edge.quadratic, eta);
-                let slave_count = if slave_edge.quadratic { 3 } else { 2 };
-                for a in 0..count {
-                    let f = wg * half * ds * phi[a];
-                    let s = &mut sums[local[a]];
-                    s.weight += f;
-                    s.gap += f * g0;
-                    s.normal = [s.normal[0] + f * normal[0], s.normal[1] + f * normal[1]];
-                    for (node, shape) in edge.nodes.iter().zip(n_master).take(count) {
-                        add(&mut s.rows.master, *node, f * shape, normal, tangent);
-                    }
-                    for (node, shape) in slave_edge.nodes.iter().zip(n_slave).take(slave_count) {
-                        add(&mut s.rows.slave, *node, -f * shape, normal, tangent);
-                        add_weight(&mut s.slave_weights, *node, f * shape);
-                    }
+        for sample in samples {
+            let [wg, half, ds] = sample.weight;
+            let (normal, g0, phi) = (sample.normal, sample.g0, sample.phi);
+            let tangent = [-normal[1], normal[0]];
+            let slave_edge = &slave.edges[sample.slave_edge];
+            let slave_count = if slave_edge.quadratic { 3 } else { 2 };
+            for a in 0..count {
+                let f = wg * half * ds * phi[a];
+                let s = &mut sums[local[a]];
+                s.weight += f;
+                s.gap += f * g0;
+                s.normal = [s.normal[0] + f * normal[0], s.normal[1] + f * normal[1]];
+                for (node, shape) in edge.nodes.iter().zip(sample.n_master).take(count) {
+                    add(&mut s.rows.master, *node, f * shape, normal, tangent);
+                }
+                for (node, shape) in slave_edge.nodes.iter().zip(sample.n_slave).take(slave_count) {
+                    add(&mut s.rows.slave, *node, -f * shape, normal, tangent);
+                    add_weight(&mut s.slave_weights, *node, f * shape);
                 }
             }
         }
