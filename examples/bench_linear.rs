@@ -17,13 +17,14 @@
 //! constrained blocks from triplets, edge loads), the ordering (with `--ordering nd`),
 //! symbolic analysis (ordering, elimination tree, supernodes), numeric factorisation
 //! `K_ff = L Lᵀ`, solve. The factorisation goes through faer's low-level API with the defaults
-//! that `CholeskySolver` uses (`SymbolicLlt::try_new` + `Llt::try_new_with_symbolic`: AMD,
-//! supernodal when worthwhile, the library's sequential `parallelism()`), so that the symbolic and numeric times and the
+//! that `CholeskySolver` uses (`SymbolicLlt::try_new` + `Llt::try_new_with_symbolic`: AMD, on
+//! the twin-compressed pattern from `COMPRESS_FROM` DOFs, supernodal when worthwhile, the library's sequential `parallelism()`), so that the symbolic and numeric times and the
 //! size of `L` can be reported separately.
 //!
 //! Variants, to measure what a change would gain:
 //! * `--ordering nd`: the library's nested dissection (`contact2d_fem::fill_reducing_permutation`)
-//!   instead of faer's AMD.
+//!   instead of faer's AMD; `--ordering node-amd` AMD on the node graph; `--ordering dof-amd`
+//!   faer's AMD on the uncompressed DOF pattern at every size.
 //! * `--index u32`: the factorisation with 32-bit instead of 64-bit sparse indices.
 //!
 //! (The prototypes of the pattern assembly and the nested dissection that docs/benchmarks.md
@@ -40,7 +41,8 @@ use anyhow::{Result, anyhow, bail};
 use clap::{Parser, ValueEnum};
 use contact2d_element::{Material, PlaneCondition};
 use contact2d_fem::{
-    Component, Csc, Dof, DofKind, DofMap, EdgeLoad, Model, Ordering as FemOrdering, assemble, fill_reducing_permutation,
+    COMPRESS_FROM, Component, Csc, Dof, DofKind, DofMap, EdgeLoad, Model, Ordering as FemOrdering, assemble,
+    fill_reducing_permutation, twin_compressed_amd,
 };
 use contact2d_mesh::{CellKind, Mesh, generate};
 use faer::dyn_stack::{MemBuffer, MemStack};
@@ -61,8 +63,13 @@ enum IndexWidth {
 /// The fill-reducing ordering of the Cholesky factorisation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 enum Ordering {
-    /// faer's default, approximate minimum degree.
+    /// The library's default (`CholeskySolver::factor`): faer's approximate minimum degree, from
+    /// `contact2d_fem::COMPRESS_FROM` DOFs on the pattern with twin columns merged
+    /// (`contact2d_fem::twin_compressed_amd`).
     Amd,
+    /// faer's approximate minimum degree on the DOF pattern at every size (the default before
+    /// the twin compression).
+    DofAmd,
     /// The library's nested dissection (`contact2d_fem::fill_reducing_permutation`).
     Nd,
     /// The library's AMD on the node graph (`contact2d_fem::Ordering::NodeAmd`).
@@ -160,19 +167,23 @@ fn main() -> Result<()> {
     let (k, dofs) = (system.stiffness, system.dofs);
     phases.lap("assembly");
 
-    let perm = match args.ordering {
-        Ordering::Amd => None,
+    let forward = match args.ordering {
+        Ordering::DofAmd => None,
+        Ordering::Amd if k.nrows() < COMPRESS_FROM => None,
+        Ordering::Amd => Some(twin_compressed_amd(&k)?),
         Ordering::Nd | Ordering::NodeAmd => {
             let library =
                 if args.ordering == Ordering::Nd { FemOrdering::NestedDissection } else { FemOrdering::NodeAmd };
-            let forward = fill_reducing_permutation(&model, &dofs, &k, library, &[])?;
-            let mut inverse = vec![0; forward.len()];
-            for (new, &old) in forward.iter().enumerate() {
-                inverse[old] = new;
-            }
-            Some((forward, inverse))
+            Some(fill_reducing_permutation(&model, &dofs, &k, library, &[])?)
         }
     };
+    let perm = forward.map(|forward| {
+        let mut inverse = vec![0; forward.len()];
+        for (new, &old) in forward.iter().enumerate() {
+            inverse[old] = new;
+        }
+        (forward, inverse)
+    });
     if perm.is_some() {
         phases.lap("ordering");
     }

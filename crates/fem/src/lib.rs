@@ -34,7 +34,7 @@ pub use assembly::{Csc, FLOATING_PIN_STIFFNESS, LinearSystem, assemble, assemble
 pub use dof::{Component, Dof, DofKind, DofMap};
 pub use error::FemError;
 pub use model::{Body, BodyId, Dirichlet, EdgeLoad, Model, element_type};
-pub use ordering::{Ordering, fill_reducing_permutation};
+pub use ordering::{COMPRESS_FROM, Ordering, fill_reducing_permutation, twin_compressed_amd};
 pub use reassembly::ElementMatrices;
 pub use recovery::{CurveSample, StressRecovery, nodal_stresses, stresses_along_curve};
 pub use rigid::{FloatingPiece, check_rigid_modes, floating_pieces};

@@ -28,7 +28,7 @@ use faer::{Conj, Mat, Par, Side};
 use crate::assembly::{Csc, LinearSystem};
 use crate::error::FemError;
 use crate::model::Model;
-use crate::ordering::{Ordering, fill_reducing_permutation, is_permutation};
+use crate::ordering::{COMPRESS_FROM, Ordering, fill_reducing_permutation, is_permutation, twin_compressed_amd};
 
 /// A Cholesky factorisation of a symmetric positive definite matrix stored as its lower triangle.
 #[derive(Clone)]
@@ -112,6 +112,24 @@ fn numeric(symbolic: &SymbolicCholesky<usize>, k: &Csc) -> Result<Vec<f64>, FemE
     Ok(values)
 }
 
+/// The symbolic analysis of `k` (lower triangle) with faer's AMD, from [`COMPRESS_FROM`]
+/// unknowns on the pattern with twin columns merged ([`twin_compressed_amd`]).
+fn amd_symbolic(k: &Csc, params: CholeskySymbolicParams<'_>) -> Result<SymbolicCholesky<usize>, FemError> {
+    let analysis = |ordering| {
+        factorize_symbolic_cholesky(k.symbolic(), Side::Lower, ordering, params)
+            .map_err(|e| FemError::Factorization(format!("symbolic analysis: {e:?}")))
+    };
+    if k.nrows() < COMPRESS_FROM {
+        return analysis(SymmetricOrdering::Amd);
+    }
+    let forward = twin_compressed_amd(k)?;
+    let mut inverse = vec![0; forward.len()];
+    for (new, &old) in forward.iter().enumerate() {
+        inverse[old] = new;
+    }
+    analysis(SymmetricOrdering::Custom(PermRef::new_checked(&forward, &inverse, forward.len())))
+}
+
 pub(crate) fn check_square(k: &Csc) -> Result<(), FemError> {
     if k.nrows() != k.ncols() {
         return Err(FemError::Factorization(format!("matrix is {}×{}, not square", k.nrows(), k.ncols())));
@@ -126,9 +144,7 @@ impl CholeskySolver {
     /// [`FemError::Factorization`] if `k` is not square or not positive definite.
     pub fn factor(k: &Csc) -> Result<CholeskySolver, FemError> {
         check_square(k)?;
-        let symbolic =
-            factorize_symbolic_cholesky(k.symbolic(), Side::Lower, SymmetricOrdering::Amd, Default::default())
-                .map_err(|e| FemError::Factorization(format!("symbolic analysis: {e:?}")))?;
+        let symbolic = amd_symbolic(k, Default::default())?;
         CholeskySolver::finish(symbolic, k)
     }
 
@@ -145,8 +161,7 @@ impl CholeskySolver {
             supernodal_flop_ratio_threshold: SupernodalThreshold::FORCE_SUPERNODAL,
             ..Default::default()
         };
-        let symbolic = factorize_symbolic_cholesky(k.symbolic(), Side::Lower, SymmetricOrdering::Amd, params)
-            .map_err(|e| FemError::Factorization(format!("symbolic analysis: {e:?}")))?;
+        let symbolic = amd_symbolic(k, params)?;
         CholeskySolver::finish(symbolic, k)
     }
 
