@@ -46,7 +46,8 @@ const BUDGET: usize = 200;
 pub(crate) enum Accuracy {
     /// Relative residual 1e-4: enough to choose the next state while the iteration moves.
     Trial,
-    /// Relative residual 1e-14 (or the round-off floor): the answer.
+    /// Relative residual 1e-14, or the residual's round-off floor `ε (‖b‖ + ‖|A| |x|‖)` where
+    /// that is larger: the answer.
     Final,
 }
 
