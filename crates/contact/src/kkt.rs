@@ -362,8 +362,10 @@ impl Operator<'_> {
         let k = p.system.stiffness.as_ref();
         // `K x` from the lower triangle, by blocks of columns in parallel, the blocks' parts
         // summed in block order: the same bits on any number of threads.
-        let parts: Vec<Vec<f64>> = column_blocks(k.col_ptr(), PRODUCT_BLOCKS)
-            .into_par_iter()
+        let blocks = column_blocks(k.col_ptr(), PRODUCT_BLOCKS);
+        let parts: Vec<Vec<f64>> = blocks
+            .par_iter()
+            .copied()
             .map(|(first, end)| {
                 // Block [first, end) reaches rows first.. only (the lower triangle).
                 let mut part = vec![0.0; n - first];
@@ -380,7 +382,7 @@ impl Operator<'_> {
             })
             .collect();
         let mut y = vec![0.0; x.len()];
-        for (part, (first, _)) in parts.iter().zip(column_blocks(k.col_ptr(), PRODUCT_BLOCKS)) {
+        for (part, &(first, _)) in parts.iter().zip(&blocks) {
             y[first..n].iter_mut().zip(part).for_each(|(y, p)| *y += p);
         }
         let dot = |row: &crate::problem::PairRow| row.free.iter().map(|&(i, v)| a(v) * x[i]).sum::<f64>();

@@ -99,8 +99,19 @@ pub fn pair_contours(
 ) -> Result<Vec<ContactPair>, ContactError> {
     let err = |reason: String| ContactError::Pairing { master: master.name.clone(), slave: slave.name.clone(), reason };
     let body = SlaveBody::new(model, slave_region, slave).map_err(err)?;
+    Ok(pair_contours_with(model, master, slave, &body, &EdgeBoxes::of(slave)))
+}
+
+/// [`pair_contours`] with the slave side's body and edge boxes already built (segment-to-segment
+/// pairing reuses them for its quadrature points).
+pub(crate) fn pair_contours_with(
+    model: &Model,
+    master: &Contour,
+    slave: &Contour,
+    body: &SlaveBody,
+    boxes: &EdgeBoxes,
+) -> Vec<ContactPair> {
     let weights = tributary_weights(master);
-    let boxes = EdgeBoxes::of(slave);
     // Each master node's closest point is independent: in parallel, collected in node order.
     let mut pairs: Vec<ContactPair> = master
         .nodes
@@ -108,7 +119,7 @@ pub fn pair_contours(
         .enumerate()
         .map(|(k, &m)| {
             let x = model.mesh.points[m.0];
-            let (edge_index, xi) = closest_point(slave, &boxes, &model.mesh.points, x);
+            let (edge_index, xi) = closest_point(slave, boxes, &model.mesh.points, x);
             let edge = &slave.edges[edge_index];
             let (y, t, _) = slave.edge_frame(edge, xi);
             let projection = Projection { edge: edge_index, xi, point: y, tangent: t, own: &[m] };
@@ -133,7 +144,7 @@ pub fn pair_contours(
         })
         .collect();
     set_gamma(&mut pairs);
-    Ok(pairs)
+    pairs
 }
 
 pub(crate) fn edge_shape(quadratic: bool, xi: f64) -> [f64; 3] {

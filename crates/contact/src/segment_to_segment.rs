@@ -54,7 +54,7 @@ use contact2d_mesh::{Contour, ContourEdge, NodeId};
 use rayon::prelude::*;
 
 use crate::error::ContactError;
-use crate::pairing::{ContactPair, EdgeBoxes, IntegratedRows, RowCoefficient, edge_shape, pair_contours};
+use crate::pairing::{ContactPair, EdgeBoxes, IntegratedRows, RowCoefficient, edge_shape, pair_contours_with};
 use crate::side::{Projection, SlaveBody};
 
 /// One quadrature point of a master edge: what [`pair_segments`] adds to its nodes' integrals.
@@ -98,12 +98,12 @@ pub fn pair_segments(
     slave_region: &str,
 ) -> Result<Vec<ContactPair>, ContactError> {
     let err = |reason: String| ContactError::Pairing { master: master.name.clone(), slave: slave.name.clone(), reason };
-    let mut pairs = pair_contours(model, master, slave, slave_region)?;
     let body = SlaveBody::new(model, slave_region, slave).map_err(err)?;
+    let boxes = EdgeBoxes::of(slave);
+    let mut pairs = pair_contours_with(model, master, slave, &body, &boxes);
     let (gx, gw) = gauss_legendre(5).map_err(|e| err(e.to_string()))?;
     let points = &model.mesh.points;
     let mut sums = vec![NodeIntegrals::default(); master.nodes.len()];
-    let boxes = EdgeBoxes::of(slave);
     // The quadrature points of each master edge, sampled in parallel (each edge's closest
     // points and gaps are independent), then summed edge by edge in contour order: the same
     // additions in the same order as one sequential pass, so the same bits on any number of

@@ -16,6 +16,10 @@ pub enum PairState {
 }
 
 impl PairState {
+    /// Every state, in declaration order.
+    pub const ALL: [PairState; 4] =
+        [PairState::Free, PairState::Stick, PairState::SlipPositive, PairState::SlipNegative];
+
     /// The state a semi-smooth (active-set) update gives a pair from its trial forces: free when
     /// the trial normal force `σ ≤ 0`; stuck when it has no tangential law (`frictional` false)
     /// or `|θ| ≤ μ σ`; else slipping against the trial tangential force `θ`.

@@ -317,9 +317,6 @@ mod tests {
     use super::*;
     use crate::interface::Interface;
 
-    const STATES: [PairState; 4] =
-        [PairState::Free, PairState::Stick, PairState::SlipPositive, PairState::SlipNegative];
-
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(32))]
         /// The reduced system and the full `2m × 2m` system (a second, independent elimination)
@@ -335,7 +332,7 @@ mod tests {
             problem.set_friction(mu).unwrap();
             let interface = Interface::new(&problem);
             let m = problem.num_pairs();
-            let state: Vec<PairState> = (0..m).map(|k| STATES[picks[k % picks.len()]]).collect();
+            let state: Vec<PairState> = (0..m).map(|k| PairState::ALL[picks[k % picks.len()]]).collect();
             let start = StepStart {
                 slip: (0..m).map(|k| slip * (k as f64 - 2.0)).collect(),
                 tangential_force: vec![0.0; m],

@@ -361,9 +361,6 @@ mod tests {
     use crate::algorithms::state_equations::{solve_regularised_state_equations, state_system};
     use crate::solution::StepStart;
 
-    const STATES: [PairState; 4] =
-        [PairState::Free, PairState::Stick, PairState::SlipPositive, PairState::SlipNegative];
-
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(24))]
         /// A state reached from a factored one by changing a few pairs (the update path, size
@@ -383,10 +380,10 @@ mod tests {
             let m = problem.num_pairs();
             // The base in contact everywhere, so that its system (≥ m rows) takes the ≤ 10
             // changed rows as an update (at most r/6).
-            let base: Vec<PairState> = (0..m).map(|k| STATES[picks[k % picks.len()]]).collect();
+            let base: Vec<PairState> = (0..m).map(|k| PairState::ALL[picks[k % picks.len()]]).collect();
             let mut state = base.clone();
             for &(k, s) in &changes {
-                state[k % m] = STATES[s];
+                state[k % m] = PairState::ALL[s];
             }
             let start = StepStart {
                 slip: (0..m).map(|k| slip * (k as f64 - 2.0)).collect(),
