@@ -89,7 +89,7 @@ struct NodeIntegrals {
 /// summing to one) by the integrated ones; [`ContactPair::integrated`] holds the rows.
 ///
 /// # Errors
-/// As [`pair_contours`], and [`ContactError::Pairing`] if a master node's tributary length is
+/// As [`pair_contours`](crate::pairing::pair_contours), and [`ContactError::Pairing`] if a master node's tributary length is
 /// not positive.
 pub fn pair_segments(
     model: &Model,
