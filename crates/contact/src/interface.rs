@@ -27,13 +27,16 @@ use nalgebra::DMatrix;
 use contact2d_fem::CholeskySolver;
 
 use crate::problem::{ContactProblem, PairRow, condensed_rows};
+use crate::stiffness_factor::StiffnessFactor;
 
 /// Compliances of the contact pairs.
 #[derive(Debug, Clone)]
 pub struct Interface {
-    /// `u0 = K⁻¹ r`: free displacements of the unit load without contact.
+    /// `u0 = K⁻¹ r`: free displacements of the unit load without contact. Empty on the sparse
+    /// path's interface ([`Interface::sparse`]) until [`Interface::update_load`]: its
+    /// algorithms solve each contact state on the full system and read no `u0`.
     pub u0: Vec<f64>,
-    /// `h = B_N u0` (with the constrained part of the load pattern).
+    /// `h = B_N u0` (with the constrained part of the load pattern); empty with `u0`.
     pub h_normal: Vec<f64>,
     /// `B_T u0` likewise.
     pub h_tangent: Vec<f64>,
@@ -45,8 +48,9 @@ pub struct Interface {
     pub c_tn: DMatrix<f64>,
     /// Tangential rows against tangential forces.
     pub c_tt: DMatrix<f64>,
-    /// The factorisation of `K_ff` (shared with the problem), for the final recovery.
-    solver: CholeskySolver,
+    /// The factorisation of `K_ff` (the problem's, or the one bordered here), for `u0` and the
+    /// final recovery.
+    solver: StiffnessFactor,
     /// `B_N` and, with friction, `B_T` (free parts), for the final recovery.
     normal_rows: Vec<PairRow>,
     tangent_rows: Vec<PairRow>,
@@ -143,26 +147,32 @@ impl Interface {
     /// [`ContactProblem::is_bordered`]) is factored bordered here first (the same factor the
     /// problem would have made); if that fails the compliances come from multi-RHS solves.
     pub fn new(problem: &ContactProblem) -> Interface {
-        let bordered = if problem.is_bordered() {
-            None
-        } else {
-            let (_, rows) = condensed_rows(&problem.normal_rows, &problem.tangent_rows);
-            CholeskySolver::factor_with_constraints(&problem.system.stiffness, &rows).ok()
+        // The problem's factor, or (many pairs: the problem holds `K`'s own or none yet) `K`
+        // bordered here; `K`'s own if that fails (dependent rows).
+        let bordered = (!problem.is_bordered())
+            .then(|| {
+                let (_, rows) = condensed_rows(&problem.normal_rows, &problem.tangent_rows);
+                CholeskySolver::factor_with_constraints(&problem.system.stiffness, &rows).ok()
+            })
+            .flatten();
+        let solver = match bordered {
+            Some(s) => StiffnessFactor::made(std::sync::Arc::clone(&problem.system), s),
+            None => problem.stiffness_factor().clone(),
         };
-        let solver = bordered.as_ref().unwrap_or(&problem.solver);
         let n = problem.system.dofs.num_free();
         let frictional = problem.is_frictional();
         let normal = &problem.normal_rows[..];
         let tangent: &[PairRow] = if frictional { &problem.tangent_rows } else { &[] };
-        let ((c_nn, c_nt, c_tn, c_tt), u0) = match condensed_blocks(problem, solver, tangent) {
+        let blocks = solver.get().ok().and_then(|s| condensed_blocks(problem, s, tangent));
+        let ((c_nn, c_nt, c_tn, c_tt), u0) = match blocks {
             Some(([c_nn, c_nt, c_tn, c_tt], u0)) => ((c_nn, c_nt, c_tn, c_tt), u0),
             None => {
                 let b_n = rows_to_columns(n, normal);
                 let b_t = rows_to_columns(n, tangent);
-                let (z_n, z_t) = (problem.solver.solve_many(&b_n), problem.solver.solve_many(&b_t));
+                let (z_n, z_t) = (solver.solve_many_or_nan(&b_n), solver.solve_many_or_nan(&b_t));
                 let (bnt, btt) = (b_n.transpose(), b_t.transpose());
                 let blocks = (product(bnt, &z_n), product(bnt, &z_t), product(btt, &z_n), product(btt, &z_t));
-                (blocks, problem.solver.solve(&problem.pattern_rhs))
+                (blocks, solver.solve_or_nan(&problem.pattern_rhs))
             }
         };
         let h = |rows: &[PairRow]| rows.iter().map(|r| r.dot(&u0, &problem.pattern_prescribed)).collect::<Vec<_>>();
@@ -174,7 +184,7 @@ impl Interface {
             c_tn: if frictional { to_dmatrix(&c_tn) } else { DMatrix::zeros(0, 0) },
             c_tt: to_dmatrix(&c_tt),
             u0,
-            solver: problem.solver.clone(),
+            solver,
             normal_rows: normal.to_vec(),
             tangent_rows: tangent.to_vec(),
             pattern_u0: vec![None; problem.patterns().len()],
@@ -185,25 +195,24 @@ impl Interface {
         }
     }
 
-    /// The interface of the sparse path ([`crate::LinearSolver::Sparse`]): `u0` and `h` as in
-    /// [`Interface::new`] (one solve), but no compliances (`c_nn`, `c_nt`, `c_tn`, `c_tt` are
-    /// empty, 0 × 0): the algorithms that support it solve each contact state on the full
-    /// system (`crate::kkt`) at the cost of a sparse factorisation, with no dense block of the
-    /// size of the interface.
+    /// The interface of the sparse path ([`crate::LinearSolver::Sparse`]): no compliances
+    /// (`c_nn`, `c_nt`, `c_tn`, `c_tt` are empty, 0 × 0) and no `u0` or `h` until
+    /// [`Interface::update_load`] (empty): the algorithms that support it solve each contact
+    /// state on the full system (`crate::kkt`) at the cost of a sparse factorisation, with no
+    /// dense block of the size of the interface, and need no solve with `K_ff` alone (whose
+    /// factor the problem then makes only if something else asks for it).
     pub fn sparse(problem: &ContactProblem) -> Interface {
         let frictional = problem.is_frictional();
         let tangent: &[PairRow] = if frictional { &problem.tangent_rows } else { &[] };
-        let u0 = problem.solver.solve(&problem.pattern_rhs);
-        let h = |rows: &[PairRow]| rows.iter().map(|r| r.dot(&u0, &problem.pattern_prescribed)).collect::<Vec<_>>();
         Interface {
-            h_normal: h(&problem.normal_rows),
-            h_tangent: h(&problem.tangent_rows),
+            h_normal: vec![],
+            h_tangent: vec![],
             c_nn: DMatrix::zeros(0, 0),
             c_nt: DMatrix::zeros(0, 0),
             c_tn: DMatrix::zeros(0, 0),
             c_tt: DMatrix::zeros(0, 0),
-            u0,
-            solver: problem.solver.clone(),
+            u0: vec![],
+            solver: problem.stiffness_factor().clone(),
             normal_rows: problem.normal_rows.clone(),
             tangent_rows: tangent.to_vec(),
             pattern_u0: vec![None; problem.patterns().len()],
@@ -228,9 +237,11 @@ impl Interface {
     }
 
     /// Recomputes the load terms `u0` and `h` after the problem's load changed
-    /// ([`ContactProblem::apply_load`]): one solve; the compliances are kept.
+    /// ([`ContactProblem::apply_load`]): one solve; the compliances are kept. NaN if `K_ff`
+    /// cannot be factored (only a sparse path's interface factors it here:
+    /// `crate::stiffness_factor`).
     pub fn update_load(&mut self, problem: &ContactProblem) {
-        self.u0 = problem.solver.solve(&problem.pattern_rhs);
+        self.u0 = self.solver.solve_or_nan(&problem.pattern_rhs);
         let h =
             |rows: &[PairRow]| rows.iter().map(|r| r.dot(&self.u0, &problem.pattern_prescribed)).collect::<Vec<_>>();
         self.h_normal = h(&problem.normal_rows);
@@ -245,19 +256,24 @@ impl Interface {
     /// ```
     ///
     /// The same `u0` up to round-off; a history of many steps over few patterns pays a few
-    /// solves instead of one per step.
+    /// solves instead of one per step. The sparse path's interface ([`Interface::sparse`]) of
+    /// a problem with pairs is left as it is: its algorithms read no `u0`.
     pub fn update_load_factors(&mut self, problem: &ContactProblem, factors: &[f64]) {
+        if !self.condensed && problem.num_pairs() > 0 {
+            return;
+        }
         let patterns = problem.patterns();
         if factors.len() != patterns.len() || self.pattern_u0.len() != patterns.len() {
             self.update_load(problem);
             return;
         }
-        let mut u0 = vec![0.0; self.u0.len()];
+        let mut u0 = vec![0.0; self.solver.dim()];
+        let solver = &self.solver;
         for ((pattern, f), cached) in patterns.iter().zip(factors).zip(&mut self.pattern_u0) {
             if *f == 0.0 {
                 continue;
             }
-            let up = cached.get_or_insert_with(|| problem.solver.solve(&pattern.rhs));
+            let up = cached.get_or_insert_with(|| solver.solve_or_nan(&pattern.rhs));
             u0.iter_mut().zip(up.iter()).for_each(|(u, v)| *u += f * v);
         }
         self.u0 = u0;
@@ -268,7 +284,8 @@ impl Interface {
     }
 
     /// Free displacements `w u0 + K⁻¹ (B_Nᵀ λ + B_Tᵀ τ)` (one solve; `τ` is ignored without
-    /// friction). On a large problem, forces in the span of the last two solved take their
+    /// friction). On the sparse path's interface, after [`Interface::update_load`] (before it
+    /// `u0` is empty, and so is the answer). On a large problem, forces in the span of the last two solved take their
     /// displacements by linearity, without a solve (`force_span.rs`).
     pub fn free_displacement(&self, w: f64, lambda: &[f64], tau: &[f64]) -> Vec<f64> {
         let x = if self.u0.len() >= crate::force_span::SPAN_FROM_DOFS {
@@ -289,9 +306,9 @@ impl Interface {
         x.iter().zip(&self.u0).map(|(x, u)| w * u + x).collect()
     }
 
-    /// `K⁻¹ (B_Nᵀ λ + B_Tᵀ τ)` (one solve).
+    /// `K⁻¹ (B_Nᵀ λ + B_Tᵀ τ)` (one solve; NaN as [`Interface::update_load`]).
     fn contact_displacement(&self, lambda: &[f64], tau: &[f64]) -> Vec<f64> {
-        let mut f = vec![0.0; self.u0.len()];
+        let mut f = vec![0.0; self.solver.dim()];
         for (row, l) in self.normal_rows.iter().zip(lambda) {
             for &(i, v) in &row.free {
                 f[i] += v * l;
@@ -302,6 +319,6 @@ impl Interface {
                 f[i] += v * t;
             }
         }
-        self.solver.solve(&f)
+        self.solver.solve_or_nan(&f)
     }
 }

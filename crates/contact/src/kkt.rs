@@ -119,16 +119,12 @@ fn sticks(problem: &ContactProblem, state: PairState, k: usize, frictional: bool
 
 impl StateKkt {
     /// Analyses the system of `problem` (every normal row and, when `frictional`, every
-    /// tangential row) with row scale `scale`.
+    /// tangential row) with row scale `scale`; the complementarity constants are zero until
+    /// the caller sets them.
     ///
     /// # Errors
     /// From the analysis.
-    pub(crate) fn new(
-        problem: &ContactProblem,
-        frictional: bool,
-        scale: f64,
-        constants: (f64, f64),
-    ) -> Result<StateKkt, FemError> {
+    pub(crate) fn new(problem: &ContactProblem, frictional: bool, scale: f64) -> Result<StateKkt, FemError> {
         let scaled = |rows: &[crate::problem::PairRow]| -> Vec<Vec<(usize, f64)>> {
             rows.iter().map(|r| r.free.iter().map(|&(j, v)| (j, scale * v)).collect()).collect()
         };
@@ -138,7 +134,38 @@ impl StateKkt {
         }
         let refs: Vec<&[(usize, f64)]> = rows.iter().map(Vec::as_slice).collect();
         let solver = SaddlePointSolver::analyse(&problem.system.stiffness, &refs)?;
-        Ok(StateKkt { solver, factored: None, scale, frictional, constants, factorizations: 0, krylov_iterations: 0 })
+        Ok(StateKkt {
+            solver,
+            factored: None,
+            scale,
+            frictional,
+            constants: (0.0, 0.0),
+            factorizations: 0,
+            krylov_iterations: 0,
+        })
+    }
+
+    /// Order of the state system: the free DOFs, then every row analysed.
+    pub(crate) fn dim(&self) -> usize {
+        self.solver.dim() + self.solver.row_count()
+    }
+
+    /// `K_ff⁻¹ b` in the first `n` entries of each column of `b` (of [`StateKkt::dim`] entries,
+    /// zero beyond `n`), in place: one multi-RHS solve with the factor of the state system with
+    /// every row switched off, `[K_ff 0; 0 I]`. The sparse path's solves with `K_ff` alone, so
+    /// that it needs no factor of `K_ff` of its own (`crate::stiffness_factor`). `false` if that
+    /// factorisation fails (`K_ff` not positive definite).
+    pub(crate) fn solve_stiffness_many(&mut self, b: &mut faer::Mat<f64>) -> bool {
+        let key = (vec![false; self.solver.row_count()], vec![]);
+        if self.factored.as_ref() != Some(&key) {
+            self.factored = None;
+            if self.solver.factor(&key.0).is_err() {
+                return false;
+            }
+            self.factored = Some(key);
+            self.factorizations += 1;
+        }
+        self.solver.solve_many_in_place(b.as_mut())
     }
 
     /// Whether the tangential rows are part of the system.

@@ -46,6 +46,7 @@ pub mod segment_to_segment;
 mod side;
 pub mod solution;
 pub mod solve;
+mod stiffness_factor;
 
 pub use algorithms::augmented_lagrangian::solve_augmented_lagrangian;
 pub use algorithms::full_system::contact_stiffness;

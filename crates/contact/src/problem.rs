@@ -18,17 +18,21 @@ use crate::error::ContactError;
 pub use crate::pair_rows::{PairRow, SparseRow, condensed_rows};
 use crate::pair_rows::{SlaveKind, has_free_part, pair_rows, point_tangent_moves};
 use crate::pairing::ContactPair;
+use crate::stiffness_factor::StiffnessFactor;
 
 /// The discrete contact problem shared by all algorithms.
 #[derive(Debug, Clone)]
 pub struct ContactProblem {
     /// The finite-element model (bodies, Dirichlet pattern).
     pub model: Model,
-    /// Its assembled system.
-    pub system: LinearSystem,
+    /// Its assembled system, shared by the copies of the problem (a load step's copy of the
+    /// problem changes its loads, never `K`: at 952k DOFs `K` alone is 0.24 GB).
+    pub system: Arc<LinearSystem>,
     /// Factorisation of `K_ff` bordered by the pair rows ([`condensed_rows`]), computed once:
-    /// solves with `K_ff` and the compliance `C = B K⁻¹ Bᵀ`.
-    pub solver: CholeskySolver,
+    /// solves with `K_ff` and the compliance `C = B K⁻¹ Bᵀ`. Beyond
+    /// [`crate::linear::SPARSE_FROM_PAIRS`] pairs `K_ff`'s own, made at the first solve that
+    /// needs it ([`ContactProblem::solver`]).
+    factor: StiffnessFactor,
     /// The pairs.
     pub pairs: Vec<ContactPair>,
     /// Normal rows `B_N`.
@@ -68,7 +72,7 @@ pub struct ContactProblem {
     slave: Vec<SlaveKind>,
     /// Wall time of assembly (with pairing rows) and of ordering plus factorisation, when built.
     pub build_times: BuildTimes,
-    /// Whether `solver` was factored bordered by the pair rows (false above
+    /// Whether `factor` was factored bordered by the pair rows (false above
     /// [`crate::linear::SPARSE_FROM_PAIRS`] pairs: `K` alone, [`ContactProblem::is_bordered`]).
     bordered: bool,
     /// This problem's element matrices, kept by the first [`ContactProblem::rebuild_moved`] for
@@ -135,8 +139,9 @@ impl ContactProblem {
         let assembled = clock.elapsed();
         let (solver, bordered) = factor_stiffness(&system, &normal_rows, &tangent_rows, None)?;
         let friction = vec![0.0; pairs.len()];
+        let (system, factor) = shared(system, solver);
         let mut problem =
-            ContactProblem::assemble_parts(model, system, solver, pairs, normal_rows, tangent_rows, friction, slave);
+            ContactProblem::assemble_parts(model, system, factor, pairs, normal_rows, tangent_rows, friction, slave);
         problem.bordered = bordered;
         problem.build_times = BuildTimes { assemble: assembled, factor: clock.elapsed() - assembled };
         Ok(problem)
@@ -177,10 +182,11 @@ impl ContactProblem {
             vec![self.slave.first().copied().unwrap_or(SlaveKind::Deformable); pairs.len()]
         };
         let (normal_rows, tangent_rows) = pair_rows(&system, &pairs, &slave)?;
-        let (solver, bordered) = factor_stiffness(&system, &normal_rows, &tangent_rows, Some(&self.solver))?;
+        let (solver, bordered) = factor_stiffness(&system, &normal_rows, &tangent_rows, self.factor.if_made())?;
         let friction = if pairs.len() == self.friction.len() { self.friction.clone() } else { vec![0.0; pairs.len()] };
+        let (system, factor) = shared(system, solver);
         let mut problem =
-            ContactProblem::assemble_parts(model, system, solver, pairs, normal_rows, tangent_rows, friction, slave);
+            ContactProblem::assemble_parts(model, system, factor, pairs, normal_rows, tangent_rows, friction, slave);
         problem.bordered = bordered;
         Ok(problem)
     }
@@ -202,20 +208,43 @@ impl ContactProblem {
             )));
         }
         let (normal_rows, tangent_rows) = pair_rows(&self.system, &pairs, &self.slave)?;
-        let (solver, bordered) = if normal_rows.len() >= crate::linear::SPARSE_FROM_PAIRS {
-            (self.solver.clone(), false)
+        let (factor, bordered) = if normal_rows.len() >= crate::linear::SPARSE_FROM_PAIRS {
+            (self.factor.clone(), false)
         } else {
-            factor_stiffness(&self.system, &normal_rows, &tangent_rows, None)?
+            let (solver, bordered) = factor_stiffness(&self.system, &normal_rows, &tangent_rows, None)?;
+            (factor_of(Arc::clone(&self.system), solver), bordered)
         };
         let (model, system, friction, slave) =
-            (self.model.clone(), self.system.clone(), self.friction.clone(), self.slave.clone());
+            (self.model.clone(), Arc::clone(&self.system), self.friction.clone(), self.slave.clone());
         let mut problem =
-            ContactProblem::assemble_parts(model, system, solver, pairs, normal_rows, tangent_rows, friction, slave);
+            ContactProblem::assemble_parts(model, system, factor, pairs, normal_rows, tangent_rows, friction, slave);
         problem.bordered = bordered;
         problem.patterns = self.patterns.clone();
         problem.pattern_rhs = self.pattern_rhs.clone();
         problem.pattern_prescribed = self.pattern_prescribed.clone();
         Ok(problem)
+    }
+
+    /// `K_ff`'s factor: bordered by the pair rows (up to [`crate::linear::SPARSE_FROM_PAIRS`]
+    /// pairs, made as the problem was built), or `K_ff`'s own supernodal Cholesky factor, made
+    /// at the first call and shared by the problem's copies (the sparse path's active set never
+    /// asks for it: `crate::stiffness_factor`).
+    ///
+    /// # Errors
+    /// [`ContactError::Fem`] if a deferred factorisation finds `K_ff` not positive definite.
+    pub fn solver(&self) -> Result<&CholeskySolver, ContactError> {
+        self.factor.get()
+    }
+
+    /// Whether [`ContactProblem::solver`]'s factor has been made: always up to
+    /// [`crate::linear::SPARSE_FROM_PAIRS`] pairs; beyond, once something asked for it.
+    pub fn is_factored(&self) -> bool {
+        self.factor.if_made().is_some()
+    }
+
+    /// The handle of [`ContactProblem::solver`] (made or deferred).
+    pub(crate) fn stiffness_factor(&self) -> &StiffnessFactor {
+        &self.factor
     }
 
     /// Whether [`ContactProblem::solver`] was factored bordered by the pair rows (always up to
@@ -230,8 +259,8 @@ impl ContactProblem {
     #[allow(clippy::too_many_arguments)]
     fn assemble_parts(
         model: Model,
-        system: LinearSystem,
-        solver: CholeskySolver,
+        system: Arc<LinearSystem>,
+        factor: StiffnessFactor,
         pairs: Vec<ContactPair>,
         normal_rows: Vec<PairRow>,
         tangent_rows: Vec<PairRow>,
@@ -257,7 +286,7 @@ impl ContactProblem {
         ContactProblem {
             model,
             system,
-            solver,
+            factor,
             pairs,
             normal_rows,
             tangent_rows,
@@ -429,21 +458,25 @@ pub struct LoadPattern {
 /// `K_ff` factored bordered by the pair rows up to [`crate::linear::SPARSE_FROM_PAIRS`] pairs
 /// (the factor's last block is then the compliance `C = B K⁻¹ Bᵀ` of the bodies at the pairs,
 /// crate::interface), refactoring `previous`'s symbolic analysis when it has the same pattern;
-/// `K` alone (AMD, supernodal) above. Returns the factor and whether it is bordered.
+/// above, `K` alone: `previous` refactored when it has the same pattern, else no factor yet
+/// (made at its first use, `crate::stiffness_factor`). Returns the factor and whether it is
+/// bordered.
 fn factor_stiffness(
     system: &LinearSystem,
     normal_rows: &[PairRow],
     tangent_rows: &[PairRow],
     previous: Option<&CholeskySolver>,
-) -> Result<(CholeskySolver, bool), ContactError> {
+) -> Result<(Option<CholeskySolver>, bool), ContactError> {
     if normal_rows.len() >= crate::linear::SPARSE_FROM_PAIRS {
+        // `K` alone, refactored numerically if a previous factor of its pattern exists, else
+        // left to the first solve that needs it (the sparse path's active set needs none).
         let solver = match previous {
             Some(p) if p.same_pattern(&system.stiffness) => {
                 let mut s = p.clone();
                 s.refactor(&system.stiffness)?;
-                s
+                Some(s)
             }
-            _ => CholeskySolver::factor_supernodal(&system.stiffness)?,
+            _ => None,
         };
         return Ok((solver, false));
     }
@@ -456,5 +489,19 @@ fn factor_stiffness(
         }
         None => CholeskySolver::factor_with_constraints(&system.stiffness, &rows)?,
     };
-    Ok((solver, true))
+    Ok((Some(solver), true))
+}
+
+/// `solver` as the problem's factor of `system`, or `K_ff`'s own deferred to its first use.
+fn factor_of(system: Arc<LinearSystem>, solver: Option<CholeskySolver>) -> StiffnessFactor {
+    match solver {
+        Some(s) => StiffnessFactor::made(system, s),
+        None => StiffnessFactor::deferred(system),
+    }
+}
+
+/// A new problem's `system`, shared, and its factor ([`factor_of`]).
+fn shared(system: LinearSystem, solver: Option<CholeskySolver>) -> (Arc<LinearSystem>, StiffnessFactor) {
+    let system = Arc::new(system);
+    (Arc::clone(&system), factor_of(system, solver))
 }

@@ -102,6 +102,39 @@ fn coulomb_press_and_slide_through_stick_and_slip() {
     assert_agree(&condensed, &sparse);
 }
 
+/// Beyond [`contact2d_contact::SPARSE_FROM_PAIRS`] pairs the problem defers `K`'s own factor,
+/// and the sparse path's active set never asks for it (its solves with `K` alone use the state
+/// system with every row off); the condensed path, asked for, borders `K` itself. The two
+/// paths still agree, and the deferred factor, made on demand, solves `K u = f`.
+#[test]
+fn a_long_interface_is_solved_without_a_factor_of_k_alone() {
+    let problem = two_blocks(CellKind::Quad4, 0.0, 0.01, 2.0, 0.01, 2400, contact2d_contact::SPARSE_FROM_PAIRS);
+    assert!(problem.num_pairs() > contact2d_contact::SPARSE_FROM_PAIRS);
+    assert!(!problem.is_factored() && !problem.is_bordered());
+    let schedule = LoadSchedule::ramp(vec!["main".into()], 1).unwrap();
+    let (condensed, sparse) = both_paths(&problem, &schedule);
+    assert!(condensed.steps.last().unwrap().solution.state.contains(&contact2d_contact::PairState::Free));
+    assert_agree(&condensed, &sparse);
+    assert!(!problem.is_factored(), "neither path made K's own factor");
+    // Made now: K u = r to round-off (a backward-stable Cholesky solve: the residual is a few
+    // ε ‖K‖ ‖u‖; 1e-10 of ‖r‖ leaves orders of margin on this well-conditioned mesh).
+    let u = problem.solver().unwrap().solve(&problem.pattern_rhs);
+    assert!(problem.is_factored());
+    let k = problem.system.stiffness.as_ref();
+    let mut ku = vec![0.0; u.len()];
+    for j in 0..k.ncols() {
+        for (i, v) in k.row_idx_of_col(j).zip(k.val_of_col(j)) {
+            ku[i] += v * u[j];
+            if i != j {
+                ku[j] += v * u[i];
+            }
+        }
+    }
+    let norm = |x: &[f64]| x.iter().map(|v| v * v).sum::<f64>().sqrt();
+    let residual: Vec<f64> = ku.iter().zip(&problem.pattern_rhs).map(|(a, b)| a - b).collect();
+    assert!(norm(&residual) <= 1e-10 * norm(&problem.pattern_rhs), "‖K u − r‖ = {:e}", norm(&residual));
+}
+
 /// Lower block `lower` × [−1, 0] (`na` cells along x), upper block [0.5, 2.5] × [0, 1] (`nb`),
 /// Quad9; the upper block pressed by q = 10 and slid by its top (u1 only: it floats in y).
 fn floating_description(lower: [f64; 2], na: usize, nb: usize, pairing: Pairing) -> ProblemDescription {
@@ -206,6 +239,60 @@ fn the_full_system_algorithms_give_the_same_answer_on_either_path() {
             assert_eq!(a.solution.status, b.solution.status, "{algorithm:?}");
             assert_eq!(a.solution.normal_force, b.solution.normal_force, "{algorithm:?}");
             assert_eq!(a.solution.displacement, b.solution.displacement, "{algorithm:?}");
+        }
+    }
+}
+
+/// The blocks of [`two_blocks_sliding`] in Q4 with `nb` cells along the upper block (`nb + 1`
+/// pairs): pressed through a tilted gap (some pairs open) and, with `mu`, slid by 0.2 of the press.
+fn tilted_press(nb: usize, mu: f64) -> ContactProblem {
+    let slide = if mu > 0.0 { 0.002 } else { 0.0 };
+    let mut problem = two_blocks_sliding(CellKind::Quad4, 0.0, 0.01, 2.0, 0.01, slide, nb * 6 / 5, nb);
+    problem.set_friction(mu).unwrap();
+    problem
+}
+
+/// One step of `problem` by the active set on `linear`: its solution.
+fn one_step(problem: &ContactProblem, linear: LinearSolver) -> contact2d_contact::ContactSolution {
+    let settings = SolverSettings::new(ContactAlgorithm::ActiveSet).with_linear(linear).unwrap();
+    let schedule = LoadSchedule::ramp(vec!["main".into()], 1).unwrap();
+    solve(problem, &settings, &schedule).unwrap().steps.remove(0).solution
+}
+
+/// Refining the tilted press: every mesh converges, and the iterations grow like the number of
+/// coarse levels (`algorithms/coarse_start.rs`), not like the pair count. Before the coarse
+/// levels the frictionless press took 39, 75 iterations at 501, 1,001 pairs and stopped at the
+/// limit of 100 at 2,001; with μ = 0.3 the sparse path stopped at the limit from 501 pairs.
+/// Measured now: 32, 35, 38, 40 (frictionless) and 39, 45, 50, 54 (μ = 0.3; condensed 51 and
+/// 49 at 501 and 1,001) at 501 to 4,001 pairs, a few per doubling (one more level); the bound
+/// of 8 per doubling would fail at the walk's rate (about a tenth of the pairs per doubling here).
+#[test]
+fn iterations_grow_like_the_levels_not_the_pairs() {
+    for mu in [0.0, 0.3] {
+        let mut counts = vec![];
+        for nb in [500, 1000, 2000, 4000] {
+            let problem = tilted_press(nb, mu);
+            let sparse = one_step(&problem, LinearSolver::Sparse);
+            assert_eq!(sparse.status, ContactStatus::Converged, "μ = {mu}, {} pairs: sparse", problem.num_pairs());
+            assert!(sparse.state.contains(&contact2d_contact::PairState::Free), "some pairs open");
+            if nb <= 1000 {
+                // The condensed path as the second algorithm (its dense blocks grow like the
+                // pairs cubed, so only the smaller meshes).
+                let condensed = one_step(&problem, LinearSolver::Condensed);
+                assert_eq!(condensed.status, ContactStatus::Converged, "μ = {mu}, {nb}: condensed");
+                assert_eq!(condensed.state, sparse.state, "μ = {mu}, {nb}: the same states");
+                // Both settle in the same state and solve its equations backward-stably (module
+                // docs): 1e-10 of the largest force.
+                let scale = condensed.normal_force.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+                for (a, b) in condensed.normal_force.iter().zip(&sparse.normal_force) {
+                    assert!((a - b).abs() <= 1e-10 * scale, "μ = {mu}, {nb}: λ {a} against {b}");
+                }
+            }
+            counts.push(sparse.iterations);
+        }
+        println!("μ = {mu}: iterations {counts:?} at 501, 1,001, 2,001, 4,001 pairs");
+        for pair in counts.windows(2) {
+            assert!(pair[1] <= pair[0] + 8, "μ = {mu}: iterations {counts:?} grow by more than 8 per doubling");
         }
     }
 }

@@ -61,7 +61,7 @@ pub fn solve_augmented_lagrangian(
         Some(g) if g.len() == m => g.to_vec(),
         _ => {
             let rhs: Vec<f64> = problem.pattern_rhs.iter().map(|r| w * r).collect();
-            let u0 = problem.solver.solve(&rhs);
+            let u0 = problem.stiffness_factor().solve_or_nan(&rhs);
             (0..m)
                 .map(|k| {
                     if equations.gap_offset[k] + dot_free(&problem.normal_rows[k], &u0) < 0.0 {

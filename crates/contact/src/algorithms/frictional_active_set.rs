@@ -27,11 +27,12 @@ use web_time::Instant;
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::algorithms::semi_smooth::{Iterate, admissible, next_state};
+use crate::algorithms::coarse_start::{self, coarse_start};
+use crate::algorithms::semi_smooth::{Iterate, admissible, next_state, stick_reversals};
 use crate::algorithms::sparse_active_set::solve_sparse_active_set;
 use crate::algorithms::state_equations::{combine, solve_regularised_state_equations};
 use crate::algorithms::stick_continuation::{
-    StartingStates, StickContinuation, StickStage, add_layer_slip, stage_limit,
+    IterationLimit, StartingStates, StickContinuation, StickStage, add_layer_slip, stage_limit,
 };
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
@@ -71,7 +72,10 @@ pub fn solve_frictional_active_set_with(
 
 /// [`solve_frictional_active_set_with`] told how far `guess` may be from the answer: from a
 /// [`StartingStates::Far`] guess the regularised stages run as from the all-stick start
-/// (`stick_continuation.rs`; a floating body's Newton step, `floating.rs`).
+/// (`stick_continuation.rs`; a floating body's Newton step, `floating.rs`). Without a guess, a
+/// long interface whose iteration has not settled after [`coarse_start::PLAIN_ITERATIONS`]
+/// goes on from the states of coarser sets of its pairs (`coarse_start.rs`); the iterations and
+/// trace count every level's.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn solve_frictional_active_set_from(
     problem: &ContactProblem,
@@ -83,8 +87,56 @@ pub(crate) fn solve_frictional_active_set_from(
     max_iterations: usize,
     continuation: StickContinuation,
 ) -> ContactSolution {
+    let whole = IterationLimit::whole(max_iterations);
+    let coarse =
+        guess.is_none() && starting == StartingStates::AllStick && coarse_start::applies(problem, continuation);
+    if !coarse || max_iterations <= coarse_start::PLAIN_ITERATIONS {
+        return solve_from_states(problem, interface, w, start, guess, starting, whole, continuation);
+    }
+    let clock = Instant::now();
+    let plain_limit = IterationLimit { stop: coarse_start::PLAIN_ITERATIONS, ..whole };
+    let plain = solve_from_states(problem, interface, w, start, None, starting, plain_limit, continuation);
+    if plain.status != ContactStatus::MaxIterations {
+        return plain;
+    }
+    let solve = |level: &ContactProblem, interface: &Interface, guess: Option<&[PairState]>, limit| {
+        solve_from_states(level, interface, w, start, guess, StartingStates::Spread, limit, continuation)
+    };
+    // The coarse levels take at most half of what the plain iteration left.
+    let left = max_iterations - plain.iterations;
+    let Some(levels) = coarse_start(problem, interface, &plain.state, left / 2, solve) else {
+        return plain;
+    };
+    let mut trace = plain.trace;
+    let offset = trace.len();
+    trace.extend(levels.trace.iter().map(|r| IterationRecord { iteration: offset + r.iteration, ..*r }));
+    let used = trace.len();
+    let limit = IterationLimit { stop: max_iterations.saturating_sub(used).max(1), ..whole };
+    let guess = Some(levels.states.as_slice());
+    let mut solution =
+        solve_from_states(problem, interface, w, start, guess, StartingStates::Spread, limit, continuation);
+    trace.extend(solution.trace.iter().map(|r| IterationRecord { iteration: used + r.iteration, ..*r }));
+    solution.trace = trace;
+    solution.iterations += used;
+    solution.time = clock.elapsed();
+    solution
+}
+
+/// [`solve_frictional_active_set_from`] without coarse levels, stopping after `limit.stop`
+/// iterations.
+#[allow(clippy::too_many_arguments)]
+fn solve_from_states(
+    problem: &ContactProblem,
+    interface: &Interface,
+    w: f64,
+    start: &StepStart,
+    guess: Option<&[PairState]>,
+    starting: StartingStates,
+    limit: IterationLimit,
+    continuation: StickContinuation,
+) -> ContactSolution {
     if !interface.is_condensed() {
-        return solve_sparse_active_set(problem, interface, w, start, guess, starting, max_iterations, continuation);
+        return solve_sparse_active_set(problem, interface, w, start, guess, starting, limit, continuation);
     }
     let clock = Instant::now();
     let m = problem.num_pairs();
@@ -107,7 +159,9 @@ pub(crate) fn solve_frictional_active_set_from(
     let mut stage = StickStage::first(problem, continuation, c_t, frictional, starting);
     let mut compliances = stage.map(|s| s.compliances(problem)).unwrap_or_default();
     let mut stage_iterations = 0;
-    for it in 1..=max_iterations {
+    // The state before the last (a two-state cycle is broken, `semi_smooth.rs`).
+    let mut before: Option<Vec<PairState>> = None;
+    for it in 1..=limit.stop {
         iterations = it;
         let Some((l, t)) = solve_state(problem, interface, w, start, &state, frictional, &compliances) else {
             status = ContactStatus::Numerical;
@@ -117,7 +171,10 @@ pub(crate) fn solve_frictional_active_set_from(
         let (gap, mut slip) = interface_values(interface, w, &problem.gap, &lambda, &tau, frictional);
         add_layer_slip(&mut slip, &compliances, &tau);
         let iterate = Iterate { normal_force: &lambda, tangential_force: &tau, gap: &gap, slip: &slip };
-        let next = next_state(problem, &iterate, start, (c_n, c_t), frictional);
+        let mut next = next_state(problem, &iterate, start, (c_n, c_t), frictional);
+        if before.as_ref() == Some(&next) {
+            stick_reversals(&state, &mut next);
+        }
         trace.push(IterationRecord {
             iteration: it,
             changed: next.iter().zip(&state).filter(|(a, b)| a != b).count(),
@@ -133,7 +190,7 @@ pub(crate) fn solve_frictional_active_set_from(
             // A regularised stage ends when its state settles or its share of the limit is
             // spent; its fixed point is a warm start, never the answer.
             stage_iterations += 1;
-            if settled || stage_iterations >= stage_limit(max_iterations) {
+            if settled || stage_iterations >= stage_limit(limit.of_step) {
                 stage = current.next();
                 compliances = stage.map(|s| s.compliances(problem)).unwrap_or_default();
                 stage_iterations = 0;
@@ -142,7 +199,7 @@ pub(crate) fn solve_frictional_active_set_from(
             status = ContactStatus::Converged;
             break;
         }
-        state = next;
+        before = Some(std::mem::replace(&mut state, next));
     }
     let raw = RawSolution {
         load_factor: w,

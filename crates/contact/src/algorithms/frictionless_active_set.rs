@@ -17,7 +17,7 @@ use web_time::Instant;
 use nalgebra::{DMatrix, DVector};
 
 use crate::algorithms::sparse_active_set::solve_sparse_active_set;
-use crate::algorithms::stick_continuation::{StartingStates, StickContinuation};
+use crate::algorithms::stick_continuation::{IterationLimit, StartingStates, StickContinuation};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
@@ -54,7 +54,7 @@ pub fn solve_frictionless_active_set(
             &initial,
             None,
             StartingStates::AllStick,
-            max_iterations,
+            IterationLimit::whole(max_iterations),
             StickContinuation::Off,
         );
     }

@@ -16,12 +16,14 @@
 //! sparse_active_set         the active set on the sparse full system (crate::kkt), no condensation
 //! semi_smooth               the state update and admissibility test of both active-set paths (shared)
 //! stick_continuation        regularised stick stages before the exact law (both active-set paths)
+//! coarse_start              a long interface's starting states from coarser sets of its pairs
 //! ```
 
 pub mod augmented_lagrangian;
 pub mod boussinesq;
 pub mod clarabel_qp;
 pub mod clarabel_tresca;
+pub(crate) mod coarse_start;
 pub mod frictional_active_set;
 pub mod frictionless_active_set;
 pub mod full_system;

@@ -87,7 +87,7 @@ pub fn solve_penalty(
     let mut state: Vec<PairState> = match guess {
         Some(g) if g.len() == m => g.to_vec(),
         _ => {
-            let u0 = problem.solver.solve(&rhs);
+            let u0 = problem.stiffness_factor().solve_or_nan(&rhs);
             law.state_of(&u0).into_iter().map(|s| if s == PairState::Free { s } else { PairState::Stick }).collect()
         }
     };

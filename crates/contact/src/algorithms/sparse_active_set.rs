@@ -11,17 +11,19 @@
 //! ```
 //!
 //! The same update and constants as the condensed path, which reads `C_kk` off the compliances:
-//! here they come from one multi-RHS solve, over every pair up to 64 pairs (the same constants
-//! up to round-off, so the same iterates) and over 8 pairs evenly spread beyond (an estimate of
-//! the same mean; `c` sets the path of the iteration, not its fixed point). A state that repeats
+//! here they come from one multi-RHS solve with the state system's factor with every row
+//! switched off (`[K 0; 0 I]`, so no factor of `K` alone is made), over every pair up to 64
+//! pairs (the same constants up to round-off, so the same iterates) and over 8 pairs evenly
+//! spread beyond (an estimate of the same mean; `c` sets the path of the iteration, not its
+//! fixed point). A state that repeats
 //! is the solution on either path, and the answers agree to round-off (`tests/sparse_path.rs`).
 
 use web_time::Instant;
 
 use crate::algorithms::full_system::{contact_stiffness, dot_free, row_offsets};
-use crate::algorithms::semi_smooth::{Iterate, admissible, next_state};
+use crate::algorithms::semi_smooth::{Iterate, admissible, next_state, stick_reversals};
 use crate::algorithms::stick_continuation::{
-    StartingStates, StickContinuation, StickStage, add_layer_slip, stage_limit,
+    IterationLimit, StartingStates, StickContinuation, StickStage, add_layer_slip, stage_limit,
 };
 use crate::interface::Interface;
 use crate::kkt::{Accuracy, StateKkt};
@@ -37,10 +39,11 @@ const COMPLIANCE_EXACT: usize = 64;
 const COMPLIANCE_SAMPLES: usize = 8;
 
 /// `(c_N, c_T)`: the condensed path's `1 / mean diag C_NN` and `1 / mean diag C_TT`
-/// (`C_kk = b_k · K⁻¹ b_k`), from one multi-RHS solve over every pair up to
-/// [`COMPLIANCE_EXACT`] pairs (the same constants, up to round-off) or over
-/// [`COMPLIANCE_SAMPLES`] pairs evenly spread (an estimate of the same mean).
-fn complementarity_constants(problem: &ContactProblem, frictional: bool) -> (f64, f64) {
+/// (`C_kk = b_k · K⁻¹ b_k`), from one multi-RHS solve with `kkt`'s factor with every row off
+/// over every pair up to [`COMPLIANCE_EXACT`] pairs (the same constants, up to round-off) or
+/// over [`COMPLIANCE_SAMPLES`] pairs evenly spread (an estimate of the same mean); `None` if
+/// that factorisation fails.
+fn complementarity_constants(problem: &ContactProblem, frictional: bool, kkt: &mut StateKkt) -> Option<(f64, f64)> {
     let m = problem.num_pairs();
     let picked: Vec<usize> = if m <= COMPLIANCE_EXACT {
         (0..m).collect()
@@ -51,18 +54,20 @@ fn complementarity_constants(problem: &ContactProblem, frictional: bool) -> (f64
     if frictional {
         rows.extend(picked.iter().map(|&k| &problem.tangent_rows[k]));
     }
-    let mut b = faer::Mat::<f64>::zeros(problem.system.dofs.num_free(), rows.len());
+    let mut z = faer::Mat::<f64>::zeros(kkt.dim(), rows.len());
     for (c, row) in rows.iter().enumerate() {
-        row.free.iter().for_each(|&(i, v)| b[(i, c)] += v);
+        row.free.iter().for_each(|&(i, v)| z[(i, c)] += v);
     }
-    let z = problem.solver.solve_many(&b);
+    if !kkt.solve_stiffness_many(&mut z) {
+        return None;
+    }
     let diagonal: Vec<f64> =
         rows.iter().enumerate().map(|(c, row)| row.free.iter().map(|&(i, v)| v * z[(i, c)]).sum()).collect();
     let p = picked.len().max(1) as f64;
     let c_n = 1.0 / (diagonal[..picked.len()].iter().sum::<f64>() / p).max(f64::MIN_POSITIVE);
     let c_t =
         if frictional { 1.0 / (diagonal[picked.len()..].iter().sum::<f64>() / p).max(f64::MIN_POSITIVE) } else { 0.0 };
-    (c_n, c_t)
+    Some((c_n, c_t))
 }
 
 /// Solves one step like [`crate::solve_frictional_active_set`], on the sparse path (`interface`
@@ -75,7 +80,7 @@ pub(crate) fn solve_sparse_active_set(
     start: &StepStart,
     guess: Option<&[PairState]>,
     starting: StartingStates,
-    max_iterations: usize,
+    limit: IterationLimit,
     continuation: StickContinuation,
 ) -> ContactSolution {
     let clock = Instant::now();
@@ -91,8 +96,10 @@ pub(crate) fn solve_sparse_active_set(
     }
     let mut cache = interface.kkt.0.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     if cache.as_ref().is_none_or(|kkt| kkt.is_frictional() != frictional) {
-        let constants = complementarity_constants(problem, frictional);
-        *cache = StateKkt::new(problem, frictional, contact_stiffness(problem), constants).ok();
+        *cache = StateKkt::new(problem, frictional, contact_stiffness(problem)).ok().and_then(|mut kkt| {
+            kkt.constants = complementarity_constants(problem, frictional, &mut kkt)?;
+            Some(kkt)
+        });
     }
     let (c_n, c_t) = cache.as_ref().map_or((0.0, 0.0), |kkt| kkt.constants);
     let (mut lambda, mut tau, mut u) = (vec![0.0; m], vec![0.0; m], vec![0.0; n]);
@@ -108,7 +115,10 @@ pub(crate) fn solve_sparse_active_set(
     // error (1e-4) flips pairs near the cone's edge, and the plain update then walks them back
     // one front pair per iteration (the floating pad at 3,001 pairs: 26 iterations from the
     // converged states; docs/benchmarks.md, "Floating bodies on long interfaces").
-    let exact_accuracy = if starting == StartingStates::AllStick { Accuracy::Trial } else { Accuracy::Final };
+    let exact_accuracy = match starting {
+        StartingStates::AllStick | StartingStates::Spread => Accuracy::Trial,
+        StartingStates::Close | StartingStates::Far => Accuracy::Final,
+    };
     let mut accuracy = if stage.is_some() { Accuracy::Trial } else { exact_accuracy };
     let mut compliances = stage.map(|s| s.compliances(problem)).unwrap_or_default();
     let mut stage_iterations = 0;
@@ -131,7 +141,7 @@ pub(crate) fn solve_sparse_active_set(
         let settled = next == state || admissible(problem, state, &iterate, start);
         Some((solution, next, settled))
     };
-    for it in 1..=max_iterations {
+    for it in 1..=limit.stop {
         iterations = it;
         let Some((mut solution, mut next, mut settled)) = evaluate(&state, accuracy, warm.as_deref(), &compliances)
         else {
@@ -144,7 +154,7 @@ pub(crate) fn solve_sparse_active_set(
             // answer).
             trace.push(record(it, &state, &next));
             stage_iterations += 1;
-            if settled || stage_iterations >= stage_limit(max_iterations) {
+            if settled || stage_iterations >= stage_limit(limit.of_step) {
                 stage = current.next();
                 compliances = stage.map(|s| s.compliances(problem)).unwrap_or_default();
                 stage_iterations = 0;
@@ -170,6 +180,11 @@ pub(crate) fn solve_sparse_active_set(
                 accuracy = Accuracy::Final;
             }
         }
+        // Back to the state before: a cycle. Its reversing pairs stick (`semi_smooth.rs`).
+        let cycle = before.as_ref() == Some(&next);
+        if cycle {
+            stick_reversals(&state, &mut next);
+        }
         trace.push(record(it, &state, &next));
         warm = Some(solution.unknowns);
         (lambda, tau, u) = (solution.normal_force, solution.tangential_force, solution.displacement);
@@ -177,9 +192,9 @@ pub(crate) fn solve_sparse_active_set(
             status = ContactStatus::Converged;
             break;
         }
-        // Back to the state before: a cycle, which the condensed path ends by the round-off
-        // test of `admissible` (a pair on the cone's edge); that test needs round-off accuracy.
-        if before.as_ref() == Some(&next) {
+        // A cycle, which the condensed path ends by the round-off test of `admissible` (a pair
+        // on the cone's edge) where no pair reverses; that test needs round-off accuracy.
+        if cycle {
             accuracy = Accuracy::Final;
         }
         before = Some(std::mem::replace(&mut state, next));

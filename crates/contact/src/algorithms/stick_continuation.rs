@@ -58,9 +58,12 @@ const STAGE_FACTOR: f64 = 10.0;
 pub enum StickContinuation {
     /// Regularised stages from 300 pairs on, when a step starts without a guess of the states
     /// (the first step of a history, or a one-step solve); none below 300 pairs or with a guess.
+    /// From 128 pairs, such a step that has not settled after 24 iterations goes on from
+    /// coarser sets of its pairs (`coarse_start.rs`).
     #[default]
     Auto,
-    /// The exact law from the first iteration (the plain primal-dual active set).
+    /// The exact law from the first iteration (the plain primal-dual active set), without
+    /// coarse levels.
     Off,
 }
 
@@ -88,6 +91,9 @@ pub(crate) enum StartingStates {
     /// A guess that may be far from the answer (a floating body's Newton step moved its pins,
     /// `floating.rs`): stages from the guess's states, as from the all-stick start.
     Far,
+    /// States spread from a coarser set of the pairs (`coarse_start.rs`): the plain iteration
+    /// from them, its states solved to trial accuracy on the sparse path until one repeats.
+    Spread,
 }
 
 impl StartingStates {
@@ -135,7 +141,9 @@ impl StickStage {
         let level = FIRST_LEVEL_PER_PAIR * m as f64;
         let mean_weight = problem.pairs.iter().map(|p| p.weight).sum::<f64>() / m.max(1) as f64;
         let usable = c_t.is_finite() && c_t > 0.0 && mean_weight.is_finite() && mean_weight > 0.0;
-        let wanted = frictional && starting != StartingStates::Close && applies(problem, continuation);
+        let wanted = frictional
+            && matches!(starting, StartingStates::AllStick | StartingStates::Far)
+            && applies(problem, continuation);
         (wanted && usable).then_some(StickStage { level, c_t, mean_weight })
     }
 
@@ -160,6 +168,24 @@ pub(crate) fn add_layer_slip(slip: &mut [f64], compliances: &[f64], tau: &[f64])
     }
 }
 
+/// How many iterations one active-set solve may take: it stops after `stop`; its regularised
+/// stages' shares are taken of the step's whole limit `of_step` (a solve that is one part of a
+/// step, `coarse_start.rs`, stops earlier without changing its stages).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct IterationLimit {
+    /// The iterations this solve may take.
+    pub(crate) stop: usize,
+    /// The step's limit (`solver.max_iterations`).
+    pub(crate) of_step: usize,
+}
+
+impl IterationLimit {
+    /// The whole step's limit for one solve.
+    pub(crate) fn whole(max_iterations: usize) -> IterationLimit {
+        IterationLimit { stop: max_iterations, of_step: max_iterations }
+    }
+}
+
 /// Iterations allowed to one regularised stage: a quarter of the step's limit (at least one),
 /// so that a stage that does not settle still leaves most of it to the exact law.
 pub(crate) fn stage_limit(max_iterations: usize) -> usize {
@@ -177,7 +203,7 @@ mod tests {
     fn stages_are_skipped_below_300_pairs_whatever_the_start() {
         let problem = crate::test_fixtures::two_blocks(CellKind::Quad9, 0.0, 0.004, 2.0, 0.05, 5, 3);
         assert!(problem.num_pairs() < 300);
-        for starting in [StartingStates::AllStick, StartingStates::Close, StartingStates::Far] {
+        for starting in [StartingStates::AllStick, StartingStates::Close, StartingStates::Far, StartingStates::Spread] {
             assert_eq!(StickStage::first(&problem, StickContinuation::Auto, 1.0, true, starting), None);
         }
     }
@@ -190,6 +216,7 @@ mod tests {
         assert!(first(StickContinuation::Auto, StartingStates::AllStick).is_some());
         assert!(first(StickContinuation::Auto, StartingStates::Far).is_some());
         assert_eq!(first(StickContinuation::Auto, StartingStates::Close), None);
+        assert_eq!(first(StickContinuation::Auto, StartingStates::Spread), None);
         assert_eq!(first(StickContinuation::Off, StartingStates::Far), None);
         assert_eq!(StickStage::first(&problem, StickContinuation::Auto, 1.0, false, StartingStates::Far), None);
         assert!(applies(&problem, StickContinuation::Auto) && !applies(&problem, StickContinuation::Off));

@@ -10,7 +10,7 @@
 //! tangential_penalty = 1e3   # penalty only: stick penalty / k_c (default: penalty)
 //! place_zone_ends = true     # boussinesq: nodes at l* and b* (preset default; generic: straight or circular master)
 //! linear = "auto"            # condensed, sparse: how the contact states' equations are solved
-//! stick_continuation = "auto" # off: the active set without regularised stick stages
+//! stick_continuation = "auto" # off: the active set without regularised stick stages or coarse levels
 //! floating_tolerance = 1e-10 # bodies held only by contact: the pins' force left, relative
 //! ```
 
