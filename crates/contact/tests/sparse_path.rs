@@ -263,8 +263,8 @@ fn one_step(problem: &ContactProblem, linear: LinearSolver) -> contact2d_contact
 /// coarse levels (`algorithms/coarse_start.rs`), not like the pair count. Before the coarse
 /// levels the frictionless press took 39, 75 iterations at 501, 1,001 pairs and stopped at the
 /// limit of 100 at 2,001; with μ = 0.3 the sparse path stopped at the limit from 501 pairs.
-/// Measured now: 32, 35, 38, 40 (frictionless) and 39, 45, 50, 54 (μ = 0.3; condensed 51 and
-/// 49 at 501 and 1,001) at 501 to 4,001 pairs, a few per doubling (one more level); the bound
+/// Measured now: 32, 35, 38, 40 (frictionless) and 39, 45, 50, 54 (μ = 0.3; condensed 43 and
+/// 47 at 501 and 1,001) at 501 to 4,001 pairs, a few per doubling (one more level); the bound
 /// of 8 per doubling would fail at the walk's rate (about a tenth of the pairs per doubling here).
 #[test]
 fn iterations_grow_like_the_levels_not_the_pairs() {
@@ -295,4 +295,34 @@ fn iterations_grow_like_the_levels_not_the_pairs() {
             assert!(pair[1] <= pair[0] + 8, "μ = {mu}: iterations {counts:?} grow by more than 8 per doubling");
         }
     }
+}
+
+/// A block held vertically only by contact, beyond [`contact2d_contact::SPARSE_FROM_PAIRS`]
+/// pairs: the sparse path's floating iteration solves with `K` alone, so it makes the deferred
+/// factor at its first solve (`crate::stiffness_factor`), and the step balances. Truths: the
+/// block is pressed by q = 10 over its width 2 and held along y by the interface alone, so the
+/// pair forces sum to 20 (a conservation law; the floating iteration stops at 1e-10 of the force
+/// scale, and summing 2,001 forces adds ~1e-13: 1e-8 of 20 is a margin); the same states and
+/// forces whether the deferred factor was made before the solve or by it (one factor of `K`,
+/// the same bits).
+#[test]
+fn a_floating_block_on_a_long_interface_makes_the_deferred_factor_when_it_needs_it() {
+    let mut built = floating_description([0.0, 3.0], 1300, 1000, Pairing::NodeToSegment).build().unwrap();
+    // Frictionless: with μ = 0.3 this block stops at `max_iterations` at 2,001 pairs (it
+    // converges at 1,001 in 169 and 224 iterations on the two paths; docs/benchmarks.md).
+    built.problem.set_friction(0.0).unwrap();
+    let problem = &built.problem;
+    assert!(problem.num_pairs() > contact2d_contact::SPARSE_FROM_PAIRS);
+    assert_eq!(problem.system.floating.len(), 1);
+    assert!(!problem.is_factored());
+    let schedule = LoadSchedule::new(vec!["press".into(), "slide".into()], vec![vec![1.0, 0.0]]).unwrap();
+    let settings = SolverSettings::new(ContactAlgorithm::ActiveSet).with_linear(LinearSolver::Sparse).unwrap();
+    let deferred = solve(problem, &settings, &schedule).unwrap().steps.remove(0).solution;
+    assert!(problem.is_factored(), "the floating iteration made K's factor");
+    assert_eq!(deferred.status, ContactStatus::Converged);
+    let total: f64 = deferred.normal_force.iter().sum();
+    assert!((total - 20.0).abs() <= 1e-8 * 20.0, "Σλ = {total}");
+    let again = solve(problem, &settings, &schedule).unwrap().steps.remove(0).solution;
+    assert_eq!(again.state, deferred.state);
+    assert_eq!(again.normal_force, deferred.normal_force);
 }

@@ -172,8 +172,8 @@ fn solve_from_states(
         add_layer_slip(&mut slip, &compliances, &tau);
         let iterate = Iterate { normal_force: &lambda, tangential_force: &tau, gap: &gap, slip: &slip };
         let mut next = next_state(problem, &iterate, start, (c_n, c_t), frictional);
-        if before.as_ref() == Some(&next) {
-            stick_reversals(&state, &mut next);
+        if let Some(before) = &before {
+            stick_reversals(before, &state, &mut next);
         }
         trace.push(IterationRecord {
             iteration: it,

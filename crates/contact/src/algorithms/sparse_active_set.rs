@@ -180,10 +180,11 @@ pub(crate) fn solve_sparse_active_set(
                 accuracy = Accuracy::Final;
             }
         }
-        // Back to the state before: a cycle. Its reversing pairs stick (`semi_smooth.rs`).
+        // Back to the state before: a cycle (its round-off needs the final accuracy, below).
+        // A pair back to its slip of the state before, reversed twice, sticks (`semi_smooth.rs`).
         let cycle = before.as_ref() == Some(&next);
-        if cycle {
-            stick_reversals(&state, &mut next);
+        if let Some(before) = &before {
+            stick_reversals(before, &state, &mut next);
         }
         trace.push(record(it, &state, &next));
         warm = Some(solution.unknowns);

@@ -103,7 +103,9 @@ pub struct Times {
     pub read: f64,
     /// Assembly, pairing and rows.
     pub assemble: f64,
-    /// Ordering and factorisation.
+    /// Ordering and factorisation of `K` (bordered by the pair rows up to 2,000 pairs; beyond,
+    /// `K`'s own factor is made only if something needs it, and the sparse path's
+    /// factorisations are part of `solve`).
     pub factor: f64,
     /// Condensation onto the interface.
     pub condense: f64,
