@@ -10,9 +10,10 @@
 //! path's active set solves every contact state on the saddle-point system (`crate::kkt`),
 //! whose factor with every row switched off is `K_ff`'s own, and never reads a Cholesky factor
 //! of `K_ff`: at 5,001 pairs on the long-interface benchmark that factor holds 48.2 M entries
-//! (0.39 GB) and takes 1.3 s. It is then made at the first solve that needs it: the condensed
-//! path asked for, floating bodies' rigid-motion iteration, the augmented Lagrangian's and the
-//! penalty method's first guess.
+//! (0.39 GB) and takes 1.3 s. It is then made at the first solve that needs it: floating
+//! bodies' rigid-motion iteration, the augmented Lagrangian's and the penalty method's first
+//! guess, and the condensed path asked for where bordering `K` by the pair rows fails
+//! (dependent rows; it borders `K` itself otherwise).
 
 use std::sync::{Arc, OnceLock};
 
