@@ -9,10 +9,16 @@
 //! pairs, a refined mesh failing where a coarse one converges. The same walk moves stick–slip
 //! fronts: pressed and slid by 0.2 of the press with μ = 0.3, the same blocks took 20, 40, 61
 //! and 93 iterations (condensed path) and the sparse path stopped at the limit from 501 pairs.
+//! It moves them from a guess as well: a block held only by contact (`tests/sparse_path.rs`),
+//! slid after its press, starts each step from the last one's states, and each Newton step on
+//! its rigid motion (`floating.rs`) starts the next solve from the states before it; at 1,001
+//! pairs a slide step walked its stick–slip fronts by a pair every other iteration and stopped at
+//! the limit.
 //!
 //! ```text
-//! plain:              the active set from every pair in contact and sticking, at most
-//!                     PLAIN_ITERATIONS iterations; settled: that is the answer
+//! plain:              the active set from its start (every pair in contact and sticking, or a
+//!                     guess of the states), at most PLAIN_ITERATIONS iterations; settled:
+//!                     that is the answer
 //! level ℓ = L, …, 1:  the pairs k ≡ 0 (mod 2^ℓ) keep their contact conditions, the others are
 //!                     left free (no normal or tangential unknown, as a pair held by fixes);
 //!                     solved from the states of level ℓ + 1 (level L: where the plain
@@ -25,8 +31,12 @@
 //! On level L a front moves by one kept pair, 2^L pairs, per iteration. Each level places the
 //! zone edges and stick–slip fronts to within about one of its kept pairs, so the next level,
 //! with twice as many, moves each front by a pair or two of its own: a few iterations per
-//! level and about `log₂(m / COARSEST_PAIRS)` levels. A step that settles within the plain
-//! iterations (short walks, as the long-interface presses) is unchanged. The coarse levels
+//! level and about `log₂(m / COARSEST_PAIRS)` levels. A solve that settles within the plain
+//! iterations (short walks, as the long-interface presses and most steps from a guess) is
+//! unchanged. Each level, and the last solve, is solved from its spread states as from a close
+//! guess: to round-off from its first iteration on the sparse path (a trial solution's error
+//! flipped slipping pairs near the fronts to stick, which the exact law then walked back a pair
+//! per iteration). The coarse levels
 //! are the same active set on the same interface (only the pairs' unknowns are switched off),
 //! and only their states are kept: the answer is the last solve's, on every pair, from its
 //! own fixed point. Pairs follow the order of the problem's list (along each master curve,
@@ -37,7 +47,7 @@ use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState};
 
-/// Pairs from which a step without a guess goes on from coarser levels.
+/// Pairs from which a solve that has not settled goes on from coarser levels.
 pub(crate) const COARSE_FROM: usize = 128;
 
 /// Iterations the plain active set takes before the coarse levels (a step that settles within
@@ -56,7 +66,7 @@ pub(crate) struct CoarseStart {
     pub(crate) trace: Vec<IterationRecord>,
 }
 
-/// Whether a step of `problem` without a guess may go on from coarse levels: at least
+/// Whether a solve on `problem` may go on from coarse levels: at least
 /// [`COARSE_FROM`] pairs, and the warm starts for long interfaces on.
 pub(crate) fn applies(problem: &ContactProblem, continuation: StickContinuation) -> bool {
     continuation == StickContinuation::Auto && problem.num_pairs() >= COARSE_FROM

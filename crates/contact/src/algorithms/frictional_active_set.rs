@@ -16,8 +16,9 @@
 //! The equations of a state are linear but not symmetric (the slip rows couple τ to λ); they are
 //! solved densely (2 × pairs unknowns). Convergence is not guaranteed for large μ: the iteration
 //! limit is then reported as [`ContactStatus::MaxIterations`]. On long interfaces the first step
-//! follows a regularised stick law to the exact one (`stick_continuation.rs`), so that the
-//! stick–slip fronts do not move by one pair per iteration.
+//! follows a regularised stick law to the exact one (`stick_continuation.rs`), and a solve that
+//! has not settled after 24 iterations goes on from coarser sets of the pairs
+//! (`coarse_start.rs`), so that the stick–slip fronts do not move by one pair per iteration.
 //!
 //! # References
 //! Hüeber, Stadler & Wohlmuth (2008), SIAM J. Sci. Comput. 30(2): a primal-dual active set
@@ -28,7 +29,7 @@ use web_time::Instant;
 use nalgebra::{DMatrix, DVector};
 
 use crate::algorithms::coarse_start::{self, coarse_start};
-use crate::algorithms::semi_smooth::{Iterate, admissible, next_state, stick_reversals};
+use crate::algorithms::semi_smooth::{Iterate, VisitedStates, admissible, next_state, stick_reversals};
 use crate::algorithms::sparse_active_set::solve_sparse_active_set;
 use crate::algorithms::state_equations::{combine, solve_regularised_state_equations};
 use crate::algorithms::stick_continuation::{
@@ -72,7 +73,7 @@ pub fn solve_frictional_active_set_with(
 
 /// [`solve_frictional_active_set_with`] told how far `guess` may be from the answer: from a
 /// [`StartingStates::Far`] guess the regularised stages run as from the all-stick start
-/// (`stick_continuation.rs`; a floating body's Newton step, `floating.rs`). Without a guess, a
+/// (`stick_continuation.rs`; a floating body's Newton step, `floating.rs`). From any start, a
 /// long interface whose iteration has not settled after [`coarse_start::PLAIN_ITERATIONS`]
 /// goes on from the states of coarser sets of its pairs (`coarse_start.rs`); the iterations and
 /// trace count every level's.
@@ -88,19 +89,18 @@ pub(crate) fn solve_frictional_active_set_from(
     continuation: StickContinuation,
 ) -> ContactSolution {
     let whole = IterationLimit::whole(max_iterations);
-    let coarse =
-        guess.is_none() && starting == StartingStates::AllStick && coarse_start::applies(problem, continuation);
+    let coarse = coarse_start::applies(problem, continuation);
     if !coarse || max_iterations <= coarse_start::PLAIN_ITERATIONS {
         return solve_from_states(problem, interface, w, start, guess, starting, whole, continuation);
     }
     let clock = Instant::now();
     let plain_limit = IterationLimit { stop: coarse_start::PLAIN_ITERATIONS, ..whole };
-    let plain = solve_from_states(problem, interface, w, start, None, starting, plain_limit, continuation);
+    let plain = solve_from_states(problem, interface, w, start, guess, starting, plain_limit, continuation);
     if plain.status != ContactStatus::MaxIterations {
         return plain;
     }
     let solve = |level: &ContactProblem, interface: &Interface, guess: Option<&[PairState]>, limit| {
-        solve_from_states(level, interface, w, start, guess, StartingStates::Spread, limit, continuation)
+        solve_from_states(level, interface, w, start, guess, StartingStates::Close, limit, continuation)
     };
     // The coarse levels take at most half of what the plain iteration left.
     let left = max_iterations - plain.iterations;
@@ -114,7 +114,7 @@ pub(crate) fn solve_frictional_active_set_from(
     let limit = IterationLimit { stop: max_iterations.saturating_sub(used).max(1), ..whole };
     let guess = Some(levels.states.as_slice());
     let mut solution =
-        solve_from_states(problem, interface, w, start, guess, StartingStates::Spread, limit, continuation);
+        solve_from_states(problem, interface, w, start, guess, StartingStates::Close, limit, continuation);
     trace.extend(solution.trace.iter().map(|r| IterationRecord { iteration: used + r.iteration, ..*r }));
     solution.trace = trace;
     solution.iterations += used;
@@ -161,6 +161,8 @@ fn solve_from_states(
     let mut stage_iterations = 0;
     // The state before the last (a two-state cycle is broken, `semi_smooth.rs`).
     let mut before: Option<Vec<PairState>> = None;
+    // The exact law's states so far (longer cycles are broken, `semi_smooth.rs`).
+    let mut visited = VisitedStates::default();
     for it in 1..=limit.stop {
         iterations = it;
         let Some((l, t)) = solve_state(problem, interface, w, start, &state, frictional, &compliances) else {
@@ -171,9 +173,16 @@ fn solve_from_states(
         let (gap, mut slip) = interface_values(interface, w, &problem.gap, &lambda, &tau, frictional);
         add_layer_slip(&mut slip, &compliances, &tau);
         let iterate = Iterate { normal_force: &lambda, tangential_force: &tau, gap: &gap, slip: &slip };
-        let mut next = next_state(problem, &iterate, start, (c_n, c_t), frictional);
+        let mut next = next_state(problem, &iterate, start, (c_n, c_t), &compliances, frictional);
         if let Some(before) = &before {
             stick_reversals(before, &state, &mut next);
+        }
+        // Converged when the state repeats, or when the iterate already satisfies every
+        // condition to round-off (a degenerate pair — λ = gap = 0 or |τ| = μλ with Δs = 0 —
+        // may otherwise flip forever on round-off).
+        let settled = next == state || admissible(problem, &state, &iterate, start);
+        if stage.is_none() && !settled {
+            visited.break_cycle(&state, &mut next);
         }
         trace.push(IterationRecord {
             iteration: it,
@@ -182,10 +191,6 @@ fn solve_from_states(
             slipping: state.iter().filter(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative)).count(),
             residual: 0.0,
         });
-        // Converged when the state repeats, or when the iterate already satisfies every
-        // condition to round-off (a degenerate pair — λ = gap = 0 or |τ| = μλ with Δs = 0 —
-        // may otherwise flip forever on round-off).
-        let settled = next == state || admissible(problem, &state, &iterate, start);
         if let Some(current) = stage {
             // A regularised stage ends when its state settles or its share of the limit is
             // spent; its fixed point is a warm start, never the answer.

@@ -21,7 +21,7 @@
 use web_time::Instant;
 
 use crate::algorithms::full_system::{contact_stiffness, dot_free, row_offsets};
-use crate::algorithms::semi_smooth::{Iterate, admissible, next_state, stick_reversals};
+use crate::algorithms::semi_smooth::{Iterate, VisitedStates, admissible, next_state, stick_reversals};
 use crate::algorithms::stick_continuation::{
     IterationLimit, StartingStates, StickContinuation, StickStage, add_layer_slip, stage_limit,
 };
@@ -109,6 +109,9 @@ pub(crate) fn solve_sparse_active_set(
     let (g_hat, s_hat) = row_offsets(problem, w);
     let mut warm: Option<Vec<f64>> = None;
     let mut before: Option<Vec<PairState>> = None;
+    // The exact law's states solved to round-off so far (longer cycles are broken,
+    // `semi_smooth.rs`; a trial solution's cycle goes to the final accuracy first).
+    let mut visited = VisitedStates::default();
     let mut stage = StickStage::first(problem, continuation, c_t, frictional, starting);
     // The exact law from a guess (a previous solve's states, or the stages' from one) resolves
     // the few pairs that change to round-off from its first iteration: a trial solution's
@@ -116,7 +119,7 @@ pub(crate) fn solve_sparse_active_set(
     // one front pair per iteration (the floating pad at 3,001 pairs: 26 iterations from the
     // converged states; docs/benchmarks.md, "Floating bodies on long interfaces").
     let exact_accuracy = match starting {
-        StartingStates::AllStick | StartingStates::Spread => Accuracy::Trial,
+        StartingStates::AllStick => Accuracy::Trial,
         StartingStates::Close | StartingStates::Far => Accuracy::Final,
     };
     let mut accuracy = if stage.is_some() { Accuracy::Trial } else { exact_accuracy };
@@ -137,7 +140,7 @@ pub(crate) fn solve_sparse_active_set(
             gap: &gap,
             slip: &slip,
         };
-        let next = next_state(problem, &iterate, start, (c_n, c_t), frictional);
+        let next = next_state(problem, &iterate, start, (c_n, c_t), e, frictional);
         let settled = next == state || admissible(problem, state, &iterate, start);
         Some((solution, next, settled))
     };
@@ -152,6 +155,9 @@ pub(crate) fn solve_sparse_active_set(
             // A regularised stage: its trial solutions only choose the next state; it ends when
             // its state settles or its share of the limit is spent (a warm start, never the
             // answer).
+            if let Some(before) = &before {
+                stick_reversals(before, &state, &mut next);
+            }
             trace.push(record(it, &state, &next));
             stage_iterations += 1;
             if settled || stage_iterations >= stage_limit(limit.of_step) {
@@ -163,7 +169,7 @@ pub(crate) fn solve_sparse_active_set(
                 }
             }
             warm = Some(solution.unknowns);
-            state = next;
+            before = Some(std::mem::replace(&mut state, next));
             continue;
         }
         if settled && accuracy == Accuracy::Trial {
@@ -185,6 +191,9 @@ pub(crate) fn solve_sparse_active_set(
         let cycle = before.as_ref() == Some(&next);
         if let Some(before) = &before {
             stick_reversals(before, &state, &mut next);
+        }
+        if accuracy == Accuracy::Final && !settled {
+            visited.break_cycle(&state, &mut next);
         }
         trace.push(record(it, &state, &next));
         warm = Some(solution.unknowns);

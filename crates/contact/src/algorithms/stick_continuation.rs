@@ -58,8 +58,8 @@ const STAGE_FACTOR: f64 = 10.0;
 pub enum StickContinuation {
     /// Regularised stages from 300 pairs on, when a step starts without a guess of the states
     /// (the first step of a history, or a one-step solve); none below 300 pairs or with a guess.
-    /// From 128 pairs, such a step that has not settled after 24 iterations goes on from
-    /// coarser sets of its pairs (`coarse_start.rs`).
+    /// From 128 pairs, a solve (with a guess or without) that has not settled after 24
+    /// iterations goes on from coarser sets of its pairs (`coarse_start.rs`).
     #[default]
     Auto,
     /// The exact law from the first iteration (the plain primal-dual active set), without
@@ -85,15 +85,13 @@ impl StickContinuation {
 pub(crate) enum StartingStates {
     /// No guess: every pair in contact and sticking (stages from 300 pairs).
     AllStick,
-    /// A guess close to the answer (the previous step's states, or a floating body's Jacobian
-    /// probe): the plain iteration from it.
+    /// A guess close to the answer (the previous step's states, a floating body's Jacobian
+    /// probe, or states spread from a coarser set of the pairs, `coarse_start.rs`): the plain
+    /// iteration from it.
     Close,
     /// A guess that may be far from the answer (a floating body's Newton step moved its pins,
     /// `floating.rs`): stages from the guess's states, as from the all-stick start.
     Far,
-    /// States spread from a coarser set of the pairs (`coarse_start.rs`): the plain iteration
-    /// from them, its states solved to trial accuracy on the sparse path until one repeats.
-    Spread,
 }
 
 impl StartingStates {
@@ -203,7 +201,7 @@ mod tests {
     fn stages_are_skipped_below_300_pairs_whatever_the_start() {
         let problem = crate::test_fixtures::two_blocks(CellKind::Quad9, 0.0, 0.004, 2.0, 0.05, 5, 3);
         assert!(problem.num_pairs() < 300);
-        for starting in [StartingStates::AllStick, StartingStates::Close, StartingStates::Far, StartingStates::Spread] {
+        for starting in [StartingStates::AllStick, StartingStates::Close, StartingStates::Far] {
             assert_eq!(StickStage::first(&problem, StickContinuation::Auto, 1.0, true, starting), None);
         }
     }
@@ -216,7 +214,6 @@ mod tests {
         assert!(first(StickContinuation::Auto, StartingStates::AllStick).is_some());
         assert!(first(StickContinuation::Auto, StartingStates::Far).is_some());
         assert_eq!(first(StickContinuation::Auto, StartingStates::Close), None);
-        assert_eq!(first(StickContinuation::Auto, StartingStates::Spread), None);
         assert_eq!(first(StickContinuation::Off, StartingStates::Far), None);
         assert_eq!(StickStage::first(&problem, StickContinuation::Auto, 1.0, false, StartingStates::Far), None);
         assert!(applies(&problem, StickContinuation::Auto) && !applies(&problem, StickContinuation::Off));
