@@ -193,6 +193,15 @@ fn floating_description(lower: [f64; 2], na: usize, nb: usize, pairing: Pairing)
     }
 }
 
+/// The floating block's history: pressed, then slid by 0.3, 0.6 and 1 of the "slide" pattern.
+fn press_and_slide() -> LoadSchedule {
+    LoadSchedule::new(
+        vec!["press".into(), "slide".into()],
+        vec![vec![1.0, 0.0], vec![1.0, 0.3], vec![1.0, 0.6], vec![1.0, 1.0]],
+    )
+    .unwrap()
+}
+
 #[test]
 fn a_floating_block_pressed_and_slid_with_every_pairing() {
     for &pairing in Pairing::ALL {
@@ -201,11 +210,7 @@ fn a_floating_block_pressed_and_slid_with_every_pairing() {
         let (lower, na) = if pairing == Pairing::NodeToNode { ([0.5, 2.5], 4) } else { ([0.0, 3.0], 7) };
         let built = floating_description(lower, na, 4, pairing).build().unwrap();
         assert_eq!(built.problem.system.floating.len(), 1, "{pairing:?}");
-        let schedule = LoadSchedule::new(
-            vec!["press".into(), "slide".into()],
-            vec![vec![1.0, 0.0], vec![1.0, 0.3], vec![1.0, 0.6], vec![1.0, 1.0]],
-        )
-        .unwrap();
+        let schedule = press_and_slide();
         let (condensed, sparse) = both_paths(&built.problem, &schedule);
         assert_agree(&condensed, &sparse);
     }
@@ -354,11 +359,7 @@ fn a_floating_block_pressed_and_slid_converges_on_a_long_interface() {
     let built = floating_description([0.0, 3.0], 650, 500, Pairing::NodeToSegment).build().unwrap();
     assert_eq!(built.problem.num_pairs(), 1001);
     assert_eq!(built.problem.system.floating.len(), 1);
-    let schedule = LoadSchedule::new(
-        vec!["press".into(), "slide".into()],
-        vec![vec![1.0, 0.0], vec![1.0, 0.3], vec![1.0, 0.6], vec![1.0, 1.0]],
-    )
-    .unwrap();
+    let schedule = press_and_slide();
     let (condensed, sparse) = both_paths(&built.problem, &schedule);
     assert_agree(&condensed, &sparse);
     for (i, step) in sparse.steps.iter().enumerate() {
