@@ -24,9 +24,11 @@
 //! Longer cycles pass through stick without reversing: on a block held only by contact at 1,001
 //! pairs (`tests/sparse_path.rs`), eleven pairs slipping the wrong way stuck, six of them slipped
 //! again, and the state came back every seven iterations until the limit. An update back to a
-//! visited state then changes one pair only (Murty's least-index rule: for a linear
-//! complementarity problem with a P-matrix it visits no state twice, so it ends), the lowest-
-//! numbered whose change leads somewhere new; the next update is a whole one again. Only the
+//! visited state then changes one pair only, the lowest-numbered whose change leads somewhere
+//! new; the next update is a whole one again. It borrows the idea of Murty's least-index method
+//! (one change at a time, the lowest index first, which for a linear complementarity problem
+//! with a P-matrix visits no state twice); applied only at a revisit it is a safeguard, not a
+//! proof of termination, and the iteration limit still bounds the solve. Only the
 //! exact law's states solved to round-off are recorded (a regularised stage's law differs, and a
 //! trial solution's cycle goes to round-off first, `sparse_active_set.rs`).
 
@@ -109,9 +111,8 @@ pub(crate) struct VisitedStates(std::collections::HashSet<Vec<PairState>>);
 impl VisitedStates {
     /// Records `state`; when `next` (not `state` itself) was visited before, the iteration is on
     /// a cycle, and `next` becomes `state` with only the change of the lowest-numbered pair that
-    /// leads to a state not yet visited (Murty's least-index rule, which ends every cycle of a
-    /// linear complementarity problem with a P-matrix in finitely many steps); `next` is left as
-    /// it is when every single change leads back to a visited state.
+    /// leads to a state not yet visited (module docs: after Murty's least-index method); `next`
+    /// is left as it is when every single change leads back to a visited state.
     pub(crate) fn break_cycle(&mut self, state: &[PairState], next: &mut [PairState]) {
         self.0.insert(state.to_vec());
         if next == state || !self.0.contains(&*next) {
