@@ -40,6 +40,7 @@ Examples:
   contact2d run scenes/plate_insert_nogap_mu03.toml --set plate_insert.rigid_insert=true
   contact2d run scenes/plate_insert_nogap_mu03.toml --set solver.algorithm=boussinesq -v
   contact2d run scenes/plate_insert_history_v1.toml --out out/history
+  contact2d run scenes/generic/pin_lug.toml --about 0,-30 --json
 
 --set takes a dotted key and a TOML value (a bare word is read as a string); it may set a key the
 file leaves at its default. The scene keys are listed in docs/user-guide.md.";
@@ -82,6 +83,10 @@ enum Command {
         /// also writes one CSV per interface and step (contact_<name>_step_<k>.csv).
         #[arg(long, value_name = "last|all", default_value = "last", value_parser = ["last", "all"])]
         profiles: String,
+        /// The centre `x,y` the moments (reaction_moments, reaction_moment_total, each
+        /// contact's moment) are taken about; the JSON's `moment_centre` (default the origin).
+        #[arg(long, value_name = "X,Y", value_parser = parse_centre, allow_hyphen_values = true)]
+        about: Option<[f64; 2]>,
     },
     /// Run a scene over the Cartesian product of varied values, in parallel; write sweep.csv,
     /// sweep.md and plots of the chosen outputs against the first varied key.
@@ -193,8 +198,9 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 writeln!(stdout, "{}\n{summary}", file.display())?;
             }
         }
-        Command::Run { scene, set, json, out, quiet, verbose, profiles } => {
-            run_scene(&scene, &set, json, out.as_deref(), (quiet, verbose, profiles == "all"))?;
+        Command::Run { scene, set, json, out, quiet, verbose, profiles, about } => {
+            let options = RunOptions { quiet, verbose, every_profile: profiles == "all", about };
+            run_scene(&scene, &set, json, out.as_deref(), options)?;
         }
         Command::Sweep { scene, vary, set, plot, out, quiet, shard, shards } => {
             let shard = contact2d::sweep::Shard::new(shard, shards)?;
@@ -224,16 +230,40 @@ fn run(cli: Cli) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// `--about x,y`: two finite numbers separated by a comma.
+fn parse_centre(text: &str) -> Result<[f64; 2], String> {
+    let parts: Vec<&str> = text.split(',').map(str::trim).collect();
+    let number = |p: &str| p.parse::<f64>().ok().filter(|v| v.is_finite());
+    match parts.as_slice() {
+        [x, y] => match (number(x), number(y)) {
+            (Some(x), Some(y)) => Ok([x, y]),
+            _ => Err(format!("expected two finite numbers X,Y, not {text:?}")),
+        },
+        _ => Err(format!("expected X,Y (two numbers separated by a comma), not {text:?}")),
+    }
+}
+
+/// How `run` runs and reports, besides the scene and its outputs.
+struct RunOptions {
+    quiet: bool,
+    verbose: bool,
+    every_profile: bool,
+    about: Option<[f64; 2]>,
+}
+
 /// `run`: solve any scene, print the summary (text or JSON), write the outputs.
 fn run_scene(
     path: &std::path::Path,
     set: &[String],
     json: bool,
     out: Option<&std::path::Path>,
-    (quiet, verbose, every_profile): (bool, bool, bool),
+    RunOptions { quiet, verbose, every_profile, about }: RunOptions,
 ) -> anyhow::Result<()> {
     let mut scene = contact2d::scene::Scene::load(path, set)?;
     scene.set_every_profile(every_profile);
+    if let Some(centre) = about {
+        scene.set_moment_centre(centre);
+    }
     scene.check_mesh_file()?;
     // The output folder is checked and locked before the work, so that a bad --out fails at
     // once and no other run writes there meanwhile.

@@ -38,7 +38,10 @@ pub(crate) fn print_summary(
             c.normal_force, c.tangential_force, c.contact_length, c.stick_length, c.max_pressure, c.dissipation
         )?;
         let [f1, f2] = c.resultant;
-        writeln!(out, "  contact {name}: resultant on the slave side [{f1:.6e}, {f2:.6e}]")?;
+        writeln!(out, "  contact {name}: resultant on the slave side [{f1:.6e}, {f2:.6e}], moment {:.6e}", c.moment)?;
+        if let Some(p) = c.mean_pressure {
+            writeln!(out, "  contact {name}: mean pressure (normal force / contact length) {p:.6e}")?;
+        }
         let where_ = |z: &contact2d::generic::zones::ZoneEnds| match &z.angles_deg {
             // + 0.0: an angle of −1e-15° prints as 0.0°, not −0.0°.
             Some(a) => a
@@ -47,12 +50,18 @@ pub(crate) fn print_summary(
                 .collect::<Vec<_>>(),
             None => z.points.chunks(2).map(|e| format!("{:?} to {:?}", e[0], e.get(1).unwrap_or(&e[0]))).collect(),
         };
-        writeln!(out, "  contact {name}: in contact {}", where_(&c.zones).join(", "))?;
-        if !c.stick_zones.s.is_empty() {
+        if c.zones.all_round {
+            writeln!(out, "  contact {name}: in contact all round")?;
+        } else {
+            writeln!(out, "  contact {name}: in contact {}", where_(&c.zones).join(", "))?;
+        }
+        if c.stick_zones.all_round {
+            writeln!(out, "  contact {name}: sticking all round")?;
+        } else if !c.stick_zones.s.is_empty() {
             writeln!(out, "  contact {name}: sticking {}", where_(&c.stick_zones).join(", "))?;
         }
-        if let Some([f1, f2]) = c.rigid_resultant {
-            writeln!(out, "  contact {name}: rigid obstacle's resultant [{f1:.6e}, {f2:.6e}]")?;
+        if let (Some([f1, f2]), Some(m)) = (c.rigid_resultant, c.rigid_moment) {
+            writeln!(out, "  contact {name}: rigid obstacle's resultant [{f1:.6e}, {f2:.6e}], moment {m:.6e}")?;
         }
         if let Some(f) = c.fretting.as_deref() {
             print_fretting(out, name, f)?;
@@ -61,10 +70,17 @@ pub(crate) fn print_summary(
     // A component the group's own fixes do not prescribe is "none" (JSON null).
     let component = |f: Option<f64>| f.map_or_else(|| "none".to_string(), |v| format!("{v:.6e}"));
     for (group, f) in &r.reactions {
-        writeln!(out, "  reaction {group}: [{}, {}]", component(f[0]), component(f[1]))?;
+        let moment = r.reaction_moments.get(group).map_or_else(String::new, |m| format!(", moment {m:.6e}"));
+        writeln!(out, "  reaction {group}: [{}, {}]{moment}", component(f[0]), component(f[1]))?;
     }
     let [t1, t2] = r.reactions_total;
-    writeln!(out, "  reactions total (every constrained DOF once): [{t1:.6e}, {t2:.6e}]")?;
+    writeln!(
+        out,
+        "  reactions total (every constrained DOF once): [{t1:.6e}, {t2:.6e}], moment {:.6e}",
+        r.reaction_moment_total
+    )?;
+    let [cx, cy] = r.moment_centre;
+    writeln!(out, "  moments about ({cx}, {cy}), counter-clockwise positive")?;
     for (body, e) in &r.energies {
         writeln!(out, "  energy {body}: {e:.6e}")?;
     }

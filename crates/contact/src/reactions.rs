@@ -106,6 +106,40 @@ impl ContactProblem {
         Ok(out)
     }
 
+    /// The moment about `centre` of the force pair `k` exerts on the nodes that `on` selects
+    /// (by node index), counter-clockwise positive, at the nodes' undeformed positions `x_a`
+    /// (small strain):
+    ///
+    /// ```text
+    /// M_k = Σ_{a ∈ on} (x_a − c) × f_a = Σ_{a ∈ on} (x_a,1 − c_1) f_a,2 − (x_a,2 − c_2) f_a,1
+    /// f_a = (B_N)_ka λ_k + (B_T)_ka τ_k
+    /// ```
+    ///
+    /// # Errors
+    /// [`ContactError::InvalidInput`] for a pair index out of range.
+    pub fn pair_moment_on(
+        &self,
+        k: usize,
+        (normal_force, tangential_force): (f64, f64),
+        centre: [f64; 2],
+        on: impl Fn(usize) -> bool,
+    ) -> Result<f64, ContactError> {
+        let (Some(normal), Some(tangent)) = (self.normal_rows.get(k), self.tangent_rows.get(k)) else {
+            return Err(ContactError::InvalidInput(format!("pair {k} of {}", self.num_pairs())));
+        };
+        let points = &self.model.mesh.points;
+        let mut moment = 0.0;
+        for (row, force) in [(normal, normal_force), (tangent, tangential_force)] {
+            for (dof, c) in self.row_entries(row).filter(|(dof, _)| on(dof.0 / 2)) {
+                let Some(x) = points.get(dof.0 / 2) else { continue };
+                // x × f for a force c·force along x1 (dof even) or x2 (dof odd).
+                let arm = if dof.0 % 2 == 0 { -(x[1] - centre[1]) } else { x[0] - centre[0] };
+                moment += arm * c * force;
+            }
+        }
+        Ok(moment)
+    }
+
     /// A row's entries with their global DOFs.
     fn row_entries<'a>(&'a self, row: &'a PairRow) -> impl Iterator<Item = (Dof, f64)> + 'a {
         let dofs = &self.system.dofs;

@@ -47,6 +47,8 @@ pub trait PresetScene: Debug + Send + Sync {
     fn mesh_path(&self) -> PathBuf;
     /// Whether every step's summary row carries the interfaces' profiles.
     fn set_every_profile(&mut self, every: bool);
+    /// The centre `[x, y]` the run's moments are taken about (`run --about x,y`).
+    fn set_moment_centre(&mut self, centre: [f64; 2]);
     /// Checks the mesh file before an output folder is prepared.
     ///
     /// # Errors

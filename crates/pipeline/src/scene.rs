@@ -121,6 +121,15 @@ impl Scene {
         }
     }
 
+    /// The centre `[x, y]` the run's moments (reactions, contacts) are taken about (`run --about
+    /// x,y`; default the origin), reported as `moment_centre`.
+    pub fn set_moment_centre(&mut self, centre: [f64; 2]) {
+        match self {
+            Scene::Generic(s) => s.moment_centre = centre,
+            Scene::Preset(s) => s.set_moment_centre(centre),
+        }
+    }
+
     /// Checks what can be checked before an output folder is prepared: the preset's mesh file
     /// (a generic scene's mesh is checked as it is read).
     ///

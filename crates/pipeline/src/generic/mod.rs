@@ -172,6 +172,13 @@ pub struct GenericReport {
     pub reactions: BTreeMap<String, [Option<f64>; 2]>,
     /// The last step's reactions of every constrained DOF, each once: `[R1, R2]`.
     pub reactions_total: [f64; 2],
+    /// The centre `[x, y]` the moments are taken about (`run --about x,y`; default the origin).
+    pub moment_centre: [f64; 2],
+    /// The last step's reaction moments per fixed group about `moment_centre` (the components
+    /// its own fixes prescribe).
+    pub reaction_moments: BTreeMap<String, f64>,
+    /// The last step's moment of every constrained DOF's reaction about `moment_centre`.
+    pub reaction_moment_total: f64,
     /// The last step's strain energy per body.
     pub energies: BTreeMap<String, f64>,
     /// The last step's KKT residuals.
@@ -209,6 +216,9 @@ impl GenericReport {
             contacts: self.contacts.clone(),
             reactions: self.reactions.clone(),
             reactions_total: self.reactions_total,
+            moment_centre: self.moment_centre,
+            reaction_moments: self.reaction_moments.clone(),
+            reaction_moment_total: self.reaction_moment_total,
             energies: self.energies.clone(),
             kkt: self.kkt,
             floating_bodies: self.floating_bodies.clone(),
@@ -391,7 +401,7 @@ fn solve_generic_from(
     // keep only what the next step needs.
     // Finite sliding's last problem (its pairs those of the last step), kept for the summary.
     let mut last_built: Option<BuiltProblem> = None;
-    let mut rows = SummaryRows::new(&built, &fixed, scene.every_profile);
+    let mut rows = SummaryRows::new(&built, &fixed, scene.every_profile).about(scene.moment_centre);
     // Finite sliding forms the pairs on the current configuration: the small-sliding check
     // (displacements against the undeformed pairs' segments) does not apply to the run.
     let finite: Vec<bool> = scene.contact.iter().map(|c| c.sliding == scene::SlidingKey::Finite).collect();

@@ -234,7 +234,9 @@ fn summary_of_steps(
         return Err(ContactError::InvalidInput("no load step".into()));
     };
     let fixed = super::fixed_groups(scene);
-    let mut rows = SummaryRows::new(&first.case.built, &fixed, scene.every_profile).without_sliding_check();
+    let mut rows = SummaryRows::new(&first.case.built, &fixed, scene.every_profile)
+        .without_sliding_check()
+        .about(scene.moment_centre);
     for ((step, _), solved) in steps.iter().zip(&solved) {
         rows.push(&step.case.built, solved)?;
     }

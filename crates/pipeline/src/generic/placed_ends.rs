@@ -60,11 +60,18 @@ pub(super) fn set_placed_ends(report: &mut GenericReport, i: usize, step: &Place
     let contact = zone(step.contact_end);
     let stick = zone(step.stick_end);
     let frictional = case.problem().friction.iter().any(|mu| *mu > 0.0);
+    let thickness = case
+        .built
+        .interfaces
+        .first()
+        .and_then(|f| case.problem().model.body(&f.master_region).map(|(_, b)| b.thickness))
+        .unwrap_or(1.0);
     let last = i + 1 == report.steps.len();
     let rows = report.steps.get_mut(i).and_then(|row| row.contacts.get_mut(&name)).into_iter();
     let summary = if last { report.contacts.get_mut(&name) } else { None };
     for result in rows.chain(summary) {
         result.contact_length = (contact.s[1] - contact.s[0]).abs();
+        result.mean_pressure = super::results::mean_pressure(result.normal_force, result.contact_length, thickness);
         result.zones = contact.clone();
         if frictional {
             result.stick_length = (stick.s[1] - stick.s[0]).abs();
@@ -81,7 +88,7 @@ fn zone_ends(case: &GenericCase, c: &[f64], arc: &[f64], from: f64, to: f64) -> 
     let points: Vec<[f64; 2]> = ends.iter().map(|e| case.curve.point(e.1)).collect();
     let angles_deg =
         case.curve.centre().map(|[cx, cy]| points.iter().map(|p| (p[1] - cy).atan2(p[0] - cx).to_degrees()).collect());
-    ZoneEnds { s: ends.iter().map(|e| e.0).collect(), points, angles_deg }
+    ZoneEnds { s: ends.iter().map(|e| e.0).collect(), points, angles_deg, all_round: false }
 }
 
 /// s(at): the arc length of the pair at coordinate `at`, else linear between the pairs around it

@@ -7,11 +7,14 @@
 //!     w_k: tributary length of master node k, t: thickness of the master body
 //! normal_force = Σ λ_k,  tangential_force = Σ τ_k                (forces; per unit thickness
 //!                                                                 where the thickness is 1)
-//! contact_length: along the master, from where contact starts to where it ends; each end
-//!     between the last pair in contact and the next free one, where the gap opens like
-//!     (s − end)^{3/2}: gap^{2/3} is interpolated linearly over the next two free pairs
-//! stick_length: likewise for the stick zone, with |Δs|^{2/3} of the next slipping pairs
-//!     (0 without friction)
+//! contact_length: along the master, from where contact starts to where it ends (the gaps
+//!     between contact zones included); each end between the last pair in contact and the next
+//!     free one, where the gap opens like (s − end)^{3/2}: gap^{2/3} is interpolated linearly
+//!     over the next two free pairs; on a closed master curve (a full circle) the shortest arc
+//!     holding every zone, up to the whole perimeter, a zone across the curve's start one zone
+//!     (generic/zones.rs)
+//! stick_length: likewise the stick zones' lengths summed, with |Δs|^{2/3} of the next
+//!     slipping pairs (0 without friction)
 //! dissipation = Σ_steps Σ_k −½(τ_k,start + τ_k) Δs_k over the interface's slipping pairs
 //!
 //! reactions.<group>[c] = Σ_{nodes of group} r_(node, c)  where the group's own [[fix]] entries
@@ -19,7 +22,30 @@
 //! reactions_total[c]   = Σ_{constrained DOFs in c} r      (every constrained DOF once)
 //! rigid_resultant      = Σ_k R_k over a rigid obstacle's pairs (its force on the bodies)
 //! Σ loads + reactions_total + Σ rigid_resultant = 0       (global equilibrium)
+//!
+//! Moments about the run's centre c (`moment_centre`, default the origin; `run --about x,y`),
+//! counter-clockwise positive, at the nodes' undeformed positions x_a (small strain):
+//!
+//! a × b = a_1 b_2 − a_2 b_1
+//! reaction_moments.<group> = Σ_{nodes of group} Σ_{c prescribed} (x_a − c) × r_(a, c) e_c
+//!     (the moment of the components the group's own fixes prescribe, as reactions.<group>:
+//!      a group fixing u2 only has the moment of its vertical reactions)
+//! reaction_moment_total    = Σ_{constrained DOFs} (x_a − c) × r e_c   (every DOF once)
+//! contacts.<n>.moment      = Σ_k Σ_{a on the slave} (x_a − c) × f_ka  (the force `resultant`
+//!     is; a rigid obstacle's: −rigid_moment)
+//! contacts.<n>.rigid_moment = Σ_k Σ_a (x_a − c) × f_ka  (a rigid obstacle's force on the bodies,
+//!     the moment of rigid_resultant)
+//! Σ (x_a − c) × f_loads,a + reaction_moment_total + Σ rigid_moment = 0   (moment balance)
 //! ```
+//!
+//! The moment balance holds about any centre because the forces balance; it holds to round-off
+//! where the interfaces between two bodies carry no moment of their own: a pair's normal force
+//! acts along the line through its two points (node-to-segment pairs project along the normal),
+//! but a tangential force τ_k across an initial gap g_k carries the internal couple g_k τ_k,
+//! which vanishes for touching or frictionless interfaces.
+//!
+//! mean_pressure = normal_force / (contact_length t)   (null where contact_length = 0), the
+//! mean of `pressure` over the contact length, with the same thickness t.
 //!
 //! The reactions `r` include the contact forces on constrained DOFs
 //! ([`contact2d_contact::ContactProblem::reactions`]).
@@ -30,7 +56,7 @@ use serde::Serialize;
 
 use contact2d_contact::{BuiltProblem, ContactError, ContactSolution, History, InterfaceInfo, PairState, SolvedStep};
 
-use super::zones::{ZoneEnds, zone_ends, zone_length};
+use super::zones::{PairCurve, ZoneEnds, ZoneMarks, zone_ends, zones_length, zones_span};
 use crate::output::step_view::state_label;
 
 /// The profile of one interface along its master curve, pair by pair in order of `s`.
@@ -61,10 +87,14 @@ pub struct ContactResult {
     pub normal_force: f64,
     /// Σ τ (force).
     pub tangential_force: f64,
-    /// Length in contact along the master curve.
+    /// Length in contact along the master curve: from where contact starts to where it ends
+    /// (on a closed curve up to its whole perimeter).
     pub contact_length: f64,
-    /// Length of the stick zone (0 without friction).
+    /// Length of the stick zones, summed (0 without friction).
     pub stick_length: f64,
+    /// `normal_force / (contact_length t)`: the mean contact pressure over the contact length
+    /// (a stress, as `pressure`; `None`, JSON `null`, where the contact length is 0).
+    pub mean_pressure: Option<f64>,
     /// The largest pressure.
     pub max_pressure: f64,
     /// Friction dissipation accumulated up to this step.
@@ -77,6 +107,16 @@ pub struct ContactResult {
     /// slave have none: their pair forces are internal).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rigid_resultant: Option<[f64; 2]>,
+    /// The moment of `resultant`'s forces about the run's centre, `Σ_k Σ_{a on the slave}
+    /// (x_a − c) × f_ka` at the undeformed positions (counter-clockwise positive).
+    pub moment: f64,
+    /// A rigid obstacle's moment about the run's centre of its force on the bodies (the
+    /// moment of `rigid_resultant`; the interfaces with a deformable slave have none).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rigid_moment: Option<f64>,
+    /// Whether the master curve closes on itself (a full circle): its zones are measured round
+    /// it, a zone across the curve's start being one zone.
+    pub closed: bool,
     /// Where the contact zones lie: each zone's two ends (in order along the master curve).
     pub zones: ZoneEnds,
     /// Where the stick zones lie (none without friction).
@@ -130,6 +170,12 @@ pub struct StepResult {
     /// `[R1, R2]`: the reactions of every constrained DOF, each counted once; with the loads and
     /// the rigid obstacles' resultants it sums to zero.
     pub reactions_total: [f64; 2],
+    /// Per fixed group: the moment about the run's centre of the reactions in the components
+    /// its own fixes prescribe, `Σ_a (x_a − c) × r_a` (counter-clockwise positive).
+    pub reaction_moments: BTreeMap<String, f64>,
+    /// The moment about the run's centre of every constrained DOF's reaction, each once; with
+    /// the loads' and the rigid obstacles' moments it sums to zero.
+    pub reaction_moment_total: f64,
     /// Per body: strain energy.
     pub energies: BTreeMap<String, f64>,
     /// Work of the loads and prescribed displacements up to this step, `W = Σ ½ (f_{i−1} + f_i) ·
@@ -200,6 +246,7 @@ pub fn step_results(
 pub struct StepResults<'a> {
     built: &'a BuiltProblem,
     fixed_groups: &'a [FixedGroup],
+    centre: [f64; 2],
     names: Vec<String>,
     owner: Vec<usize>,
     dissipated: Vec<f64>,
@@ -215,6 +262,7 @@ impl<'a> StepResults<'a> {
         StepResults {
             built,
             fixed_groups,
+            centre: [0.0; 2],
             names: problem.patterns().iter().map(|p| p.name.clone()).collect(),
             owner: dof_owners(problem),
             dissipated: vec![0.0; built.interfaces.len()],
@@ -222,6 +270,11 @@ impl<'a> StepResults<'a> {
             previous_force: vec![0.0; problem.system.dofs.num_global()],
             previous: None,
         }
+    }
+
+    /// The same results with moments about `centre` instead of the origin.
+    pub fn about(self, centre: [f64; 2]) -> Self {
+        StepResults { centre, ..self }
     }
 
     /// The next steps are solved on `built`: a problem of the same topology as the one before,
@@ -257,7 +310,10 @@ impl<'a> StepResults<'a> {
         let mut contacts = BTreeMap::new();
         for (k, iface) in built.interfaces.iter().enumerate() {
             self.dissipated[k] += interface_dissipation(iface, s, before_tangential);
-            contacts.insert(iface.name.clone(), contact_result(built, iface, s, self.dissipated[k], with_profile));
+            contacts.insert(
+                iface.name.clone(),
+                contact_result_about(built, iface, s, (self.dissipated[k], self.centre), with_profile),
+            );
         }
         let reactions = reactions_at_dofs(built, s, &step.factors)?;
         let force = external_force(built, &reactions, &step.factors);
@@ -281,6 +337,8 @@ impl<'a> StepResults<'a> {
             contacts,
             reactions: group_reactions(built, &reactions, self.fixed_groups),
             reactions_total: reactions_total(built, &reactions),
+            reaction_moments: group_reaction_moments(built, &reactions, self.fixed_groups, self.centre),
+            reaction_moment_total: reaction_moment_total(built, &reactions, self.centre),
             energies,
             work: self.work,
             dissipated: step.dissipated,
@@ -306,7 +364,9 @@ impl<'a> StepResults<'a> {
             .interfaces
             .iter()
             .zip(&self.dissipated)
-            .map(|(iface, d)| (iface.name.clone(), contact_result(built, iface, solution, *d, true)))
+            .map(|(iface, d)| {
+                (iface.name.clone(), contact_result_about(built, iface, solution, (*d, self.centre), true))
+            })
             .collect()
     }
 }
@@ -418,6 +478,47 @@ fn group_reactions(built: &BuiltProblem, at_dof: &[f64], groups: &[FixedGroup]) 
         .collect()
 }
 
+/// `(x − c) × f` for the force `f` in component `component` (0: x1, 1: x2) at `x`.
+fn moment_of(x: [f64; 2], centre: [f64; 2], component: usize, f: f64) -> f64 {
+    if component == 0 { -(x[1] - centre[1]) * f } else { (x[0] - centre[0]) * f }
+}
+
+/// The moment about `centre` of the reactions (global DOF order) of every constrained DOF.
+fn reaction_moment_total(built: &BuiltProblem, at_dof: &[f64], centre: [f64; 2]) -> f64 {
+    let points = &built.problem.model.mesh.points;
+    built
+        .problem
+        .system
+        .dofs
+        .constrained_dofs()
+        .iter()
+        .map(|d| points.get(d.0 / 2).map_or(f64::NAN, |x| moment_of(*x, centre, d.0 % 2, at_dof[d.0])))
+        .sum()
+}
+
+/// The moment about `centre` of each group's reactions in the components its own fixes
+/// prescribe (as [`group_reactions`]).
+fn group_reaction_moments(
+    built: &BuiltProblem,
+    at_dof: &[f64],
+    groups: &[FixedGroup],
+    centre: [f64; 2],
+) -> BTreeMap<String, f64> {
+    let points = &built.problem.model.mesh.points;
+    groups
+        .iter()
+        .filter_map(|g| {
+            let nodes = built.problem.model.mesh.group_nodes(&g.name).ok()?;
+            let moment = nodes
+                .iter()
+                .flat_map(|n| (0..2).filter(|c| g.components[*c]).map(move |c| (n.0, c)))
+                .map(|(n, c)| points.get(n).map_or(f64::NAN, |x| moment_of(*x, centre, c, at_dof[2 * n + c])))
+                .sum();
+            Some((g.name.clone(), moment))
+        })
+        .collect()
+}
+
 /// The interface's pairs sorted by arc length along the master.
 fn sorted_pairs(built: &BuiltProblem, iface: &InterfaceInfo) -> Vec<usize> {
     let pairs = &built.problem.pairs;
@@ -427,7 +528,8 @@ fn sorted_pairs(built: &BuiltProblem, iface: &InterfaceInfo) -> Vec<usize> {
 }
 
 /// One interface's results for the solution `s` of a step: forces, zone lengths, the largest
-/// pressure, the given accumulated dissipation and, if asked, the profile
+/// pressure, the given accumulated dissipation, moments about the given centre and, if asked,
+/// the profile
 /// (`p_k = λ_k / (w_k t_h)`, `q_k = τ_k / (w_k t_h)` with `w_k` the master node's tributary
 /// length and `t_h` the thickness).
 pub fn contact_result(
@@ -435,6 +537,17 @@ pub fn contact_result(
     iface: &InterfaceInfo,
     s: &ContactSolution,
     dissipation: f64,
+    with_profile: bool,
+) -> ContactResult {
+    contact_result_about(built, iface, s, (dissipation, [0.0; 2]), with_profile)
+}
+
+/// [`contact_result`] with the moments about `centre`.
+pub fn contact_result_about(
+    built: &BuiltProblem,
+    iface: &InterfaceInfo,
+    s: &ContactSolution,
+    (dissipation, centre): (f64, [f64; 2]),
     with_profile: bool,
 ) -> ContactResult {
     let problem = &built.problem;
@@ -446,15 +559,19 @@ pub fn contact_result(
     let sticks: Vec<bool> = order.iter().map(|&k| s.state[k] == PairState::Stick).collect();
     let gap: Vec<f64> = order.iter().map(|&k| s.gap[k].max(0.0)).collect();
     let slip: Vec<f64> = order.iter().map(|&k| s.slip_increment[k].abs()).collect();
-    let contact_length = zone_length(&arc, &in_contact, &gap, &in_contact);
-    // The stick zone lies inside the contact zone; their ends are interpolated from different
-    // profiles (slip against gap), which must not make the part longer than the whole.
-    let stick_length =
-        if iface.friction > 0.0 { zone_length(&arc, &sticks, &slip, &in_contact).min(contact_length) } else { 0.0 };
     let points: Vec<[f64; 2]> = order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0]).collect();
-    let ends = |inside: &[bool], opening: &[f64]| zone_ends(&arc, &points, inside, opening, &in_contact);
-    let zones = ends(&in_contact, &gap);
-    let stick_zones = if iface.friction > 0.0 { ends(&sticks, &slip) } else { ZoneEnds::default() };
+    let master = &iface.master_contour;
+    let curve = PairCurve { arc: &arc, points: &points, period: master.closed.then(|| master.length()) };
+    let contact = ZoneMarks { inside: &in_contact, opening: &gap, in_contact: &in_contact };
+    let stick = ZoneMarks { inside: &sticks, opening: &slip, in_contact: &in_contact };
+    let contact_length = zones_span(&curve, &contact);
+    // The stick zones lie inside the contact zones; their ends are interpolated from different
+    // profiles (slip against gap), which must not make the part longer than the whole.
+    let stick_length = if iface.friction > 0.0 { zones_length(&curve, &stick).min(contact_length) } else { 0.0 };
+    let zones = zone_ends(&curve, &contact);
+    let stick_zones = if iface.friction > 0.0 { zone_ends(&curve, &stick) } else { ZoneEnds::default() };
+    let normal_force = order.iter().map(|&k| s.normal_force[k]).sum();
+    let rigid_moment = iface.rigid_slave.then(|| interface_moment(built, iface, s, centre, |_| true));
     let profile = with_profile.then(|| {
         Box::new(Profile {
             s: arc.clone(),
@@ -468,19 +585,59 @@ pub fn contact_result(
         })
     });
     ContactResult {
-        normal_force: order.iter().map(|&k| s.normal_force[k]).sum(),
+        normal_force,
         tangential_force: order.iter().map(|&k| s.tangential_force[k]).sum(),
         contact_length,
         stick_length,
+        mean_pressure: mean_pressure(normal_force, contact_length, thickness),
         max_pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).fold(0.0, f64::max),
         dissipation,
         resultant: slave_resultant(built, iface, s),
         rigid_resultant: iface.rigid_slave.then(|| rigid_resultant(built, iface, s)),
+        moment: rigid_moment.map_or_else(|| slave_moment(built, iface, s, centre), |m| -m),
+        rigid_moment,
+        closed: master.closed,
         zones,
         stick_zones,
         profile,
         fretting: None,
     }
+}
+
+/// `normal_force / (contact_length t)`, the mean pressure over the contact length (`None` where
+/// the length is 0: no length to spread the force over).
+pub(crate) fn mean_pressure(normal_force: f64, contact_length: f64, thickness: f64) -> Option<f64> {
+    (contact_length > 0.0).then(|| normal_force / (contact_length * thickness))
+}
+
+/// The moment about `centre` of the interface's pair forces on the nodes `on` selects
+/// ([`contact2d_contact::ContactProblem::pair_moment_on`]; NaN, caught as a non-finite summary,
+/// if a pair were out of range).
+fn interface_moment(
+    built: &BuiltProblem,
+    iface: &InterfaceInfo,
+    s: &ContactSolution,
+    centre: [f64; 2],
+    on: impl Fn(usize) -> bool + Copy,
+) -> f64 {
+    iface
+        .pairs
+        .clone()
+        .map(|k| {
+            let forces = (s.normal_force[k], s.tangential_force[k]);
+            built.problem.pair_moment_on(k, forces, centre, on).unwrap_or(f64::NAN)
+        })
+        .sum()
+}
+
+/// The moment about `centre` of the contact forces on the slave curve's nodes (an interface
+/// with a deformable slave).
+fn slave_moment(built: &BuiltProblem, iface: &InterfaceInfo, s: &ContactSolution, centre: [f64; 2]) -> f64 {
+    let mut on_slave = vec![false; built.problem.model.mesh.num_nodes()];
+    for node in iface.slave_contour.nodes.iter() {
+        on_slave[node.0] = true;
+    }
+    interface_moment(built, iface, s, centre, |n| on_slave.get(n).copied().unwrap_or(false))
 }
 
 /// The force on the slave side of the interface: on the nodes of the slave curve, or, for a

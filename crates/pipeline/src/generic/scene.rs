@@ -291,6 +291,10 @@ pub struct GenericScene {
     /// (not a scene key: `run --profiles all`).
     #[serde(skip)]
     pub every_profile: bool,
+    /// The centre `[x, y]` the run's moments are taken about (not a scene key: `run --about
+    /// x,y`; default the origin).
+    #[serde(skip)]
+    pub moment_centre: [f64; 2],
     /// The displacements are in a unit of their own, a reference displacement L0 ≪ the lengths'
     /// unit (a preset's linearised theory, as the paper's u / L0 against x / R): the
     /// small-sliding check, which compares displacements with segment lengths, does not apply

@@ -43,6 +43,11 @@ impl<'a> SummaryRows<'a> {
         SummaryRows { sliding: SlidingWatch::none(), ..self }
     }
 
+    /// The same rows with moments about `centre` instead of the origin.
+    pub fn about(self, centre: [f64; 2]) -> Self {
+        SummaryRows { results: self.results.about(centre), ..self }
+    }
+
     /// The same rows, following the fretting numbers of the last load cycle too.
     pub fn with_fretting(self, watch: FrettingWatch) -> Self {
         SummaryRows { fretting: Some(watch), ..self }
@@ -224,6 +229,9 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
         contacts: last.contacts,
         reactions: last.reactions,
         reactions_total: last.reactions_total,
+        moment_centre: scene.moment_centre,
+        reaction_moments: last.reaction_moments,
+        reaction_moment_total: last.reaction_moment_total,
         energies: last.energies,
         kkt: last.kkt,
         floating_bodies,
@@ -256,9 +264,10 @@ fn non_finite_report(report: &GenericReport, in_steps: Option<String>) -> Option
 }
 
 /// The dotted path of the first non-finite number in a serialised summary (serde_json writes
-/// NaN and ±∞ as `null`). The only other `null` is a group reaction's component that the group
+/// NaN and ±∞ as `null`). The only other `null`s are a group reaction's component that the group
 /// does not prescribe (`reactions.<group>.<c>`): it is skipped, a NaN there being caught in
-/// `reactions_total`, which sums every constrained DOF.
+/// `reactions_total`, which sums every constrained DOF; and the `mean_pressure` of an interface
+/// with no contact length (a NaN normal force is caught in `normal_force`).
 fn non_finite(value: &serde_json::Value, at: &str) -> Option<String> {
     let join = |k: &str| if at.is_empty() { k.to_string() } else { format!("{at}.{k}") };
     match value {
@@ -267,6 +276,8 @@ fn non_finite(value: &serde_json::Value, at: &str) -> Option<String> {
             items.iter().enumerate().find_map(|(i, v)| non_finite(v, &join(&i.to_string())))
         }
         serde_json::Value::Object(map) => map.iter().find_map(|(k, v)| match (k.as_str(), v) {
+            // A mean pressure over no contact length is null by definition.
+            ("mean_pressure", serde_json::Value::Null) => None,
             ("reactions", serde_json::Value::Object(groups)) => groups.iter().find_map(|(g, f)| {
                 let components = f.as_array().map(|c| c.iter().filter(|v| !v.is_null()).cloned().collect());
                 non_finite(&serde_json::Value::Array(components.unwrap_or_default()), &join(&format!("reactions.{g}")))

@@ -2,6 +2,17 @@
 //! and ends, each end between the last pair inside and the next one outside, where the gap (or
 //! the slip) opens like the 3/2 power of the distance: `gap^{2/3}` is interpolated linearly over
 //! the next two outside pairs; on a circular curve also as angles about its centre.
+//!
+//! ```text
+//! stick length = Σ_zones (end − start)                 (the zones' lengths, summed)
+//! contact length = the span from the first zone's start to the last one's end (gaps included;
+//!     on a closed curve the shortest arc holding every zone)
+//! closed curve of length L (a full circle): the pair after the last is the first, at s + L;
+//!     a zone that crosses the curve's start is one zone, its start s in [0, L) and its end
+//!     beyond L; inside everywhere: one zone [s_0, s_0 + L], `all_round`, length L
+//! angles: the first end's atan2 in (−180°, 180°], each next one unwrapped to follow the
+//!     curve (within 180° of the previous end turned by ±Δs/R), so they are monotonic
+//! ```
 
 use contact2d_contact::placement::curve::circle_through as circle_through_three;
 use serde::Serialize;
@@ -11,28 +22,89 @@ use serde::Serialize;
 /// `contact_length` is (see the module docs).
 #[derive(Debug, Clone, PartialEq, Serialize, Default)]
 pub struct ZoneEnds {
-    /// Arc length along the master curve.
+    /// Arc length along the master curve (on a closed curve, a zone that crosses the curve's
+    /// start ends beyond its length).
     pub s: Vec<f64>,
     /// The points `[x, y]` on the master curve (undeformed).
     pub points: Vec<[f64; 2]>,
     /// For a master curve that is a circular arc (every node within 1e-6 of its radius of one
-    /// circle): the angles of the ends about its centre, degrees in (−180, 180]; absent otherwise.
+    /// circle): the angles of the ends about its centre, degrees, the first in (−180, 180], the
+    /// next ones unwrapped along the curve (monotonic); absent otherwise.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub angles_deg: Option<Vec<f64>>,
+    /// On a closed curve, inside at every pair: one zone all round (the whole perimeter).
+    #[serde(skip_serializing_if = "is_false")]
+    pub all_round: bool,
 }
 
-/// The ends of every zone of consecutive pairs where `inside` holds (see [`ZoneEnds`]), each
-/// end placed as in [`zone_length`]; `curve` holds the pairs' master nodes in the order of `arc`.
-pub(crate) fn zone_ends(
-    arc: &[f64],
-    curve: &[[f64; 2]],
-    inside: &[bool],
-    opening: &[f64],
-    in_contact: &[bool],
-) -> ZoneEnds {
-    let mut s = vec![];
-    let mut k = 0;
-    while k < inside.len() {
+fn is_false(b: &bool) -> bool {
+    !*b
+}
+
+/// An interface's master curve as its zones are measured on: the pairs' arc lengths (sorted)
+/// and master points in that order, and the curve's length if it closes on itself.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PairCurve<'a> {
+    /// Arc length of each pair's master node, ascending.
+    pub arc: &'a [f64],
+    /// Each pair's master node (undeformed), in the order of `arc`.
+    pub points: &'a [[f64; 2]],
+    /// The curve's length L where it closes on itself (the pair after the last is the first).
+    pub period: Option<f64>,
+}
+
+/// Which pairs a zone holds and how its ends are placed: `inside` marks the pairs in the zone,
+/// `opening` the quantity (gap, slip) that opens like the 3/2 power beyond an end, `in_contact`
+/// the pairs in contact (a stick zone ends at a free neighbour without interpolating).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct ZoneMarks<'a> {
+    /// The pairs in the zone.
+    pub inside: &'a [bool],
+    /// The gap or slip beyond the ends.
+    pub opening: &'a [f64],
+    /// The pairs in contact.
+    pub in_contact: &'a [bool],
+}
+
+/// Each zone's `[start, end]` (arc length) in order along the curve, and whether the one zone
+/// goes all round a closed curve.
+fn zone_spans(curve: &PairCurve<'_>, marks: &ZoneMarks<'_>) -> (Vec<[f64; 2]>, bool) {
+    let (arc, inside) = (curve.arc, marks.inside);
+    let n = inside.len().min(arc.len()).min(marks.opening.len()).min(marks.in_contact.len());
+    let Some(period) = curve.period.filter(|_| n > 0) else {
+        return (open_spans(arc, marks, 0..n), false);
+    };
+    let Some(j0) = inside[..n].iter().position(|v| !*v) else {
+        return (vec![[arc[0], arc[0] + period]], true);
+    };
+    // The closed curve unrolled from two pairs before the first outside one, j0, to two after
+    // it once round: every zone lies between the positions of j0 (2 and n + 2), each end with
+    // the two neighbours its placement reads.
+    let at = |p: usize| {
+        let q = (j0 + p) as isize - 2;
+        (q.rem_euclid(n as isize) as usize, q.div_euclid(n as isize) as f64 * period)
+    };
+    let positions: Vec<(usize, f64)> = (0..n + 4).map(at).collect();
+    let ext_arc: Vec<f64> = positions.iter().map(|(k, shift)| arc[*k] + shift).collect();
+    let pick = |v: &[bool]| positions.iter().map(|(k, _)| v[*k]).collect::<Vec<bool>>();
+    let (ext_inside, ext_contact) = (pick(inside), pick(marks.in_contact));
+    let ext_opening: Vec<f64> = positions.iter().map(|(k, _)| marks.opening[*k]).collect();
+    let ext = ZoneMarks { inside: &ext_inside, opening: &ext_opening, in_contact: &ext_contact };
+    let mut spans: Vec<[f64; 2]> = open_spans(&ext_arc, &ext, 2..n + 2)
+        .into_iter()
+        .map(|[a, b]| if a >= period { [a - period, b - period] } else { [a, b] })
+        .collect();
+    spans.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    (spans, false)
+}
+
+/// The zones of consecutive pairs where `inside` holds that start in `range` (open curve: the
+/// whole curve; each end placed as in [`zone_between`]).
+fn open_spans(arc: &[f64], marks: &ZoneMarks<'_>, range: std::ops::Range<usize>) -> Vec<[f64; 2]> {
+    let inside = marks.inside;
+    let mut spans = vec![];
+    let mut k = range.start;
+    while k < range.end {
         if !inside[k] {
             k += 1;
             continue;
@@ -41,17 +113,90 @@ pub(crate) fn zone_ends(
         while k + 1 < inside.len() && inside[k + 1] {
             k += 1;
         }
-        s.extend(zone_between(arc, inside, opening, in_contact, first, k));
+        spans.push(zone_between(arc, inside, marks.opening, marks.in_contact, first, k));
         k += 1;
     }
-    let points: Vec<[f64; 2]> = s.iter().map(|at| point_at(arc, curve, *at)).collect();
-    let angles_deg = circle_through(curve)
-        .map(|[cx, cy]| points.iter().map(|p| (p[1] - cy).atan2(p[0] - cx).to_degrees()).collect());
-    ZoneEnds { s, points, angles_deg }
+    spans
 }
 
-/// The point at arc length `at`, linear between the two nodes around it.
-fn point_at(arc: &[f64], points: &[[f64; 2]], at: f64) -> [f64; 2] {
+/// The length from where the zones start to where they end, the gaps between them included: on
+/// an open curve from the first zone's start to the last one's end; on a closed curve the
+/// shortest arc that holds every zone (the perimeter less the widest gap between two zones),
+/// the whole perimeter for a zone all round.
+pub(crate) fn zones_span(curve: &PairCurve<'_>, marks: &ZoneMarks<'_>) -> f64 {
+    let (spans, all_round) = zone_spans(curve, marks);
+    let (Some(first), Some(last)) = (spans.first(), spans.last()) else { return 0.0 };
+    let period = match curve.period {
+        Some(period) if !all_round => period,
+        _ => return (last[1] - first[0]).abs(),
+    };
+    // The widest gap, from the end of zone g to the start of the next (round the curve's start
+    // after the last zone); the span runs from that next zone's start round to zone g's end.
+    let n = spans.len();
+    let gap = |i: usize| spans[(i + 1) % n][0] - spans[i][1] + if i + 1 == n { period } else { 0.0 };
+    let g = (0..n).max_by(|a, b| gap(*a).total_cmp(&gap(*b))).unwrap_or(n - 1);
+    spans[g][1] - spans[(g + 1) % n][0] + if g + 1 == n { 0.0 } else { period }
+}
+
+/// The summed length of the zones (see [`ZoneEnds`]): the whole perimeter for a zone all round
+/// a closed curve.
+pub(crate) fn zones_length(curve: &PairCurve<'_>, marks: &ZoneMarks<'_>) -> f64 {
+    zone_spans(curve, marks).0.iter().map(|[a, b]| (b - a).abs()).sum()
+}
+
+/// The ends of every zone of consecutive pairs where `inside` holds (see [`ZoneEnds`]), each
+/// end placed as in [`zone_between`].
+pub(crate) fn zone_ends(curve: &PairCurve<'_>, marks: &ZoneMarks<'_>) -> ZoneEnds {
+    let (spans, all_round) = zone_spans(curve, marks);
+    let s: Vec<f64> = spans.iter().flatten().copied().collect();
+    let points: Vec<[f64; 2]> = s.iter().map(|at| point_at(curve, *at)).collect();
+    let angles_deg = circle_through(curve.points).map(|c| unwrapped_angles(curve.points, c, &s, &points));
+    ZoneEnds { s, points, angles_deg, all_round }
+}
+
+/// The angles (degrees) of `points`, the zone ends at arc lengths `s` in order, about the
+/// centre `c` of the circle through `curve`: the first by atan2 in (−180, 180], each next
+/// turned by 360° to lie within 180° of the previous one advanced by Δs / R in the curve's
+/// sense of rotation.
+fn unwrapped_angles(curve: &[[f64; 2]], c: [f64; 2], s: &[f64], points: &[[f64; 2]]) -> Vec<f64> {
+    let angle = |p: &[f64; 2]| (p[1] - c[1]).atan2(p[0] - c[0]).to_degrees();
+    let wrap = |d: f64| d - 360.0 * (d / 360.0).round();
+    // The curve's sense: +1 counter-clockwise about c, −1 clockwise.
+    let turn: f64 = curve.windows(2).map(|w| wrap(angle(&w[1]) - angle(&w[0]))).sum();
+    let sense = if turn < 0.0 { -1.0 } else { 1.0 };
+    let radius = curve.first().map_or(1.0, |p| (p[0] - c[0]).hypot(p[1] - c[1]));
+    let mut out: Vec<f64> = Vec::with_capacity(points.len());
+    for (i, p) in points.iter().enumerate() {
+        let a = angle(p);
+        let unwrapped = match (i.checked_sub(1).and_then(|j| out.get(j)), i.checked_sub(1).and_then(|j| s.get(j))) {
+            (Some(prev), Some(s_prev)) => {
+                let expected = prev + sense * ((s[i] - s_prev) / radius).to_degrees();
+                let turns = ((expected - a) / 360.0).round();
+                if turns == 0.0 { a } else { a + 360.0 * turns }
+            }
+            _ => a,
+        };
+        out.push(unwrapped);
+    }
+    out
+}
+
+/// The point at arc length `at`, linear between the two nodes around it (on a closed curve
+/// `at` is taken modulo its length, and the last node is followed by the first).
+fn point_at(curve: &PairCurve<'_>, at: f64) -> [f64; 2] {
+    let (arc, points) = (curve.arc, curve.points);
+    match (curve.period, arc.first(), points.first()) {
+        (Some(period), Some(a0), Some(p0)) if period > 0.0 => {
+            let arc: Vec<f64> = arc.iter().copied().chain([a0 + period]).collect();
+            let points: Vec<[f64; 2]> = points.iter().copied().chain([*p0]).collect();
+            point_between(&arc, &points, a0 + (at - a0).rem_euclid(period))
+        }
+        _ => point_between(arc, points, at),
+    }
+}
+
+/// The point at arc length `at` of an open chain, linear between the two nodes around it.
+fn point_between(arc: &[f64], points: &[[f64; 2]], at: f64) -> [f64; 2] {
     let i = arc.partition_point(|s| *s < at).clamp(1, arc.len().max(2) - 1);
     let (Some(a), Some(b)) = (points.get(i - 1), points.get(i)) else {
         return points.first().copied().unwrap_or([f64::NAN; 2]);
@@ -71,10 +216,12 @@ fn circle_through(points: &[[f64; 2]]) -> Option<[f64; 2]> {
     points.iter().all(|p| ((p[0] - cx).hypot(p[1] - cy) - r).abs() <= 1e-6 * r).then_some([cx, cy])
 }
 
-/// The length of the zone of pairs where `inside` holds (first to last such pair along `arc`),
-/// each end moved into the neighbouring interval where the quantity `opening` of the next two
-/// outside pairs opens like the 3/2 power; an end whose neighbour is outside the contact
-/// (`in_contact` false while measuring a stick zone) or missing stays at the last inside pair.
+/// The span of an open curve's pairs where `inside` holds, from the first such pair to the last
+/// (one zone: several zones' span includes the gaps between them, which [`ZoneEnds`] and the
+/// results' summed lengths do not), each end moved into the neighbouring interval where the
+/// quantity `opening` of the next two outside pairs opens like the 3/2 power; an end whose
+/// neighbour is outside the contact (`in_contact` false while measuring a stick zone) or
+/// missing stays at the last inside pair.
 pub fn zone_length(arc: &[f64], inside: &[bool], opening: &[f64], in_contact: &[bool]) -> f64 {
     let (Some(first), Some(last)) = (inside.iter().position(|v| *v), inside.iter().rposition(|v| *v)) else {
         return 0.0;
@@ -85,7 +232,8 @@ pub fn zone_length(arc: &[f64], inside: &[bool], opening: &[f64], in_contact: &[
 
 /// The two ends `[start, end]` (arc length) of the zone from pair `first` to pair `last`, each
 /// moved into the neighbouring interval where the `opening` of the next two outside pairs opens
-/// like the 3/2 power (see [`zone_length`]).
+/// like the 3/2 power; an end whose neighbour is outside the contact (`in_contact` false while
+/// measuring a stick zone) or missing stays at the last inside pair.
 fn zone_between(
     arc: &[f64],
     inside: &[bool],

@@ -65,6 +65,10 @@ impl PresetScene for PlateInsertScene {
         self.every_profile = every;
     }
 
+    fn set_moment_centre(&mut self, centre: [f64; 2]) {
+        self.moment_centre = centre;
+    }
+
     fn check_mesh_file(&self) -> Result<(), SceneError> {
         PlateInsertScene::check_mesh_file(self)
     }

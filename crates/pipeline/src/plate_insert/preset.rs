@@ -92,6 +92,7 @@ impl PlateInsert {
             base_dir: PathBuf::new(),
             file: PathBuf::from(&self.mesh),
             every_profile: false,
+            moment_centre: [0.0; 2],
             // u / L0 against x / R (spec §7): the paper's theory is linearised, L0 ≪ R.
             linearised_displacements: true,
         }

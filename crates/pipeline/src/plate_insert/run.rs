@@ -109,6 +109,7 @@ fn solve_scene_from(
     let mut expanded = case.generic_scene(&scene.name, &loads, &scene.solver);
     expanded.file = scene.file.clone();
     expanded.every_profile = scene.every_profile;
+    expanded.moment_centre = scene.moment_centre;
     let w = p.l_steps.is_empty().then_some(p.load);
     if placed {
         let (unit, scale) = if scaled { (vec![1.0], p.load) } else { (loads, 1.0) };
@@ -227,7 +228,9 @@ fn outcome_of_steps(
     let (Some(first), Some(last), Some(last_step)) = (steps.first(), steps.last(), solved.last()) else {
         return Err(ContactError::InvalidInput("no load step".into()));
     };
-    let mut rows = SummaryRows::new(&first.case.built, &fixed, expanded.every_profile).without_sliding_check();
+    let mut rows = SummaryRows::new(&first.case.built, &fixed, expanded.every_profile)
+        .without_sliding_check()
+        .about(expanded.moment_centre);
     for (step, solved) in steps.iter().zip(&solved) {
         rows.push(&step.case.built, solved)?;
     }

@@ -205,6 +205,10 @@ pub struct PlateInsertScene {
     /// a scene key: `run --profiles all`).
     #[serde(skip)]
     pub every_profile: bool,
+    /// The centre `[x, y]` the run's moments are taken about (not a scene key: `run --about
+    /// x,y`; default the origin).
+    #[serde(skip)]
+    pub moment_centre: [f64; 2],
 }
 
 impl PlateInsertScene {
