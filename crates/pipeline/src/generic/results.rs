@@ -35,14 +35,20 @@
 //!     is; a rigid obstacle's: −rigid_moment)
 //! contacts.<n>.rigid_moment = Σ_k Σ_a (x_a − c) × f_ka  (a rigid obstacle's force on the bodies,
 //!     the moment of rigid_resultant)
-//! Σ (x_a − c) × f_loads,a + reaction_moment_total + Σ rigid_moment = 0   (moment balance)
+//! contacts.<n>.couple = Σ_k Σ_a (x_a − c) × f_ka   (between two bodies: both sides' pair forces,
+//!     which sum to zero, so the same about any centre)
+//! Σ (x_a − c) × f_loads,a + reaction_moment_total + Σ rigid_moment + Σ couple = 0
+//!                                                          (moment balance, any centre c)
 //! ```
 //!
-//! The moment balance holds about any centre because the forces balance; it holds to round-off
-//! where the interfaces between two bodies carry no moment of their own: a pair's normal force
-//! acts along the line through its two points (node-to-segment pairs project along the normal),
-//! but a tangential force τ_k across an initial gap g_k carries the internal couple g_k τ_k,
-//! which vanishes for touching or frictionless interfaces.
+//! The balance follows from `K u = f + B_Nᵀ λ + B_Tᵀ τ + r`: `K` annihilates each body's
+//! infinitesimal rotation about c, `(−(y − c_2), x − c_1)`, as it does its translations. An
+//! interface between two bodies applies its pair forces at undeformed points on both sides: a
+//! normal force acts along the line through the pair's two points (it carries no couple), but a
+//! tangential force τ_k transmitted across an initial gap g_k acts at two points g_k apart, the
+//! couple ≈ g_k τ_k (0 where the sides touch or without friction): a small-strain model's
+//! artefact of the order of the clearance times the friction force, reported so that the
+//! balance closes.
 //!
 //! mean_pressure = normal_force / (contact_length t)   (null where contact_length = 0), the
 //! mean of `pressure` over the contact length, with the same thickness t.
@@ -114,6 +120,13 @@ pub struct ContactResult {
     /// moment of `rigid_resultant`; the interfaces with a deformable slave have none).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rigid_moment: Option<f64>,
+    /// Between two bodies: the moment of the pair forces on both sides together, which sum to
+    /// zero (the same about any centre): a tangential force across an initial gap `g_k` acts at
+    /// two points `g_k` apart, ≈ `Σ_k g_k τ_k` (0 where the sides touch or without friction);
+    /// with the loads', reactions' and rigid obstacles' moments it sums to zero. None for a
+    /// rigid obstacle (its moment is `rigid_moment`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub couple: Option<f64>,
     /// Whether the master curve closes on itself (a full circle): its zones are measured round
     /// it, a zone across the curve's start being one zone.
     pub closed: bool,
@@ -596,6 +609,7 @@ pub fn contact_result_about(
         rigid_resultant: iface.rigid_slave.then(|| rigid_resultant(built, iface, s)),
         moment: rigid_moment.map_or_else(|| slave_moment(built, iface, s, centre), |m| -m),
         rigid_moment,
+        couple: (!iface.rigid_slave).then(|| interface_moment(built, iface, s, centre, |_| true)),
         closed: master.closed,
         zones,
         stick_zones,
