@@ -282,6 +282,123 @@ mod tests {
         assert_eq!(zone_length(&arc, &[true; 5], &opening, &[true; 5]), 0.4);
     }
 
+    /// A closed curve of 96 pairs on a circle of radius 20 (counter-clockwise from angle 0,
+    /// arc length R θ): the pair after the last is the first.
+    fn circle() -> (Vec<f64>, Vec<[f64; 2]>, f64) {
+        let (n, r) = (96, 20.0);
+        let step = std::f64::consts::TAU / n as f64;
+        let arc: Vec<f64> = (0..n).map(|k| r * step * k as f64).collect();
+        let points: Vec<[f64; 2]> =
+            (0..n).map(|k| [r * (step * k as f64).cos(), r * (step * k as f64).sin()]).collect();
+        (arc, points, r * std::f64::consts::TAU)
+    }
+
+    /// In contact at every pair of a closed curve: one zone all round, the whole perimeter
+    /// (an open chain of the same pairs measured 124.35 of 125.66: the closing interval lost).
+    #[test]
+    fn a_closed_curve_in_contact_everywhere_is_in_contact_all_round() {
+        let (arc, points, perimeter) = circle();
+        let all = vec![true; arc.len()];
+        let zero = vec![0.0; arc.len()];
+        let curve = PairCurve { arc: &arc, points: &points, period: Some(perimeter) };
+        let marks = ZoneMarks { inside: &all, opening: &zero, in_contact: &all };
+        assert_eq!(zones_length(&curve, &marks), perimeter);
+        assert_eq!(zones_span(&curve, &marks), perimeter);
+        let ends = zone_ends(&curve, &marks);
+        assert!(ends.all_round);
+        assert_eq!(ends.s, vec![0.0, perimeter]);
+        // The angles go once round, counter-clockwise: 0° to 360° (to round-off of atan2).
+        let a = ends.angles_deg.unwrap();
+        assert!(a[0].abs() < 1e-12 && (a[1] - 360.0).abs() < 1e-9, "{a:?}");
+        let open = PairCurve { period: None, ..curve };
+        assert!((zones_span(&open, &marks) - (perimeter - perimeter / 96.0)).abs() < 1e-9);
+    }
+
+    /// A zone across the curve's start (angles 141° round to 208°, i.e. −152°) is one zone:
+    /// its ends are where the gap, (distance beyond the end)^{3/2}, opens (exact, as in the
+    /// open case), its angles unwrapped, its start in [0, L) and its end beyond L; a second
+    /// zone elsewhere adds its own length to the sum, and the span holds both.
+    #[test]
+    fn a_zone_across_the_start_of_a_closed_curve_is_one_zone() {
+        let (arc, points, perimeter) = circle();
+        let r = 20.0;
+        let (start, end) = (141f64.to_radians() * r, 208f64.to_radians() * r);
+        // Two zones: [141°, 208°] and [20°, 30°] (in contact where the distance to the zone is
+        // 0; the gap opens like its 3/2 power beyond each end, measured round the circle).
+        let zones = [(start, end), (20f64.to_radians() * r, 30f64.to_radians() * r)];
+        let distance = |s: f64| {
+            zones
+                .iter()
+                .map(|&(a, b)| {
+                    let inside = |t: f64| t >= a && t <= b;
+                    if inside(s) || inside(s + perimeter) {
+                        0.0
+                    } else {
+                        [a - s, a - s - perimeter, s - b, s + perimeter - b, s - perimeter - b]
+                            .into_iter()
+                            .filter(|d| *d >= 0.0)
+                            .fold(f64::INFINITY, f64::min)
+                    }
+                })
+                .fold(f64::INFINITY, f64::min)
+        };
+        let gap: Vec<f64> = arc.iter().map(|s| distance(*s).powf(1.5)).collect();
+        let inside: Vec<bool> = gap.iter().map(|g| *g == 0.0).collect();
+        let curve = PairCurve { arc: &arc, points: &points, period: Some(perimeter) };
+        let marks = ZoneMarks { inside: &inside, opening: &gap, in_contact: &inside };
+        let ends = zone_ends(&curve, &marks);
+        assert!(!ends.all_round);
+        assert_eq!(ends.s.len(), 4, "{:?}", ends.s);
+        // In order along the curve: [20°, 30°], then [141°, 208°] (its end beyond L).
+        let expected = [zones[1].0, zones[1].1, start, end];
+        for (got, want) in ends.s.iter().zip(expected) {
+            assert!((got - want).abs() < 1e-9, "{:?} against {expected:?}", ends.s);
+        }
+        let a = ends.angles_deg.unwrap();
+        // The ends lie on chords, not on the circle: their angles match to the chord's
+        // deviation (h² / 8R of the 1.3 step over R = 20, well below 0.1°).
+        for (got, want) in a.iter().zip([20.0, 30.0, 141.0, 208.0]) {
+            assert!((got - want).abs() < 0.1, "{a:?}");
+        }
+        assert!(a.windows(2).all(|w| w[1] > w[0]), "{a:?}");
+        let length = (zones[1].1 - zones[1].0) + (end - start);
+        assert!((zones_length(&curve, &marks) - length).abs() < 1e-9);
+        // The span that holds both zones: from 20° to 208°, the widest gap (208° round to 20°,
+        // 172°) left out.
+        let span = end - zones[1].0;
+        assert!((zones_span(&curve, &marks) - span).abs() < 1e-9);
+    }
+
+    /// Stick zones: their lengths summed (4 pairs stick at two places of a 96-pair contact:
+    /// the span from the first to the last, which counted the slip between them, was the
+    /// defect).
+    #[test]
+    fn the_stick_length_is_the_sum_of_the_stick_zones() {
+        let arc: Vec<f64> = (0..96).map(|k| k as f64).collect();
+        let in_contact = vec![true; 96];
+        let mut sticks = vec![false; 96];
+        for k in [10, 11, 80, 81] {
+            sticks[k] = true;
+        }
+        // Slip opening like (distance to the nearer stick zone)^{3/2}, the zones 9.5 .. 11.5 and
+        // 79.5 .. 81.5: the interpolation of slip^{2/3} recovers each end exactly.
+        let distance = |s: f64| {
+            [(9.5, 11.5), (79.5, 81.5)].iter().map(|&(a, b)| (a - s).max(s - b).max(0.0)).fold(f64::INFINITY, f64::min)
+        };
+        let slip: Vec<f64> = arc.iter().map(|s| distance(*s).powf(1.5)).collect();
+        let points: Vec<[f64; 2]> = arc.iter().map(|s| [*s, 0.0]).collect();
+        let curve = PairCurve { arc: &arc, points: &points, period: None };
+        let marks = ZoneMarks { inside: &sticks, opening: &slip, in_contact: &in_contact };
+        let ends = zone_ends(&curve, &marks);
+        assert_eq!(ends.s.len(), 4, "{:?}", ends.s);
+        for (got, want) in ends.s.iter().zip([9.5, 11.5, 79.5, 81.5]) {
+            assert!((got - want).abs() < 1e-12, "{:?}", ends.s);
+        }
+        assert!((zones_length(&curve, &marks) - 4.0).abs() < 1e-12, "{}", zones_length(&curve, &marks));
+        // The span from the first to the last end (72) is the old, wrong stick length.
+        assert!((zones_span(&curve, &marks) - 72.0).abs() < 1e-12);
+    }
+
     /// Points on a circle give its centre (exact up to round-off: the circumcentre of three of
     /// them); points on a line, or one off the circle by 1e-3 of the radius, give none.
     #[test]
