@@ -41,7 +41,12 @@ class Outcome:
     def groups(self) -> list[tuple[str, int, int]]: ...
     def write(self, out_dir: str | PathLike[str]) -> list[Path]: ...
 
-def solve(scene: Scene, profiles: str = "last", threads: int | None = None) -> Outcome: ...
+def solve(
+    scene: Scene,
+    profiles: str = "last",
+    threads: int | None = None,
+    about: tuple[float, float] | None = None,
+) -> Outcome: ...
 def compare(
     scene: str | PathLike[str],
     sets: list[str],

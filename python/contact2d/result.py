@@ -17,20 +17,28 @@ from . import _core
 PROFILE_COLUMNS = ("s", "x", "y", "pressure", "shear", "gap", "slip", "state")
 
 
-def solve(scene: _core.Scene, *, profiles: str = "last", threads: int | None = None) -> Result:
+def solve(
+    scene: _core.Scene,
+    *,
+    profiles: str = "last",
+    threads: int | None = None,
+    about: tuple[float, float] | None = None,
+) -> Result:
     """Solve ``scene`` as ``contact2d run SCENE --json`` does and return its :class:`Result`.
 
     The GIL is released while solving, so several threads solve concurrently. ``profiles`` is
     ``"last"`` (default) or ``"all"``: which steps carry the interfaces' profiles in the summary
     (the CLI's ``--profiles``). ``threads`` (an int >= 1) runs the solve on a thread pool of
     that size (the library's parallel parts: assembly, ordering, stress recovery); ``None`` uses
-    one thread per core. The results do not depend on it.
+    one thread per core. The results do not depend on it. ``about`` = ``(x, y)`` is the centre
+    the moments (``reaction_moments``, ``reaction_moment_total``, each contact's ``moment``) are
+    taken about (the CLI's ``--about x,y``; ``None``: the origin, ``json["moment_centre"]``).
 
     A solve that does not converge is a status (``result.status``), not an exception. Raises
     :class:`SceneError`, :class:`MeshError` or :class:`ContactError` with the CLI's message when
     the scene, its mesh or the problem's set-up is at fault.
     """
-    return Result(_core.solve(scene, profiles, threads))
+    return Result(_core.solve(scene, profiles, threads, about))
 
 
 def flatten(value: Any, prefix: str = "") -> dict[str, Any]:

@@ -62,10 +62,17 @@ pub struct Outcome {
 /// "all" (the CLI's `--profiles`). A non-converged solve is a status in the summary, not an
 /// exception; SceneError, MeshError and ContactError carry the CLI's messages. `threads` (≥ 1)
 /// runs the solve on a thread pool of that size (assembly, ordering and stress recovery are
-/// parallel); `None` uses the global pool (one thread per core).
+/// parallel); `None` uses the global pool (one thread per core). `about` = `(x, y)` is the
+/// centre the moments are taken about (the CLI's `--about x,y`; `None`: the origin).
 #[pyfunction]
-#[pyo3(signature = (scene, profiles = "last", threads = None))]
-pub fn solve(py: Python<'_>, scene: &Scene, profiles: &str, threads: Option<usize>) -> PyResult<Outcome> {
+#[pyo3(signature = (scene, profiles = "last", threads = None, about = None))]
+pub fn solve(
+    py: Python<'_>,
+    scene: &Scene,
+    profiles: &str,
+    threads: Option<usize>,
+    about: Option<(f64, f64)>,
+) -> PyResult<Outcome> {
     let every_profile = match profiles {
         "last" => false,
         "all" => true,
@@ -81,7 +88,15 @@ pub fn solve(py: Python<'_>, scene: &Scene, profiles: &str, threads: Option<usiz
                 .map_err(|e| PyRuntimeError::new_err(format!("threads: {e}")))?,
         ),
     };
-    let loaded = scene.parse().map_err(scene_error)?;
+    if let Some((x, y)) = about
+        && !(x.is_finite() && y.is_finite())
+    {
+        return Err(PyValueError::new_err(format!("about: expected two finite numbers (x, y), not ({x}, {y})")));
+    }
+    let mut loaded = scene.parse().map_err(scene_error)?;
+    if let Some((x, y)) = about {
+        loaded.set_moment_centre([x, y]);
+    }
     py.detach(move || match pool {
         Some(pool) => pool.install(|| run(loaded, every_profile)),
         None => run(loaded, every_profile),
