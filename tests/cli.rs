@@ -157,3 +157,29 @@ fn verify_prints_the_table_and_counts() {
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no such case"));
 }
+
+/// `--about X,Y` moves the moments' centre: the JSON says which (`moment_centre`), and the
+/// reactions' moment moves by the transfer rule `M_c = M_0 − c × R = M_0 − (c_1 R_2 − c_2 R_1)`
+/// with `R` = `reactions_total` (an identity of the sums, to their round-off: 1e-9 of |c| |R|).
+/// A bad centre is a one-line error.
+#[test]
+fn about_moves_the_moment_centre_by_the_transfer_rule() {
+    let scene = "scenes/generic/pin_lug_rigid_pin.toml";
+    let run = |extra: &[&str]| {
+        let (ok, stdout, stderr) = contact2d(&[&["run", scene, "--json", "-q"], extra].concat());
+        assert!(ok, "{stderr}");
+        serde_json::from_str::<serde_json::Value>(&stdout).unwrap()
+    };
+    let (origin, moved) = (run(&[]), run(&["--about", "30,-4.5"]));
+    assert_eq!(origin["moment_centre"], serde_json::json!([0.0, 0.0]));
+    assert_eq!(moved["moment_centre"], serde_json::json!([30.0, -4.5]));
+    let r = [origin["reactions_total"][0].as_f64().unwrap(), origin["reactions_total"][1].as_f64().unwrap()];
+    let m0 = origin["reaction_moment_total"].as_f64().unwrap();
+    let mc = moved["reaction_moment_total"].as_f64().unwrap();
+    let expected = m0 - (30.0 * r[1] - (-4.5) * r[0]);
+    assert!((mc - expected).abs() <= 1e-9 * 30.4 * r[0].hypot(r[1]), "{mc} against {expected}");
+    for bad in ["1", "a,b", "1,2,3", "inf,0"] {
+        let (ok, _, stderr) = contact2d(&["run", scene, "--about", bad]);
+        assert!(!ok && stderr.contains("--about") && !stderr.contains("panicked"), "{bad}: {stderr}");
+    }
+}
