@@ -122,8 +122,7 @@ fn a_support_released_after_step_one_gives_the_free_answer_of_a_second_solve() {
     for (k, pk) in pressures(&staged, 0).iter().enumerate() {
         assert!((pk / clamped - 1.0).abs() < 0.005, "step 1 pair {k}: {pk} against the clamped rim's {clamped}");
     }
-    let (u, v) =
-        (&staged.history.steps[1].solution.displacement, &free.history.steps[1].solution.displacement);
+    let (u, v) = (&staged.history.steps[1].solution.displacement, &free.history.steps[1].solution.displacement);
     let scale = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let worst = u.iter().zip(v).fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
     assert!(worst < 1e-9 * scale, "released: |u − u_free| = {worst:e} of {scale:e}");
@@ -141,7 +140,8 @@ fn a_support_released_after_step_one_gives_the_free_answer_of_a_second_solve() {
 #[test]
 fn a_staged_fix_adds_its_values_to_the_position_reached() {
     let path = Path::new("scenes/generic/two_blocks_press_slide.toml");
-    let text = std::fs::read_to_string(path).unwrap().replace("pattern = \"slide\"", "pattern = \"slide\"\nfrom_step = 3");
+    let text =
+        std::fs::read_to_string(path).unwrap().replace("pattern = \"slide\"", "pattern = \"slide\"\nfrom_step = 3");
     let scene = GenericScene::from_toml_str(&text, path, &[]).unwrap();
     let out = solve(&scene);
     let mesh = &out.built.problem.model.mesh;

@@ -81,6 +81,6 @@ pub use post::{contact_end, contact_end_from_pressure, pair_tractions, stick_end
 pub use problem::{BuildTimes, ContactProblem, LoadPattern, PairRow, SparseRow, condensed_rows};
 pub use report::{RawSolution, fem_solution, finish_from_displacement, finish_from_forces};
 pub use segment_to_segment::pair_segments;
-pub use stages::{Stage, solve_stages};
 pub use solution::{ContactSolution, ContactStatus, IterationRecord, KktResiduals, PairState, StepStart, Violation};
 pub use solve::{ContactAlgorithm, History, SolvedStep, SolverSettings, solve, solve_keeping, solve_with};
+pub use stages::{Stage, StageActivity, solve_stages};

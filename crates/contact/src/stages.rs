@@ -35,6 +35,10 @@ use crate::solve::{History, RunStart, SolvedStep, SolverSettings, solve_run_from
 /// pattern of a schedule: the steps handed on carry the problem's own patterns only).
 pub const HELD_PATTERN: &str = "held where the stage began";
 
+/// A stage's steps (indices from 0) and which fixes are active in them (one flag per fix of
+/// the [`ProblemDescription`]).
+pub type StageActivity = (Range<usize>, Vec<bool>);
+
 /// One stage: its steps and its problem.
 #[derive(Debug, Clone)]
 pub struct Stage {
@@ -54,7 +58,7 @@ impl ProblemDescription {
     /// # Errors
     /// No stage, stages that do not follow each other, a flag count that differs from the
     /// number of fixes, and every error of [`ProblemDescription::build_stage`].
-    pub fn build_stages(&self, activity: &[(Range<usize>, Vec<bool>)]) -> Result<Vec<Stage>, ContactError> {
+    pub fn build_stages(&self, activity: &[StageActivity]) -> Result<Vec<Stage>, ContactError> {
         if activity.is_empty() {
             return Err(ContactError::InvalidInput("staged supports without a stage".into()));
         }

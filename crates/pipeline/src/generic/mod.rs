@@ -387,7 +387,10 @@ fn solve_generic_from(
         for stage in &mut stages {
             adjust(&mut stage.built).map_err(contact_error)?;
         }
-        stages.first().map(|s| s.built.clone()).ok_or_else(|| contact_error(ContactError::InvalidInput("no stage".into())))?
+        stages
+            .first()
+            .map(|s| s.built.clone())
+            .ok_or_else(|| contact_error(ContactError::InvalidInput("no stage".into())))?
     } else {
         description.build().map_err(contact_error)?
     };

@@ -38,7 +38,7 @@ use serde::Deserialize;
 
 use contact2d_contact::{
     BodyDescription, ContactAlgorithm, ContactDescription, EdgeLoadKind, FixDescription, GapDescription,
-    LoadDescription, Pairing, ProblemDescription, SolverSettings,
+    LoadDescription, Pairing, ProblemDescription, SolverSettings, StageActivity,
     builder::{DEFAULT_PATTERN, pattern_order},
 };
 use contact2d_element::{Formulation, PlaneCondition, locking_warning};
@@ -476,7 +476,8 @@ impl GenericScene {
                 ));
             }
         }
-        let staged = self.fix.iter().position(|f| f.from_step.is_some_and(|k| k > 1) || f.until_step.is_some_and(|k| k < steps));
+        let staged =
+            self.fix.iter().position(|f| f.from_step.is_some_and(|k| k > 1) || f.until_step.is_some_and(|k| k < steps));
         if let Some(i) = staged {
             let key = if self.fix[i].from_step.is_some_and(|k| k > 1) { "from_step" } else { "until_step" };
             if self.contact.iter().any(|c| c.sliding == SlidingKey::Finite) {
@@ -504,7 +505,7 @@ impl GenericScene {
     ///
     /// # Errors
     /// The schedule's errors.
-    pub fn fix_stages(&self) -> Result<Vec<(std::ops::Range<usize>, Vec<bool>)>, SceneError> {
+    pub fn fix_stages(&self) -> Result<Vec<StageActivity>, SceneError> {
         let steps = self.schedule()?.steps().len();
         let active_in = |step: usize| -> Vec<bool> {
             let k = step + 1;
@@ -516,7 +517,7 @@ impl GenericScene {
                 })
                 .collect()
         };
-        let mut stages: Vec<(std::ops::Range<usize>, Vec<bool>)> = vec![];
+        let mut stages: Vec<StageActivity> = vec![];
         for step in 0..steps {
             let active = active_in(step);
             match stages.last_mut() {
