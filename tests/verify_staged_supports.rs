@@ -165,3 +165,22 @@ fn a_staged_fix_adds_its_values_to_the_position_reached() {
     }
     assert_eq!(out.report.steps[1].reactions["upper_top"], [None, None]);
 }
+
+/// The streaming run (each step handed on as solved, only the last kept) reports the same as
+/// the run that keeps every step, stage changes included.
+#[test]
+fn a_staged_run_streams_the_same_report() {
+    let scene = scene_with(&clamp("until_step = 1"));
+    let kept = solve(&scene);
+    let mut seen = 0;
+    let streamed =
+        contact2d::generic::solve_generic_streaming(&scene, &mut |_, _| {}, &mut |_, _, _| seen += 1).unwrap();
+    assert_eq!(seen, 2);
+    assert_eq!(streamed.history.steps.len(), 1);
+    let strip = |r: &contact2d::generic::GenericReport| {
+        let mut v = serde_json::to_value(r).unwrap();
+        v.as_object_mut().unwrap().remove("time_s");
+        v
+    };
+    assert_eq!(strip(&streamed.report), strip(&kept.report));
+}
