@@ -397,6 +397,12 @@ fn solve_generic_from(
     if stages.is_empty() {
         adjust(&mut built).map_err(contact_error)?;
     }
+    // Set-up time: the one problem's, or every stage's.
+    let build_times: Vec<_> = if stages.is_empty() {
+        vec![built.problem.build_times]
+    } else {
+        stages.iter().map(|s| s.built.problem.build_times).collect()
+    };
     let schedule = scene.schedule()?;
     let settings = scene.settings()?;
     let settings = match deadline {
@@ -460,8 +466,8 @@ fn solve_generic_from(
     };
     let times = Times {
         read,
-        assemble: built.problem.build_times.assemble.as_secs_f64(),
-        factor: built.problem.build_times.factor.as_secs_f64(),
+        assemble: build_times.iter().map(|t| t.assemble.as_secs_f64()).sum(),
+        factor: build_times.iter().map(|t| t.factor.as_secs_f64()).sum(),
         condense: history.condense_time.as_secs_f64(),
         solve: solve_time,
         post: post_time,
