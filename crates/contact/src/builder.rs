@@ -230,8 +230,32 @@ impl ProblemDescription {
     /// As [`ProblemDescription::build`], or a DOF numbering or sparsity pattern that differs
     /// from `previous`'s.
     pub fn build_reusing(&self, previous: Option<&ContactProblem>) -> Result<BuiltProblem, ContactError> {
+        self.build_with(previous, &vec![true; self.fixes.len()])
+    }
+
+    /// Like [`ProblemDescription::build`], with only the fixes where `active[i]` is true holding
+    /// their DOFs (a stage of staged supports, [`crate::stages`]); the others' DOFs are free.
+    /// The load patterns are those of every fix and load, so that every stage's problem has the
+    /// same patterns in the same order (a pattern that only an inactive fix's value names is
+    /// zero in the stage).
+    ///
+    /// # Errors
+    /// As [`ProblemDescription::build`], or `active` not holding one flag per fix.
+    pub fn build_stage(&self, active: &[bool]) -> Result<BuiltProblem, ContactError> {
+        if active.len() != self.fixes.len() {
+            return Err(ContactError::InvalidInput(format!(
+                "{} activity flags given for {} fixes",
+                active.len(),
+                self.fixes.len()
+            )));
+        }
+        self.build_with(None, active)
+    }
+
+    /// [`ProblemDescription::build_reusing`] with the fixes `active` selects.
+    fn build_with(&self, previous: Option<&ContactProblem>, active: &[bool]) -> Result<BuiltProblem, ContactError> {
         self.check_values()?;
-        let mut model = self.model(self.mesh.clone())?;
+        let mut model = self.model(self.mesh.clone(), active)?;
         if self.contacts.iter().any(|c| c.pairing == Pairing::NodeToNode) {
             let mut mesh = self.mesh.clone();
             for c in self.contacts.iter().filter(|c| c.pairing == Pairing::NodeToNode) {
@@ -291,7 +315,7 @@ impl ProblemDescription {
         };
         problem.set_gaps(gaps)?;
         problem.friction = friction;
-        let load_patterns = self.load_patterns(&problem, &patterns)?;
+        let load_patterns = self.load_patterns(&problem, &patterns, active)?;
         problem.set_patterns(load_patterns)?;
         Ok(BuiltProblem { problem, interfaces })
     }
@@ -332,7 +356,7 @@ impl ProblemDescription {
     }
 
     /// The model: every body, every fix; floating bodies allowed.
-    fn model(&self, mesh: Mesh) -> Result<Model, ContactError> {
+    fn model(&self, mesh: Mesh, active: &[bool]) -> Result<Model, ContactError> {
         let mut model = Model::new(mesh);
         model.allow_floating = true;
         for b in &self.bodies {
@@ -340,7 +364,7 @@ impl ProblemDescription {
                 .map_err(|e| ContactError::InvalidInput(format!("body \"{}\": {e}", b.region)))?;
             model.add_body_with(&b.region, material, b.thickness, b.formulation)?;
         }
-        for f in &self.fixes {
+        for f in self.fixes.iter().zip(active).filter(|(_, a)| **a).map(|(f, _)| f) {
             model.fix(&f.group, f.component, f.value)?;
         }
         Ok(model)
@@ -410,12 +434,18 @@ impl ProblemDescription {
     }
 
     /// Every pattern's right-hand side and prescribed values on the built problem.
-    fn load_patterns(&self, problem: &ContactProblem, names: &[String]) -> Result<Vec<LoadPattern>, ContactError> {
+    fn load_patterns(
+        &self,
+        problem: &ContactProblem,
+        names: &[String],
+        active: &[bool],
+    ) -> Result<Vec<LoadPattern>, ContactError> {
         let model = &problem.model;
         let dofs = &problem.system.dofs;
         let mut owner: Vec<Option<usize>> = vec![None; dofs.num_constrained()];
         let mut prescribed = vec![vec![0.0; dofs.num_constrained()]; names.len()];
-        for f in self.fixes.iter().filter(|f| f.value != 0.0) {
+        let given = self.fixes.iter().zip(active).filter(|(f, a)| **a && f.value != 0.0).map(|(f, _)| f);
+        for f in given {
             let p = names.iter().position(|n| *n == f.pattern).unwrap_or(0);
             for node in model.mesh.group_nodes(&f.group)? {
                 if let DofKind::Constrained(j) = dofs.kind(contact2d_fem::Dof::of(node.0, f.component)) {

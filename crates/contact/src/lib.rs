@@ -46,6 +46,7 @@ pub mod segment_to_segment;
 mod side;
 pub mod solution;
 pub mod solve;
+pub mod stages;
 mod stiffness_factor;
 
 pub use algorithms::augmented_lagrangian::solve_augmented_lagrangian;
@@ -82,3 +83,4 @@ pub use report::{RawSolution, fem_solution, finish_from_displacement, finish_fro
 pub use segment_to_segment::pair_segments;
 pub use solution::{ContactSolution, ContactStatus, IterationRecord, KktResiduals, PairState, StepStart, Violation};
 pub use solve::{ContactAlgorithm, History, SolvedStep, SolverSettings, solve, solve_keeping, solve_with};
+pub use stages::{Stage, StageActivity, solve_stages};

@@ -524,6 +524,71 @@ pub(crate) fn solve_step_from(
     solve_floating_step(&mut loaded, &mut interface, settings, &factors, &context, &modes, alpha)
 }
 
+/// Where a run of steps starts: the pattern factors, friction state and pair states the step
+/// before ended with, the floating bodies' rigid motions, and the step's number in the whole
+/// history (from 1).
+pub(crate) struct RunStart<'a> {
+    pub previous: &'a [f64],
+    pub start: &'a StepStart,
+    pub guess: Option<&'a [PairState]>,
+    pub first_step: usize,
+    pub total_steps: usize,
+}
+
+/// The steps to pattern factors `targets` on `problem`, each from the state the one before
+/// ended in, the first from `run` (a stage of staged supports, [`crate::stages`]): the loop of
+/// [`solve_keeping`] without its shortcut, `K` condensed once for the run. `on_step` is told
+/// each solution with its floating bodies' iterations and residual; the run stops after the
+/// first step that does not converge. Returns how many steps were solved.
+///
+/// # Errors
+/// The Boussinesq algorithm (its zone grows from one point over a proportional schedule), a
+/// passed deadline, and every error of a step.
+pub(crate) fn solve_run_from(
+    problem: &ContactProblem,
+    settings: &SolverSettings,
+    targets: &[Vec<f64>],
+    run: &RunStart,
+    on_step: &mut dyn FnMut(ContactSolution, usize, f64),
+) -> Result<usize, ContactError> {
+    if settings.algorithm == ContactAlgorithm::Boussinesq {
+        return Err(not_boussinesq(
+            "staged supports (from_step, until_step) change the problem between steps, and its zone grows from \
+             one point over a proportional schedule; use the active set"
+                .into(),
+        ));
+    }
+    let Some(first) = targets.first() else { return Ok(0) };
+    let mut loaded = problem.clone();
+    loaded.apply_load(first, None)?;
+    let mut interface = match settings.linear.resolve(settings.algorithm, problem.num_pairs())? {
+        LinearSolver::Sparse => Interface::sparse(&loaded),
+        _ => Interface::new(&loaded),
+    };
+    let modes = RigidModes::of(problem);
+    let mut alpha = vec![0.0; modes.len()];
+    let (mut previous, mut start, mut guess) = (run.previous.to_vec(), run.start.clone(), run.guess.map(<[_]>::to_vec));
+    for (i, target) in targets.iter().enumerate() {
+        let step = run.first_step + i;
+        if settings.deadline.is_some_and(|d| web_time::Instant::now() >= d) {
+            return Err(ContactError::DeadlineExceeded { step, steps: run.total_steps });
+        }
+        let context = StepContext { order: &[], start: &start, guess: guess.as_deref(), far_guess: false, step };
+        let factors = StepFactors { target, previous: &previous };
+        let (solution, iterations, residual) =
+            solve_floating_step(&mut loaded, &mut interface, settings, &factors, &context, &modes, &mut alpha)?;
+        let converged = solution.status.is_solved();
+        start = StepStart::after(&solution);
+        guess = Some(solution.state.clone());
+        previous.clone_from(target);
+        on_step(solution, iterations, residual);
+        if !converged {
+            return Ok(i + 1);
+        }
+    }
+    Ok(targets.len())
+}
+
 /// The refusal of the Boussinesq algorithm for `reason`.
 fn not_boussinesq(reason: String) -> ContactError {
     ContactError::NotApplicable { algorithm: ContactAlgorithm::Boussinesq.key(), reason }

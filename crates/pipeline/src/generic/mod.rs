@@ -29,8 +29,8 @@ use web_time::Instant;
 use serde::Serialize;
 
 use contact2d_contact::{
-    BuiltProblem, ContactError, History, Retention, SolvedStep, builder::group_length, solve_finite_sliding,
-    solve_keeping,
+    BuiltProblem, ContactError, History, Retention, SolvedStep, Stage, builder::group_length, solve_finite_sliding,
+    solve_keeping, solve_stages,
 };
 use contact2d_mesh::read_msh;
 
@@ -387,8 +387,32 @@ fn solve_generic_from(
     }
     let read = clock.elapsed().as_secs_f64();
     let groups = group_reports(scene, &mesh).map_err(contact_error)?;
-    let mut built = scene.description(mesh).build().map_err(contact_error)?;
-    adjust(&mut built).map_err(contact_error)?;
+    let activity = scene.fix_stages()?;
+    // Staged supports: one problem per stage, the first's the run's problem as built; else the
+    // scene's one problem, built as it always was (no stage).
+    let description = scene.description(mesh);
+    let mut stages: Vec<Stage> = vec![];
+    let mut built = if activity.len() > 1 {
+        stages = description.build_stages(&activity).map_err(contact_error)?;
+        for stage in &mut stages {
+            adjust(&mut stage.built).map_err(contact_error)?;
+        }
+        stages
+            .first()
+            .map(|s| s.built.clone())
+            .ok_or_else(|| contact_error(ContactError::InvalidInput("no stage".into())))?
+    } else {
+        description.build().map_err(contact_error)?
+    };
+    if stages.is_empty() {
+        adjust(&mut built).map_err(contact_error)?;
+    }
+    // Set-up time: the one problem's, or every stage's.
+    let build_times: Vec<_> = if stages.is_empty() {
+        vec![built.problem.build_times]
+    } else {
+        stages.iter().map(|s| s.built.problem.build_times).collect()
+    };
     let schedule = scene.schedule()?;
     let settings = scene.settings()?;
     let settings = match deadline {
@@ -426,7 +450,14 @@ fn solve_generic_from(
         post_time += post_clock.elapsed().as_secs_f64();
         on_step(i + 1, total);
     };
-    let history = if finite.iter().any(|f| *f) {
+    let history = if !stages.is_empty() {
+        // Each step is solved, and its rows made, on its stage's problem; the outcome keeps
+        // the last step's.
+        let (history, last) =
+            solve_stages(&stages, &settings, &schedule, retention, &mut observe).map_err(contact_error)?;
+        last_built = stages.into_iter().nth(last).map(|s| s.built);
+        history
+    } else if finite.iter().any(|f| *f) {
         // Each step is solved, and its rows made, on the pairs of its own configuration; the
         // outcome keeps the last step's.
         let (history, last) = solve_finite_sliding(&built, &finite, &settings, &schedule, retention, &mut observe)
@@ -445,8 +476,8 @@ fn solve_generic_from(
     };
     let times = Times {
         read,
-        assemble: built.problem.build_times.assemble.as_secs_f64(),
-        factor: built.problem.build_times.factor.as_secs_f64(),
+        assemble: build_times.iter().map(|t| t.assemble.as_secs_f64()).sum(),
+        factor: build_times.iter().map(|t| t.factor.as_secs_f64()).sum(),
         condense: history.condense_time.as_secs_f64(),
         solve: solve_time,
         post: post_time,
@@ -498,14 +529,34 @@ fn solve_placed_scene(
 }
 
 /// The groups of the scene's `[[fix]]` entries, each with the components any of its entries
-/// prescribes.
+/// prescribes, and, for a group of staged fixes, those its active entries prescribe step by
+/// step.
 pub(crate) fn fixed_groups(scene: &GenericScene) -> Vec<FixedGroup> {
+    let steps = scene.schedule().map_or(0, |s| s.steps().len());
     let mut out: Vec<FixedGroup> = vec![];
     for f in &scene.fix {
         let components = [f.u1.is_some(), f.u2.is_some()];
-        match out.iter_mut().find(|g| g.name == f.group) {
-            Some(g) => g.components = [g.components[0] || components[0], g.components[1] || components[1]],
-            None => out.push(FixedGroup { name: f.group.clone(), components }),
+        let group = match out.iter().position(|g| g.name == f.group) {
+            Some(at) => &mut out[at],
+            None => {
+                out.push(FixedGroup { name: f.group.clone(), components: [false; 2], components_by_step: None });
+                let last = out.len() - 1;
+                &mut out[last]
+            }
+        };
+        group.components = [group.components[0] || components[0], group.components[1] || components[1]];
+        if f.from_step.is_some() || f.until_step.is_some() {
+            group.components_by_step.get_or_insert_with(|| vec![[false; 2]; steps]);
+        }
+    }
+    // The components by step of the staged groups: those of their entries active in the step.
+    for group in &mut out {
+        let Some(by_step) = group.components_by_step.as_mut() else { continue };
+        for f in scene.fix.iter().filter(|f| f.group == group.name) {
+            let (from, until) = (f.from_step.unwrap_or(1), f.until_step.unwrap_or(steps));
+            for c in by_step.iter_mut().take(until).skip(from.saturating_sub(1)) {
+                *c = [c[0] || f.u1.is_some(), c[1] || f.u2.is_some()];
+            }
         }
     }
     out

@@ -235,6 +235,17 @@ pub struct FixedGroup {
     pub name: String,
     /// Whether u1 and u2 are prescribed (by any of the group's entries).
     pub components: [bool; 2],
+    /// For a group of staged fixes (`from_step`, `until_step`): the components its active
+    /// entries prescribe in each step (index from 0); `None` when every entry holds in every
+    /// step.
+    pub components_by_step: Option<Vec<[bool; 2]>>,
+}
+
+impl FixedGroup {
+    /// The components the group's entries prescribe in step `step` (from 0).
+    pub fn components_at(&self, step: usize) -> [bool; 2] {
+        self.components_by_step.as_ref().map_or(self.components, |c| c.get(step).copied().unwrap_or([false; 2]))
+    }
 }
 
 /// The results of every step of `history`, the profile kept at the last.
@@ -266,6 +277,8 @@ pub struct StepResults<'a> {
     work: f64,
     previous_force: Vec<f64>,
     previous: Option<(Vec<f64>, Vec<f64>)>,
+    /// The index of the next step (from 0).
+    step: usize,
 }
 
 impl<'a> StepResults<'a> {
@@ -282,6 +295,7 @@ impl<'a> StepResults<'a> {
             work: 0.0,
             previous_force: vec![0.0; problem.system.dofs.num_global()],
             previous: None,
+            step: 0,
         }
     }
 
@@ -348,7 +362,7 @@ impl<'a> StepResults<'a> {
             failed_check: failed_check(problem, step),
             iterations: s.iterations,
             contacts,
-            reactions: group_reactions(built, &reactions, self.fixed_groups),
+            reactions: group_reactions(built, &reactions, self.fixed_groups, self.step),
             reactions_total: reactions_total(built, &reactions),
             reaction_moments: group_reaction_moments(built, &reactions, self.fixed_groups, self.centre),
             reaction_moment_total: reaction_moment_total(built, &reactions, self.centre),
@@ -366,6 +380,7 @@ impl<'a> StepResults<'a> {
             },
         };
         self.previous = Some((s.displacement.clone(), s.tangential_force.clone()));
+        self.step += 1;
         Ok(result)
     }
 
@@ -478,14 +493,21 @@ fn external_force(built: &BuiltProblem, reactions: &[f64], factors: &[f64]) -> V
 }
 
 /// `[f1, f2]` summed over the reactions (global DOF order) of each group's nodes, in the
-/// components the group's own fixes prescribe (`None` in the others: a node there may be held
-/// by another group, whose reaction that is).
-fn group_reactions(built: &BuiltProblem, at_dof: &[f64], groups: &[FixedGroup]) -> BTreeMap<String, [Option<f64>; 2]> {
+/// components the group's own fixes prescribe in step `step` (`None` in the others: a node
+/// there may be held by another group, whose reaction that is; and a staged fix that does not
+/// hold in the step exerts no force of its own).
+fn group_reactions(
+    built: &BuiltProblem,
+    at_dof: &[f64],
+    groups: &[FixedGroup],
+    step: usize,
+) -> BTreeMap<String, [Option<f64>; 2]> {
     groups
         .iter()
         .filter_map(|g| {
             let nodes = built.problem.model.mesh.group_nodes(&g.name).ok()?;
-            let sum = |c: usize| g.components[c].then(|| nodes.iter().map(|n| at_dof[2 * n.0 + c]).sum::<f64>());
+            let components = g.components_at(step);
+            let sum = |c: usize| components[c].then(|| nodes.iter().map(|n| at_dof[2 * n.0 + c]).sum::<f64>());
             Some((g.name.clone(), [sum(0), sum(1)]))
         })
         .collect()

@@ -38,7 +38,7 @@ use serde::Deserialize;
 
 use contact2d_contact::{
     BodyDescription, ContactAlgorithm, ContactDescription, EdgeLoadKind, FixDescription, GapDescription,
-    LoadDescription, Pairing, ProblemDescription, SolverSettings,
+    LoadDescription, Pairing, ProblemDescription, SolverSettings, StageActivity,
     builder::{DEFAULT_PATTERN, pattern_order},
 };
 use contact2d_element::{Formulation, PlaneCondition, locking_warning};
@@ -120,6 +120,11 @@ pub struct FixEntry {
     /// The load pattern of its non-zero values (default `main`).
     #[serde(default = "main")]
     pub pattern: String,
+    /// The first step (from 1) it holds its DOFs in, at the position they have reached at the
+    /// end of the step before, plus its values (default 1: from the start).
+    pub from_step: Option<usize>,
+    /// The last step it holds its DOFs in; it releases them after (default: the last step).
+    pub until_step: Option<usize>,
 }
 
 /// One `[[load]]`: exactly one of `force`, `traction`, `pressure` (on a 1D group) or
@@ -443,7 +448,88 @@ impl GenericScene {
             ));
         }
         self.settings()?;
-        self.schedule().map(|_| ())
+        let steps = self.schedule()?.steps().len();
+        self.validate_fix_steps(steps)
+    }
+
+    /// `from_step` and `until_step` of every fix within the schedule's `steps` and in order,
+    /// and only where staged supports are solved (small sliding, an algorithm other than the
+    /// Boussinesq one).
+    fn validate_fix_steps(&self, steps: usize) -> Result<(), SceneError> {
+        for (i, f) in self.fix.iter().enumerate() {
+            for (key, step) in [("from_step", f.from_step), ("until_step", f.until_step)] {
+                match step {
+                    Some(0) => {
+                        return Err(self.fail(&format!("fix.{i}.{key}"), "0: steps count from 1".into()));
+                    }
+                    Some(k) if k > steps => {
+                        return Err(self.fail(
+                            &format!("fix.{i}.{key}"),
+                            format!("step {k} is past the last step of the schedule ({steps} steps)"),
+                        ));
+                    }
+                    _ => {}
+                }
+            }
+            if let (Some(from), Some(until)) = (f.from_step, f.until_step)
+                && from > until
+            {
+                return Err(self.fail(
+                    &format!("fix.{i}.from_step"),
+                    format!("step {from} is after until_step = {until}: the fix would hold in no step"),
+                ));
+            }
+        }
+        let staged =
+            self.fix.iter().position(|f| f.from_step.is_some_and(|k| k > 1) || f.until_step.is_some_and(|k| k < steps));
+        if let Some(i) = staged {
+            let key = if self.fix[i].from_step.is_some_and(|k| k > 1) { "from_step" } else { "until_step" };
+            if self.contact.iter().any(|c| c.sliding == SlidingKey::Finite) {
+                return Err(self.fail(
+                    &format!("fix.{i}.{key}"),
+                    "staged supports are solved with small sliding only (a contact has sliding = \"finite\")".into(),
+                ));
+            }
+            if self.solver.algorithm == ContactAlgorithm::Boussinesq {
+                return Err(self.fail(
+                    &format!("fix.{i}.{key}"),
+                    "staged supports change the problem between steps; the boussinesq algorithm grows one zone over \
+                     a proportional schedule (use active_set)"
+                        .into(),
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The stages of the scene's staged supports: runs of steps (indices from 0) over which the
+    /// set of active fixes is constant, each with one flag per fix of [`GenericScene::description`]
+    /// (a `[[fix]]` gives one per component it prescribes). One stage, every fix active, when
+    /// no fix is staged.
+    ///
+    /// # Errors
+    /// The schedule's errors.
+    pub fn fix_stages(&self) -> Result<Vec<StageActivity>, SceneError> {
+        let steps = self.schedule()?.steps().len();
+        let active_in = |step: usize| -> Vec<bool> {
+            let k = step + 1;
+            self.fix
+                .iter()
+                .flat_map(|f| {
+                    let on = f.from_step.is_none_or(|from| from <= k) && f.until_step.is_none_or(|until| k <= until);
+                    std::iter::repeat_n(on, usize::from(f.u1.is_some()) + usize::from(f.u2.is_some()))
+                })
+                .collect()
+        };
+        let mut stages: Vec<StageActivity> = vec![];
+        for step in 0..steps {
+            let active = active_in(step);
+            match stages.last_mut() {
+                Some((range, flags)) if *flags == active => range.end = step + 1,
+                _ => stages.push((step..step + 1, active)),
+            }
+        }
+        Ok(stages)
     }
 
     /// The pattern names the scene's values and loads use, `main` first

@@ -113,3 +113,33 @@ fn bad_cycles_are_errors_naming_the_key() {
     let err = with(&["loading.cycle=[{slide=1.0},{slide=-1.0}]", "loading.cycles=9223372036854775807"]).unwrap_err();
     assert!(err.contains("loading.cycles"), "{err}");
 }
+
+#[test]
+fn staged_supports_out_of_the_schedule_name_their_key() {
+    let path = Path::new("scenes/t.toml");
+    let err = |o: &[&str]| {
+        let o: Vec<String> = o.iter().map(|s| s.to_string()).collect();
+        GenericScene::from_toml_str(SCENE, path, &o).unwrap_err().to_string()
+    };
+    let past = err(&["fix.1.from_step=3"]);
+    assert!(past.contains("fix.1.from_step") && past.contains("past the last step"), "{past}");
+    let past = err(&["fix.0.until_step=3"]);
+    assert!(past.contains("fix.0.until_step") && past.contains("past the last step"), "{past}");
+    let after = err(&["fix.1.from_step=2", "fix.1.until_step=1"]);
+    assert!(after.contains("fix.1.from_step") && after.contains("after until_step"), "{after}");
+    assert!(err(&["fix.0.from_step=0"]).contains("fix.0.from_step"));
+    let finite = err(&["fix.1.from_step=2", "contact.0.sliding=finite"]);
+    assert!(finite.contains("fix.1.from_step") && finite.contains("finite"), "{finite}");
+    let boussinesq = err(&["fix.0.until_step=1", "solver.algorithm=boussinesq"]);
+    assert!(boussinesq.contains("fix.0.until_step") && boussinesq.contains("boussinesq"), "{boussinesq}");
+}
+
+#[test]
+fn stages_are_the_runs_of_steps_with_the_same_fixes() {
+    let path = Path::new("scenes/t.toml");
+    let s = GenericScene::from_toml_str(SCENE, path, &[]).unwrap();
+    // No staged fix: one stage, every fix (three components) active.
+    assert_eq!(s.fix_stages().unwrap(), vec![(0..2, vec![true, true, true])]);
+    let s = GenericScene::from_toml_str(SCENE, path, &["fix.1.from_step=2".into()]).unwrap();
+    assert_eq!(s.fix_stages().unwrap(), vec![(0..1, vec![true, true, false]), (1..2, vec![true, true, true])]);
+}

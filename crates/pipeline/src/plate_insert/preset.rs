@@ -50,6 +50,8 @@ impl PlateInsert {
             u1,
             u2,
             pattern: DEFAULT_PATTERN.into(),
+            from_step: None,
+            until_step: None,
         };
         let mut bodies = vec![body("plate", 1.0)];
         let mut fixes =
