@@ -13,6 +13,7 @@ pub mod fretting_outputs;
 pub mod outputs;
 pub mod placed;
 mod placed_ends;
+pub mod points;
 pub mod readme;
 pub mod results;
 pub mod scene;
@@ -34,6 +35,7 @@ use contact2d_contact::{
 };
 use contact2d_mesh::read_msh;
 
+pub use points::{PointResult, ResolvedPoint};
 pub use results::{ContactResult, FixedGroup, Kkt, Profile, StepResult};
 pub use scene::GenericScene;
 pub use summary::{SummaryInput, SummaryRows, summarise};
@@ -174,6 +176,9 @@ pub struct GenericReport {
     pub reactions_total: [f64; 2],
     /// The last step's strain energy per body.
     pub energies: BTreeMap<String, f64>,
+    /// The last step's motion and reactions of every `[[point]]` (none without points).
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub points: BTreeMap<String, PointResult>,
     /// The last step's KKT residuals.
     pub kkt: Kkt,
     /// Bodies held only by contact.
@@ -210,6 +215,7 @@ impl GenericReport {
             reactions: self.reactions.clone(),
             reactions_total: self.reactions_total,
             energies: self.energies.clone(),
+            points: self.points.clone(),
             kkt: self.kkt,
             floating_bodies: self.floating_bodies.clone(),
             groups: self.groups.clone(),
@@ -376,8 +382,9 @@ fn solve_generic_from(
         return solve_placed_scene(scene, mesh, clock, stream).map_err(contact_error);
     }
     let read = clock.elapsed().as_secs_f64();
+    let points = scene.resolve_points(&mesh)?;
     let groups = group_reports(scene, &mesh).map_err(contact_error)?;
-    let mut built = scene.description(mesh).build().map_err(contact_error)?;
+    let mut built = scene.description(mesh)?.build().map_err(contact_error)?;
     adjust(&mut built).map_err(contact_error)?;
     let schedule = scene.schedule()?;
     let settings = scene.settings()?;
@@ -391,7 +398,7 @@ fn solve_generic_from(
     // keep only what the next step needs.
     // Finite sliding's last problem (its pairs those of the last step), kept for the summary.
     let mut last_built: Option<BuiltProblem> = None;
-    let mut rows = SummaryRows::new(&built, &fixed, scene.every_profile);
+    let mut rows = SummaryRows::new(&built, &fixed, scene.every_profile).with_points(points);
     // Finite sliding forms the pairs on the current configuration: the small-sliding check
     // (displacements against the undeformed pairs' segments) does not apply to the run.
     let finite: Vec<bool> = scene.contact.iter().map(|c| c.sliding == scene::SlidingKey::Finite).collect();
@@ -492,10 +499,13 @@ fn solve_placed_scene(
 pub(crate) fn fixed_groups(scene: &GenericScene) -> Vec<FixedGroup> {
     let mut out: Vec<FixedGroup> = vec![];
     for f in &scene.fix {
-        let components = [f.u1.is_some(), f.u2.is_some()];
-        match out.iter_mut().find(|g| g.name == f.group) {
+        let Some(group) = &f.group else { continue };
+        // A rotation prescribes both components.
+        let turned = f.rotation.is_some();
+        let components = [f.u1.is_some() || turned, f.u2.is_some() || turned];
+        match out.iter_mut().find(|g| g.name == *group) {
             Some(g) => g.components = [g.components[0] || components[0], g.components[1] || components[1]],
-            None => out.push(FixedGroup { name: f.group.clone(), components }),
+            None => out.push(FixedGroup { name: group.clone(), components }),
         }
     }
     out
@@ -520,8 +530,9 @@ pub(crate) fn group_reports(
         .body
         .iter()
         .map(|b| b.region.clone())
-        .chain(scene.fix.iter().map(|f| f.group.clone()))
-        .chain(scene.load.iter().map(|l| l.group.clone()))
+        .chain(scene.fix.iter().filter_map(|f| f.group.clone()))
+        .chain(scene.load.iter().filter_map(|l| l.group.clone()))
+        .chain(scene.point.iter().filter_map(|p| p.group.clone()))
         .chain(scene.contact.iter().flat_map(|c| [c.master.clone(), c.slave.clone()]))
         .chain(scene.contact.iter().flat_map(|c| c.reference_groups.clone().into_iter().flatten()));
     let mut out = BTreeMap::new();

@@ -17,6 +17,7 @@
 //! reactions.<group>[c] = Σ_{nodes of group} r_(node, c)  where the group's own [[fix]] entries
 //!     prescribe c (null where they do not: another group's support is not this group's)
 //! reactions_total[c]   = Σ_{constrained DOFs in c} r      (every constrained DOF once)
+//! points.<name>: u_p, θ, R = Σ r over the point's nodes, M_R = Σ (x − p) × r  (super::points)
 //! rigid_resultant      = Σ_k R_k over a rigid obstacle's pairs (its force on the bodies)
 //! Σ loads + reactions_total + Σ rigid_resultant = 0       (global equilibrium)
 //! ```
@@ -30,6 +31,7 @@ use serde::Serialize;
 
 use contact2d_contact::{BuiltProblem, ContactError, ContactSolution, History, InterfaceInfo, PairState, SolvedStep};
 
+use super::points::{PointResult, ResolvedPoint};
 use super::zones::{ZoneEnds, zone_ends, zone_length};
 use crate::output::step_view::state_label;
 
@@ -132,6 +134,9 @@ pub struct StepResult {
     pub reactions_total: [f64; 2],
     /// Per body: strain energy.
     pub energies: BTreeMap<String, f64>,
+    /// Per `[[point]]`: its displacement, rotation and reactions (none without points).
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub points: BTreeMap<String, PointResult>,
     /// Work of the loads and prescribed displacements up to this step, `W = Σ ½ (f_{i−1} + f_i) ·
     /// (u_i − u_{i−1})` with `f` the nodal loads plus the reactions (trapezoid rule; exact for
     /// a history solved once and scaled).
@@ -200,6 +205,7 @@ pub fn step_results(
 pub struct StepResults<'a> {
     built: &'a BuiltProblem,
     fixed_groups: &'a [FixedGroup],
+    points: Vec<ResolvedPoint>,
     names: Vec<String>,
     owner: Vec<usize>,
     dissipated: Vec<f64>,
@@ -215,6 +221,7 @@ impl<'a> StepResults<'a> {
         StepResults {
             built,
             fixed_groups,
+            points: vec![],
             names: problem.patterns().iter().map(|p| p.name.clone()).collect(),
             owner: dof_owners(problem),
             dissipated: vec![0.0; built.interfaces.len()],
@@ -222,6 +229,11 @@ impl<'a> StepResults<'a> {
             previous_force: vec![0.0; problem.system.dofs.num_global()],
             previous: None,
         }
+    }
+
+    /// The same results reporting the motion and reactions of `points` too.
+    pub fn with_points(self, points: Vec<ResolvedPoint>) -> Self {
+        StepResults { points, ..self }
     }
 
     /// The next steps are solved on `built`: a problem of the same topology as the one before,
@@ -280,6 +292,7 @@ impl<'a> StepResults<'a> {
             iterations: s.iterations,
             contacts,
             reactions: group_reactions(built, &reactions, self.fixed_groups),
+            points: self.points.iter().map(|p| (p.name.clone(), p.result(&s.displacement, &reactions))).collect(),
             reactions_total: reactions_total(built, &reactions),
             energies,
             work: self.work,
