@@ -409,3 +409,33 @@ fn bad_points_fixes_and_loads_are_refused_naming_the_key() {
         assert_eq!(error_key(&text, mesh), key, "{text}");
     }
 }
+
+#[test]
+fn a_kinematic_point_fixed_as_a_group_fix_gives_the_same_problem_and_its_reaction() {
+    // `pad_on_base.toml`'s pad_top fix (u1 = 0, u2 = −0.001) posed as a kinematic point fixed at
+    // (0, −0.001), rotation 0: the same DOFs prescribed the same values, so the same solution.
+    // The point's reaction is the group's (1e-10 of the force: the same sums in another order),
+    // and a distributing point coupled to the clamped base_bottom reports its opposite.
+    let path = Path::new("scenes/generic/pad_on_base.toml");
+    let original = contact2d::generic::load_scene(path, &[]).unwrap();
+    let original = contact2d::generic::solve_generic(&original, &mut |_, _| {}).unwrap().report;
+    let text = std::fs::read_to_string(path).unwrap().replace(
+        "[[fix]]\ngroup = \"pad_top\"\nu1 = 0.0\nu2 = -0.001\n",
+        "[[point]]\nname = \"cap\"\nat = [2.5, 1.2]\ngroup = \"pad_top\"\ncoupling = \"kinematic\"\n\
+         [[point]]\nname = \"anchor\"\nat = [2.5, 0.0]\ngroup = \"base_bottom\"\ncoupling = \"distributing\"\n\
+         [[fix]]\npoint = \"cap\"\nu1 = 0.0\nu2 = -0.001\nrotation = 0.0\n",
+    );
+    assert!(text.contains("name = \"cap\""));
+    let posed = GenericScene::from_toml_str(&text, path, &[]).unwrap();
+    let posed = contact2d::generic::solve_generic(&posed, &mut |_, _| {}).unwrap().report;
+    assert_eq!(posed.status, "converged");
+    let expected = original.reactions["pad_top"];
+    let force = expected[1].unwrap().abs();
+    let (cap, anchor) = (posed.points["cap"], posed.points["anchor"]);
+    for c in 0..2 {
+        assert!((cap.reaction[c] - expected[c].unwrap()).abs() <= 1e-10 * force, "{:?} {expected:?}", cap.reaction);
+        assert!((cap.reaction[c] + anchor.reaction[c]).abs() <= 1e-8 * force, "{:?}", anchor.reaction);
+    }
+    let n = original.contacts["joint"].normal_force;
+    assert!((posed.contacts["joint"].normal_force - n).abs() <= 1e-10 * n.abs());
+}
