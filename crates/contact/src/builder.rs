@@ -3,12 +3,12 @@
 //! between named curves.
 //!
 //! ```text
-//! ProblemDescription { mesh, bodies, fixes, loads, contacts }
-//!   → Model (bodies, every fix; floating bodies allowed)
+//! ProblemDescription { mesh, bodies, fixes, loads, node_fixes, node_loads, contacts }
+//!   → Model (bodies, every fix, by group and node by node; floating bodies allowed)
 //!   → pairs per interface (node-to-segment, segment-to-segment (mortar), or node-to-node after
 //!     sliding the slave nodes; automatic: node-to-segment on matching meshes, else mortar)
 //!   → ContactProblem (friction and gaps per interface, set before anything is condensed)
-//!   → load patterns:  r_p = f_p − K_fc u_c,p
+//!   → load patterns:  r_p = f_p − K_fc u_c,p   (f_p: edge loads, body forces and nodal forces)
 //! force F on a group of length L:  traction t = F / L (uniform; per unit thickness)
 //! ```
 //!

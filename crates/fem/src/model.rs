@@ -422,6 +422,24 @@ mod tests {
     }
 
     #[test]
+    fn a_node_value_is_checked_against_the_groups_values() {
+        let m = Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap();
+        let mut model = Model::new(rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 2, 2));
+        model.add_body("domain", m, 1.0).unwrap();
+        model.fix("left", Component::X, 0.0).unwrap();
+        let corner = NodeId((0..model.mesh.points.len()).find(|&i| model.mesh.points[i] == [0.0, 0.0]).unwrap());
+        // The same value as the group's: consistent; a node of no group: a constrained DOF more.
+        model.fix_node(corner, Component::X, 0.0).unwrap();
+        model.fix_node(corner, Component::Y, 0.5).unwrap();
+        let dofs = model.dof_map().unwrap();
+        assert_eq!(dofs.num_constrained(), 3 + 1);
+        model.fix_node(corner, Component::X, 0.1).unwrap();
+        assert!(matches!(model.dof_map(), Err(FemError::ConflictingDirichlet { .. })));
+        assert!(matches!(model.fix_node(NodeId(99), Component::X, 0.0), Err(FemError::InvalidInput(_))));
+        assert!(matches!(model.fix_node(corner, Component::X, f64::NAN), Err(FemError::InvalidInput(_))));
+    }
+
+    #[test]
     fn moving_points_gives_the_model_built_on_the_moved_mesh() {
         let m = Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap();
         let build = |mesh: Mesh| {

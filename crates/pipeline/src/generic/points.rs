@@ -201,6 +201,19 @@ impl ResolvedPoint {
     }
 }
 
+/// The values `u_i = t + θ e3 × (x_i − c)` of both components of every node of `group`, in
+/// `pattern`.
+fn rigid_values(group: &WeightedNodes, t: [f64; 2], theta: f64, c: [f64; 2], pattern: &str) -> Vec<NodeFixDescription> {
+    let mut out = Vec::with_capacity(2 * group.nodes.len());
+    for (n, x) in group.nodes.iter().zip(&group.points) {
+        let r = turn(theta, [x[0] - c[0], x[1] - c[1]]);
+        for (component, value) in [(Component::X, t[0] + r[0]), (Component::Y, t[1] + r[1])] {
+            out.push(NodeFixDescription { node: *n, component, value, pattern: pattern.to_string() });
+        }
+    }
+    out
+}
+
 /// The mesh node at `at` (within 1e-9 of the mesh's extent), or the distance to the nearest.
 fn node_at(mesh: &Mesh, at: [f64; 2]) -> Result<NodeId, f64> {
     let extent = mesh.bounding_box().map_or(1.0, |[lo, hi]| (hi[0] - lo[0]).max(hi[1] - lo[1]));
@@ -265,33 +278,25 @@ impl GenericScene {
     ) -> Result<(Vec<NodeFixDescription>, Vec<NodeLoadDescription>), SceneError> {
         let points = self.resolve_points(mesh)?;
         let find = |name: &str| points.iter().find(|p| p.name == name);
+        // In the order of the [[fix]] entries, so that the patterns appear in the order
+        // [`GenericScene::pattern_names`] gives them.
         let mut fixes = vec![];
-        let mut push_rigid =
-            |nodes: &[NodeId], coords: &[[f64; 2]], t: [f64; 2], theta: f64, c: [f64; 2], f: &FixEntry| {
-                for (n, x) in nodes.iter().zip(coords) {
-                    let r = turn(theta, [x[0] - c[0], x[1] - c[1]]);
-                    for (component, value) in [(Component::X, t[0] + r[0]), (Component::Y, t[1] + r[1])] {
-                        fixes.push(NodeFixDescription { node: *n, component, value, pattern: f.pattern.clone() });
-                    }
-                }
-            };
-        let mut node_fixes = vec![];
         for (i, f) in self.fix.iter().enumerate() {
             let t = [f.u1.unwrap_or(0.0), f.u2.unwrap_or(0.0)];
             match (&f.group, &f.point, f.rotation) {
                 (Some(group), _, Some(theta)) => {
                     let nodes =
                         WeightedNodes::of_group(mesh, group).map_err(|r| self.fail(&format!("fix.{i}.group"), r))?;
-                    push_rigid(&nodes.nodes, &nodes.points, t, theta, f.about.unwrap_or([0.0; 2]), f);
+                    fixes.extend(rigid_values(&nodes, t, theta, f.about.unwrap_or([0.0; 2]), &f.pattern));
                 }
                 (None, Some(name), _) => match find(name).map(|p| (&p.kind, p.at)) {
                     Some((PointKind::Coupled { group, coupling: CouplingKey::Kinematic }, at)) => {
-                        push_rigid(&group.nodes, &group.points, t, f.rotation.unwrap_or(0.0), at, f);
+                        fixes.extend(rigid_values(group, t, f.rotation.unwrap_or(0.0), at, &f.pattern));
                     }
                     Some((PointKind::Node(n), _)) => {
                         for (component, value) in [(Component::X, f.u1), (Component::Y, f.u2)] {
                             if let Some(value) = value {
-                                node_fixes.push(NodeFixDescription {
+                                fixes.push(NodeFixDescription {
                                     node: *n,
                                     component,
                                     value,
@@ -306,7 +311,6 @@ impl GenericScene {
                 _ => {}
             }
         }
-        fixes.append(&mut node_fixes);
         let mut loads = vec![];
         for (i, l) in self.load.iter().enumerate() {
             let Some(name) = &l.point else { continue };

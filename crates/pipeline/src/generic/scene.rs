@@ -17,6 +17,14 @@
 //! group = "cylinder_top"            # body_force (per unit volume) with group = a body's region
 //! force = [0.0, -35000.0]
 //! pattern = "press"                 # default "main"
+//! [[point]]                         # a reference point coupled to a group ("distributing":
+//! name = "ref"                      # RBE3; "kinematic": RBE2, fixed), or a node (neither)
+//! at = [0.0, 1.0]
+//! group = "cylinder_top"
+//! coupling = "distributing"
+//! [[load]]                          # a force and moment at the point, spread over the group
+//! point = "ref"
+//! moment = 10.0
 //! [[contact]]
 //! name = "hertz"
 //! master = "cylinder_arc"
