@@ -81,6 +81,16 @@ pub(crate) fn print_summary(
     )?;
     let [cx, cy] = r.moment_centre;
     writeln!(out, "  moments about ({cx}, {cy}), counter-clockwise positive")?;
+    for (name, p) in &r.points {
+        let [u1, u2] = p.displacement;
+        let [f1, f2] = p.reaction;
+        let turned = p.rotation.map_or_else(String::new, |t| format!(", rotation {t:.6e}"));
+        let moment = p.reaction_moment.map_or_else(String::new, |m| format!(", reaction moment {m:.6e}"));
+        writeln!(
+            out,
+            "  point {name}: displacement [{u1:.6e}, {u2:.6e}]{turned}, reaction [{f1:.6e}, {f2:.6e}]{moment}"
+        )?;
+    }
     for (body, e) in &r.energies {
         writeln!(out, "  energy {body}: {e:.6e}")?;
     }

@@ -119,7 +119,7 @@ fn every_bundled_scene_balances_its_loads_at_every_step() {
         }
         // A group reports exactly the components its own fixes prescribe; the others are null.
         for (group, r) in &out.report.reactions {
-            let fixes: Vec<_> = out.scene.fix.iter().filter(|f| &f.group == group).collect();
+            let fixes: Vec<_> = out.scene.fix.iter().filter(|f| f.group.as_ref() == Some(group)).collect();
             let prescribed = [fixes.iter().any(|f| f.u1.is_some()), fixes.iter().any(|f| f.u2.is_some())];
             for c in 0..2 {
                 assert_eq!(r[c].is_some(), prescribed[c], "{name}: reactions.{group}.{c}");

@@ -104,6 +104,8 @@ fn a_block_on_a_rigid_obstacle_passes_with_segment_to_segment() {
             bodies: vec![body("b_domain", E_B, NU_B)],
             fixes: vec![fix("b_left", Component::X, 0.0), fix("b_top", Component::Y, -DELTA)],
             loads: vec![],
+            node_fixes: vec![],
+            node_loads: vec![],
             contacts: vec![ContactDescription {
                 name: "joint".into(),
                 master: "b_bottom".into(),

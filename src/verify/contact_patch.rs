@@ -136,6 +136,8 @@ pub fn measure(
             fix("b_top", Component::Y, -DELTA),
         ],
         loads: vec![],
+        node_fixes: vec![],
+        node_loads: vec![],
         contacts: vec![ContactDescription {
             name: "joint".into(),
             master: master.into(),

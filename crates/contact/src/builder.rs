@@ -3,12 +3,12 @@
 //! between named curves.
 //!
 //! ```text
-//! ProblemDescription { mesh, bodies, fixes, loads, contacts }
-//!   → Model (bodies, every fix; floating bodies allowed)
+//! ProblemDescription { mesh, bodies, fixes, loads, node_fixes, node_loads, contacts }
+//!   → Model (bodies, every fix, by group and node by node; floating bodies allowed)
 //!   → pairs per interface (node-to-segment, segment-to-segment (mortar), or node-to-node after
 //!     sliding the slave nodes; automatic: node-to-segment on matching meshes, else mortar)
 //!   → ContactProblem (friction and gaps per interface, set before anything is condensed)
-//!   → load patterns:  r_p = f_p − K_fc u_c,p
+//!   → load patterns:  r_p = f_p − K_fc u_c,p   (f_p: edge loads, body forces and nodal forces)
 //! force F on a group of length L:  traction t = F / L (uniform; per unit thickness)
 //! ```
 //!
@@ -20,7 +20,7 @@ use std::ops::Range;
 use contact2d_element::{Formulation, Material, PlaneCondition};
 use contact2d_fem::{Component, DofKind, EdgeLoad, Model, assemble_body_forces, assemble_edge_loads};
 use contact2d_mesh::morph::move_nodes;
-use contact2d_mesh::{Contour, Mesh, line_cell_length};
+use contact2d_mesh::{Contour, Mesh, NodeId, line_cell_length};
 
 use crate::error::ContactError;
 use crate::pairing::{ContactPair, node_to_node_targets, nodes_face_each_other, pair_contours};
@@ -58,6 +58,31 @@ pub struct FixDescription {
     /// Its value (0: a support, in no pattern).
     pub value: f64,
     /// The load pattern a non-zero value belongs to.
+    pub pattern: String,
+}
+
+/// A prescribed value of one node's component: a value that varies from node to node (a rigid
+/// motion `u = t + θ e3 × (x − c)` prescribed on a group, a kinematic coupling's point fixed).
+#[derive(Debug, Clone, PartialEq)]
+pub struct NodeFixDescription {
+    /// The node.
+    pub node: NodeId,
+    /// The component.
+    pub component: Component,
+    /// Its value (0: a support, in no pattern).
+    pub value: f64,
+    /// The load pattern a non-zero value belongs to.
+    pub pattern: String,
+}
+
+/// A force on one node (a distributing coupling's share of a point's force and moment).
+#[derive(Debug, Clone, PartialEq)]
+pub struct NodeLoadDescription {
+    /// The node.
+    pub node: NodeId,
+    /// `[F1, F2]`, per unit thickness.
+    pub force: [f64; 2],
+    /// The load pattern it belongs to.
     pub pattern: String,
 }
 
@@ -167,6 +192,10 @@ pub struct ProblemDescription {
     pub fixes: Vec<FixDescription>,
     /// Edge loads.
     pub loads: Vec<LoadDescription>,
+    /// Prescribed values of single nodes (with [`ProblemDescription::fixes`]).
+    pub node_fixes: Vec<NodeFixDescription>,
+    /// Forces on single nodes (with [`ProblemDescription::loads`]).
+    pub node_loads: Vec<NodeLoadDescription>,
     /// Contact interfaces.
     pub contacts: Vec<ContactDescription>,
 }
@@ -367,6 +396,9 @@ impl ProblemDescription {
         for f in self.fixes.iter().zip(active).filter(|(_, a)| **a).map(|(f, _)| f) {
             model.fix(&f.group, f.component, f.value)?;
         }
+        for f in &self.node_fixes {
+            model.fix_node(f.node, f.component, f.value)?;
+        }
         Ok(model)
     }
 
@@ -430,7 +462,9 @@ impl ProblemDescription {
     /// The pattern names of the non-zero prescribed values and the loads ([`pattern_order`]).
     fn pattern_names(&self) -> Vec<String> {
         let values = self.fixes.iter().filter(|f| f.value != 0.0).map(|f| f.pattern.as_str());
-        pattern_order(values.chain(self.loads.iter().map(|l| l.pattern.as_str())))
+        let node_values = self.node_fixes.iter().filter(|f| f.value != 0.0).map(|f| f.pattern.as_str());
+        let loads = self.loads.iter().map(|l| l.pattern.as_str());
+        pattern_order(values.chain(node_values).chain(loads).chain(self.node_loads.iter().map(|l| l.pattern.as_str())))
     }
 
     /// Every pattern's right-hand side and prescribed values on the built problem.
@@ -444,24 +478,31 @@ impl ProblemDescription {
         let dofs = &problem.system.dofs;
         let mut owner: Vec<Option<usize>> = vec![None; dofs.num_constrained()];
         let mut prescribed = vec![vec![0.0; dofs.num_constrained()]; names.len()];
-        let given = self.fixes.iter().zip(active).filter(|(f, a)| **a && f.value != 0.0).map(|(f, _)| f);
-        for f in given {
-            let p = names.iter().position(|n| *n == f.pattern).unwrap_or(0);
+        // Every non-zero value of the active fixes, group by group and then node by node: (where,
+        // node, component, value, pattern).
+        let mut values = vec![];
+        for f in self.fixes.iter().zip(active).filter(|(f, a)| **a && f.value != 0.0).map(|(f, _)| f) {
             for node in model.mesh.group_nodes(&f.group)? {
-                if let DofKind::Constrained(j) = dofs.kind(contact2d_fem::Dof::of(node.0, f.component)) {
-                    if owner[j].is_some_and(|q| q != p) {
-                        return Err(ContactError::InvalidInput(format!(
-                            "group \"{}\": {} at node {} is prescribed in two load patterns (\"{}\" and \"{}\")",
-                            f.group,
-                            f.component.name(),
-                            model.mesh.node_tags.get(node.0).copied().unwrap_or(node.0 as u64),
-                            names[owner[j].unwrap_or(0)],
-                            names[p]
-                        )));
-                    }
-                    owner[j] = Some(p);
-                    prescribed[p][j] = f.value;
+                values.push((format!("group \"{}\"", f.group), node, f.component, f.value, f.pattern.as_str()));
+            }
+        }
+        for f in self.node_fixes.iter().filter(|f| f.value != 0.0) {
+            values.push(("a node's value".to_string(), f.node, f.component, f.value, f.pattern.as_str()));
+        }
+        for (at, node, component, value, pattern) in values {
+            let p = names.iter().position(|n| n == pattern).unwrap_or(0);
+            if let DofKind::Constrained(j) = dofs.kind(contact2d_fem::Dof::of(node.0, component)) {
+                if owner[j].is_some_and(|q| q != p) {
+                    return Err(ContactError::InvalidInput(format!(
+                        "{at}: {} at node {} is prescribed in two load patterns (\"{}\" and \"{}\")",
+                        component.name(),
+                        model.mesh.node_tags.get(node.0).copied().unwrap_or(node.0 as u64),
+                        names[owner[j].unwrap_or(0)],
+                        names[p]
+                    )));
                 }
+                owner[j] = Some(p);
+                prescribed[p][j] = value;
             }
         }
         let mut patterns = Vec::with_capacity(names.len());
@@ -480,6 +521,17 @@ impl ProblemDescription {
             let mut nodal = assemble_edge_loads(model, &loads)?;
             for (f, b) in nodal.iter_mut().zip(assemble_body_forces(model, &body_forces)?) {
                 *f += b;
+            }
+            for l in self.node_loads.iter().filter(|l| l.pattern == *name) {
+                for c in [Component::X, Component::Y] {
+                    let force = l.force[c.index()];
+                    if !force.is_finite() {
+                        return Err(ContactError::InvalidInput(format!("a nodal force {force} is not finite")));
+                    }
+                    if let Some(f) = nodal.get_mut(contact2d_fem::Dof::of(l.node.0, c).0) {
+                        *f += force;
+                    }
+                }
             }
             let rhs = problem.system.rhs_with(&nodal, &prescribed[p]);
             patterns.push(LoadPattern { name: name.clone(), rhs, prescribed: prescribed[p].clone(), nodal });

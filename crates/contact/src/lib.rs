@@ -60,7 +60,7 @@ pub use boussinesq::{
 };
 pub use builder::{
     BodyDescription, BuiltProblem, ContactDescription, EdgeLoadKind, FixDescription, GapDescription, InterfaceInfo,
-    LoadDescription, Pairing, ProblemDescription,
+    LoadDescription, NodeFixDescription, NodeLoadDescription, Pairing, ProblemDescription,
 };
 pub use certify::{Check, FailedCheck, certify, check_energy_balance, energy_scale, status_reason};
 pub use clarabel_qp::{solve_frictionless_qp, solve_frictionless_qp_on};

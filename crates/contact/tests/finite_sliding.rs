@@ -64,6 +64,8 @@ fn scene(block_cells: usize, pairing: Pairing) -> ProblemDescription {
             kind: EdgeLoadKind::Pressure(Q),
             pattern: "press".into(),
         }],
+        node_fixes: vec![],
+        node_loads: vec![],
         contacts: vec![ContactDescription {
             name: "joint".into(),
             master: "b_bottom".into(),

@@ -56,6 +56,8 @@ fn description(mesh: Mesh, friction: f64, pressure: f64, slide: Option<f64>) -> 
             kind: EdgeLoadKind::Pressure(pressure),
             pattern: "press".into(),
         }],
+        node_fixes: vec![],
+        node_loads: vec![],
         contacts: vec![ContactDescription {
             name: "joint".into(),
             master: "b_bottom".into(),

@@ -180,6 +180,8 @@ fn floating_description(lower: [f64; 2], na: usize, nb: usize, pairing: Pairing)
             kind: EdgeLoadKind::Pressure(10.0),
             pattern: "press".into(),
         }],
+        node_fixes: vec![],
+        node_loads: vec![],
         contacts: vec![ContactDescription {
             name: "joint".into(),
             master: "b_bottom".into(),

@@ -99,6 +99,9 @@ pub struct Model {
     pub bodies: Vec<Body>,
     /// Dirichlet conditions.
     pub dirichlet: Vec<Dirichlet>,
+    /// Prescribed values of single DOFs (a value that varies from node to node, such as a rigid
+    /// rotation's `u = θ e3 × (x − c)`), resolved with [`Model::dirichlet`] by [`Model::dof_map`].
+    pub node_dirichlet: Vec<(Dof, f64)>,
     /// Edge loads.
     pub edge_loads: Vec<EdgeLoad>,
     /// Whether a body piece that the Dirichlet conditions leave free to move rigidly is
@@ -124,7 +127,14 @@ pub fn element_type(kind: CellKind) -> Option<ElementType> {
 impl Model {
     /// An empty model on `mesh`.
     pub fn new(mesh: Mesh) -> Model {
-        Model { mesh, bodies: vec![], dirichlet: vec![], edge_loads: vec![], allow_floating: false }
+        Model {
+            mesh,
+            bodies: vec![],
+            dirichlet: vec![],
+            node_dirichlet: vec![],
+            edge_loads: vec![],
+            allow_floating: false,
+        }
     }
 
     /// Adds the 2D physical group `region` as a body of `material` and `thickness`, checking every
@@ -262,6 +272,29 @@ impl Model {
         Ok(())
     }
 
+    /// Prescribes `component = value` on the single node `node` (checked against the other
+    /// conditions by [`Model::dof_map`], as a group's).
+    ///
+    /// # Errors
+    /// A node out of range or a non-finite value.
+    pub fn fix_node(&mut self, node: NodeId, component: Component, value: f64) -> Result<(), FemError> {
+        if node.0 >= self.mesh.num_nodes() {
+            return Err(FemError::InvalidInput(format!(
+                "Dirichlet value on node index {}: the mesh has {} nodes",
+                node.0,
+                self.mesh.num_nodes()
+            )));
+        }
+        if !value.is_finite() {
+            return Err(FemError::InvalidInput(format!(
+                "Dirichlet value on node {} is not finite",
+                self.mesh.node_tags.get(node.0).copied().unwrap_or(node.0 as u64)
+            )));
+        }
+        self.node_dirichlet.push((Dof::of(node.0, component), value));
+        Ok(())
+    }
+
     /// Adds an edge load on a 1D group.
     ///
     /// # Errors
@@ -308,6 +341,7 @@ impl Model {
                 prescribed.push((Dof::of(n.0, d.component), d.value));
             }
         }
+        prescribed.extend_from_slice(&self.node_dirichlet);
         prescribed.sort_by_key(|p| p.0);
         for w in prescribed.windows(2) {
             // Exactly equal values (a corner shared by two groups) are consistent.
@@ -385,6 +419,24 @@ mod tests {
         let id = tri3.add_body("domain", m, 1.0).unwrap();
         assert!(tri3.set_formulation(id, Formulation::BBar).is_err());
         assert_eq!(tri3.bodies[id.0].formulation, Formulation::Standard);
+    }
+
+    #[test]
+    fn a_node_value_is_checked_against_the_groups_values() {
+        let m = Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap();
+        let mut model = Model::new(rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 2, 2));
+        model.add_body("domain", m, 1.0).unwrap();
+        model.fix("left", Component::X, 0.0).unwrap();
+        let corner = NodeId((0..model.mesh.points.len()).find(|&i| model.mesh.points[i] == [0.0, 0.0]).unwrap());
+        // The same value as the group's: consistent; a node of no group: a constrained DOF more.
+        model.fix_node(corner, Component::X, 0.0).unwrap();
+        model.fix_node(corner, Component::Y, 0.5).unwrap();
+        let dofs = model.dof_map().unwrap();
+        assert_eq!(dofs.num_constrained(), 3 + 1);
+        model.fix_node(corner, Component::X, 0.1).unwrap();
+        assert!(matches!(model.dof_map(), Err(FemError::ConflictingDirichlet { .. })));
+        assert!(matches!(model.fix_node(NodeId(99), Component::X, 0.0), Err(FemError::InvalidInput(_))));
+        assert!(matches!(model.fix_node(corner, Component::X, f64::NAN), Err(FemError::InvalidInput(_))));
     }
 
     #[test]

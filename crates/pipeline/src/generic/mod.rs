@@ -13,6 +13,7 @@ pub mod fretting_outputs;
 pub mod outputs;
 pub mod placed;
 mod placed_ends;
+pub mod points;
 pub mod readme;
 pub mod results;
 pub mod scene;
@@ -34,6 +35,7 @@ use contact2d_contact::{
 };
 use contact2d_mesh::read_msh;
 
+pub use points::{PointResult, ResolvedPoint};
 pub use results::{ContactResult, FixedGroup, Kkt, Profile, StepResult};
 pub use scene::GenericScene;
 pub use summary::{SummaryInput, SummaryRows, summarise};
@@ -181,6 +183,9 @@ pub struct GenericReport {
     pub reaction_moment_total: f64,
     /// The last step's strain energy per body.
     pub energies: BTreeMap<String, f64>,
+    /// The last step's motion and reactions of every `[[point]]` (none without points).
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub points: BTreeMap<String, PointResult>,
     /// The last step's KKT residuals.
     pub kkt: Kkt,
     /// Bodies held only by contact.
@@ -220,6 +225,7 @@ impl GenericReport {
             reaction_moments: self.reaction_moments.clone(),
             reaction_moment_total: self.reaction_moment_total,
             energies: self.energies.clone(),
+            points: self.points.clone(),
             kkt: self.kkt,
             floating_bodies: self.floating_bodies.clone(),
             groups: self.groups.clone(),
@@ -386,11 +392,12 @@ fn solve_generic_from(
         return solve_placed_scene(scene, mesh, clock, stream).map_err(contact_error);
     }
     let read = clock.elapsed().as_secs_f64();
+    let points = scene.resolve_points(&mesh)?;
     let groups = group_reports(scene, &mesh).map_err(contact_error)?;
     let activity = scene.fix_stages()?;
     // Staged supports: one problem per stage, the first's the run's problem as built; else the
     // scene's one problem, built as it always was (no stage).
-    let description = scene.description(mesh);
+    let description = scene.description(mesh)?;
     let mut stages: Vec<Stage> = vec![];
     let mut built = if activity.len() > 1 {
         stages = description.build_stages(&activity).map_err(contact_error)?;
@@ -425,7 +432,8 @@ fn solve_generic_from(
     // keep only what the next step needs.
     // Finite sliding's last problem (its pairs those of the last step), kept for the summary.
     let mut last_built: Option<BuiltProblem> = None;
-    let mut rows = SummaryRows::new(&built, &fixed, scene.every_profile).about(scene.moment_centre);
+    let mut rows =
+        SummaryRows::new(&built, &fixed, scene.every_profile).about(scene.moment_centre).with_points(points);
     // Finite sliding forms the pairs on the current configuration: the small-sliding check
     // (displacements against the undeformed pairs' segments) does not apply to the run.
     let finite: Vec<bool> = scene.contact.iter().map(|c| c.sliding == scene::SlidingKey::Finite).collect();
@@ -535,11 +543,14 @@ pub(crate) fn fixed_groups(scene: &GenericScene) -> Vec<FixedGroup> {
     let steps = scene.schedule().map_or(0, |s| s.steps().len());
     let mut out: Vec<FixedGroup> = vec![];
     for f in &scene.fix {
-        let components = [f.u1.is_some(), f.u2.is_some()];
-        let group = match out.iter().position(|g| g.name == f.group) {
+        let Some(name) = &f.group else { continue };
+        // A rotation prescribes both components.
+        let turned = f.rotation.is_some();
+        let components = [f.u1.is_some() || turned, f.u2.is_some() || turned];
+        let group = match out.iter().position(|g| g.name == *name) {
             Some(at) => &mut out[at],
             None => {
-                out.push(FixedGroup { name: f.group.clone(), components: [false; 2], components_by_step: None });
+                out.push(FixedGroup { name: name.clone(), components: [false; 2], components_by_step: None });
                 let last = out.len() - 1;
                 &mut out[last]
             }
@@ -549,13 +560,15 @@ pub(crate) fn fixed_groups(scene: &GenericScene) -> Vec<FixedGroup> {
             group.components_by_step.get_or_insert_with(|| vec![[false; 2]; steps]);
         }
     }
-    // The components by step of the staged groups: those of their entries active in the step.
+    // The components by step of the staged groups: those of their entries active in the step
+    // (a staged entry is never a rotation: the scene refuses it).
     for group in &mut out {
         let Some(by_step) = group.components_by_step.as_mut() else { continue };
-        for f in scene.fix.iter().filter(|f| f.group == group.name) {
+        for f in scene.fix.iter().filter(|f| f.group.as_deref() == Some(group.name.as_str())) {
+            let turned = f.rotation.is_some();
             let (from, until) = (f.from_step.unwrap_or(1), f.until_step.unwrap_or(steps));
             for c in by_step.iter_mut().take(until).skip(from.saturating_sub(1)) {
-                *c = [c[0] || f.u1.is_some(), c[1] || f.u2.is_some()];
+                *c = [c[0] || f.u1.is_some() || turned, c[1] || f.u2.is_some() || turned];
             }
         }
     }
@@ -581,8 +594,9 @@ pub(crate) fn group_reports(
         .body
         .iter()
         .map(|b| b.region.clone())
-        .chain(scene.fix.iter().map(|f| f.group.clone()))
-        .chain(scene.load.iter().map(|l| l.group.clone()))
+        .chain(scene.fix.iter().filter_map(|f| f.group.clone()))
+        .chain(scene.load.iter().filter_map(|l| l.group.clone()))
+        .chain(scene.point.iter().filter_map(|p| p.group.clone()))
         .chain(scene.contact.iter().flat_map(|c| [c.master.clone(), c.slave.clone()]))
         .chain(scene.contact.iter().flat_map(|c| c.reference_groups.clone().into_iter().flatten()));
     let mut out = BTreeMap::new();

@@ -181,7 +181,7 @@ pub(super) fn solve_placed(
     let read = clock.elapsed().as_secs_f64();
     let groups = super::group_reports(scene, &mesh)?;
     let schedule = scene.schedule().map_err(|e| ContactError::InvalidInput(e.to_string()))?;
-    let description = scene.description(mesh);
+    let description = scene.description(mesh).map_err(|e| ContactError::InvalidInput(e.to_string()))?;
     let names = scene.pattern_names();
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
     let factors: Vec<Vec<f64>> =

@@ -20,6 +20,7 @@
 //! reactions.<group>[c] = Σ_{nodes of group} r_(node, c)  where the group's own [[fix]] entries
 //!     prescribe c (null where they do not: another group's support is not this group's)
 //! reactions_total[c]   = Σ_{constrained DOFs in c} r      (every constrained DOF once)
+//! points.<name>: u_p, θ, R = Σ r over the point's nodes, M_R = Σ (x − p) × r  (super::points)
 //! rigid_resultant      = Σ_k R_k over a rigid obstacle's pairs (its force on the bodies)
 //! Σ loads + reactions_total + Σ rigid_resultant = 0       (global equilibrium)
 //!
@@ -62,6 +63,7 @@ use serde::Serialize;
 
 use contact2d_contact::{BuiltProblem, ContactError, ContactSolution, History, InterfaceInfo, PairState, SolvedStep};
 
+use super::points::{PointResult, ResolvedPoint};
 use super::zones::{PairCurve, ZoneEnds, ZoneMarks, zone_ends, zones_length, zones_span};
 use crate::output::step_view::state_label;
 
@@ -191,6 +193,9 @@ pub struct StepResult {
     pub reaction_moment_total: f64,
     /// Per body: strain energy.
     pub energies: BTreeMap<String, f64>,
+    /// Per `[[point]]`: its displacement, rotation and reactions (none without points).
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub points: BTreeMap<String, PointResult>,
     /// Work of the loads and prescribed displacements up to this step, `W = Σ ½ (f_{i−1} + f_i) ·
     /// (u_i − u_{i−1})` with `f` the nodal loads plus the reactions (trapezoid rule; exact for
     /// a history solved once and scaled).
@@ -271,6 +276,7 @@ pub struct StepResults<'a> {
     built: &'a BuiltProblem,
     fixed_groups: &'a [FixedGroup],
     centre: [f64; 2],
+    points: Vec<ResolvedPoint>,
     names: Vec<String>,
     owner: Vec<usize>,
     dissipated: Vec<f64>,
@@ -289,6 +295,7 @@ impl<'a> StepResults<'a> {
             built,
             fixed_groups,
             centre: [0.0; 2],
+            points: vec![],
             names: problem.patterns().iter().map(|p| p.name.clone()).collect(),
             owner: dof_owners(problem),
             dissipated: vec![0.0; built.interfaces.len()],
@@ -302,6 +309,11 @@ impl<'a> StepResults<'a> {
     /// The same results with moments about `centre` instead of the origin.
     pub fn about(self, centre: [f64; 2]) -> Self {
         StepResults { centre, ..self }
+    }
+
+    /// The same results reporting the motion and reactions of `points` too.
+    pub fn with_points(self, points: Vec<ResolvedPoint>) -> Self {
+        StepResults { points, ..self }
     }
 
     /// The next steps are solved on `built`: a problem of the same topology as the one before,
@@ -363,8 +375,9 @@ impl<'a> StepResults<'a> {
             iterations: s.iterations,
             contacts,
             reactions: group_reactions(built, &reactions, self.fixed_groups, self.step),
+            points: self.points.iter().map(|p| (p.name.clone(), p.result(&s.displacement, &reactions))).collect(),
             reactions_total: reactions_total(built, &reactions),
-            reaction_moments: group_reaction_moments(built, &reactions, self.fixed_groups, self.centre),
+            reaction_moments: group_reaction_moments(built, &reactions, self.fixed_groups, self.centre, self.step),
             reaction_moment_total: reaction_moment_total(built, &reactions, self.centre),
             energies,
             work: self.work,
@@ -538,15 +551,22 @@ fn group_reaction_moments(
     at_dof: &[f64],
     groups: &[FixedGroup],
     centre: [f64; 2],
+    step: usize,
 ) -> BTreeMap<String, f64> {
     let points = &built.problem.model.mesh.points;
     groups
         .iter()
         .filter_map(|g| {
             let nodes = built.problem.model.mesh.group_nodes(&g.name).ok()?;
+            // A staged group that holds nothing in this step has no moment (as its reactions
+            // are null).
+            let components = g.components_at(step);
+            if components == [false; 2] {
+                return None;
+            }
             let moment = nodes
                 .iter()
-                .flat_map(|n| (0..2).filter(|c| g.components[*c]).map(move |c| (n.0, c)))
+                .flat_map(|n| (0..2).filter(|c| components[*c]).map(move |c| (n.0, c)))
                 .map(|(n, c)| points.get(n).map_or(f64::NAN, |x| moment_of(*x, centre, c, at_dof[2 * n + c])))
                 .sum();
             Some((g.name.clone(), moment))

@@ -17,6 +17,14 @@
 //! group = "cylinder_top"            # body_force (per unit volume) with group = a body's region
 //! force = [0.0, -35000.0]
 //! pattern = "press"                 # default "main"
+//! [[point]]                         # a reference point coupled to a group ("distributing":
+//! name = "ref"                      # RBE3; "kinematic": RBE2, fixed), or a node (neither)
+//! at = [0.0, 1.0]
+//! group = "cylinder_top"
+//! coupling = "distributing"
+//! [[load]]                          # a force and moment at the point, spread over the group
+//! point = "ref"
+//! moment = 10.0
 //! [[contact]]
 //! name = "hertz"
 //! master = "cylinder_arc"
@@ -107,17 +115,25 @@ impl FormulationKey {
     }
 }
 
-/// One `[[fix]]`: prescribed displacement components on a group.
+/// One `[[fix]]`: prescribed displacement components on a group or a point, or a small rigid
+/// rotation of a group.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FixEntry {
-    /// A 1D or 0D physical group.
-    pub group: String,
-    /// Prescribed u1.
+    /// A 1D or 0D physical group (or give `point`).
+    pub group: Option<String>,
+    /// A `[[point]]` (or give `group`).
+    pub point: Option<String>,
+    /// Prescribed u1 (a translation with `rotation`).
     pub u1: Option<f64>,
-    /// Prescribed u2.
+    /// Prescribed u2 (a translation with `rotation`).
     pub u2: Option<f64>,
-    /// The load pattern of its non-zero values (default `main`).
+    /// A small rigid rotation θ (radians, counter-clockwise): of the group about `about`,
+    /// `u = (u1, u2) + θ e3 × (x − about)`, or of a kinematic point.
+    pub rotation: Option<f64>,
+    /// The centre `[x, y]` of a group's `rotation`.
+    pub about: Option<[f64; 2]>,
+    /// The load pattern of its non-zero values (default `main`; a zero value is in none).
     #[serde(default = "main")]
     pub pattern: String,
     /// The first step (from 1) it holds its DOFs in, at the position they have reached at the
@@ -127,14 +143,32 @@ pub struct FixEntry {
     pub until_step: Option<usize>,
 }
 
-/// One `[[load]]`: exactly one of `force`, `traction`, `pressure` (on a 1D group) or
-/// `body_force` (on a body's 2D region).
+impl FixEntry {
+    /// What it fixes, for messages: `group "NAME"` or `point "NAME"`.
+    pub fn target(&self) -> String {
+        match (&self.group, &self.point) {
+            (Some(g), _) => format!("group \"{g}\""),
+            (None, Some(p)) => format!("point \"{p}\""),
+            (None, None) => "nothing".into(),
+        }
+    }
+
+    /// Whether any of its values is not zero.
+    pub fn moves(&self) -> bool {
+        [self.u1, self.u2, self.rotation].iter().any(|v| v.is_some_and(|v| v != 0.0))
+    }
+}
+
+/// One `[[load]]`: on a group, exactly one of `force`, `traction`, `pressure` (on a 1D group)
+/// or `body_force` (on a body's 2D region); on a point, a `force` and/or a `moment`.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LoadEntry {
-    /// A 1D physical group.
-    pub group: String,
-    /// Total force `[F1, F2]` on the group, per unit thickness.
+    /// A 1D physical group, or a body's region for `body_force` (or give `point`).
+    pub group: Option<String>,
+    /// A `[[point]]` (or give `group`).
+    pub point: Option<String>,
+    /// Total force `[F1, F2]` on the group or at the point, per unit thickness.
     pub force: Option<[f64; 2]>,
     /// Traction vector (force per unit length and thickness).
     pub traction: Option<[f64; 2]>,
@@ -143,9 +177,48 @@ pub struct LoadEntry {
     /// Body force `[b1, b2]` per unit volume (e.g. the weight `[0, -ρ g]`); `group` names the
     /// body's region.
     pub body_force: Option<[f64; 2]>,
+    /// A moment M (counter-clockwise, per unit thickness) at a coupled point.
+    pub moment: Option<f64>,
     /// The load pattern (default `main`).
     #[serde(default = "main")]
     pub pattern: String,
+}
+
+impl LoadEntry {
+    /// What it loads, for messages: `group "NAME"` or `point "NAME"`.
+    pub fn target(&self) -> String {
+        match (&self.group, &self.point) {
+            (Some(g), _) => format!("group \"{g}\""),
+            (None, Some(p)) => format!("point \"{p}\""),
+            (None, None) => "nothing".into(),
+        }
+    }
+}
+
+/// How a point is coupled to its group, as spelled in scene files.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum CouplingKey {
+    /// The point's force and moment spread over the group's nodes by weights, no stiffness
+    /// added; its motion the group's weighted mean (Abaqus *COUPLING, DISTRIBUTING; RBE3).
+    Distributing,
+    /// The group moves rigidly with the point (RBE2).
+    Kinematic,
+}
+
+/// One `[[point]]`: a reference point, coupled to a group (or, with neither `group` nor
+/// `coupling`, a mesh node at `at`).
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PointEntry {
+    /// Its name (`[[fix]] point`, `[[load]] point`, the outputs' `points.NAME`).
+    pub name: String,
+    /// Where it is, `[x, y]` (need not be a node when coupled).
+    pub at: [f64; 2],
+    /// The physical group it is coupled to.
+    pub group: Option<String>,
+    /// How it is coupled to `group`.
+    pub coupling: Option<CouplingKey>,
 }
 
 /// Pairing as spelled in scene files.
@@ -274,9 +347,12 @@ pub struct GenericScene {
     /// Prescribed displacements.
     #[serde(default)]
     pub fix: Vec<FixEntry>,
-    /// Edge loads.
+    /// Edge loads, body forces and point loads.
     #[serde(default)]
     pub load: Vec<LoadEntry>,
+    /// Reference points and their couplings.
+    #[serde(default)]
+    pub point: Vec<PointEntry>,
     /// Contact interfaces.
     #[serde(default)]
     pub contact: Vec<ContactEntry>,
@@ -380,37 +456,7 @@ impl GenericScene {
             }
         }
         self.validate_stiffness_ratio()?;
-        for (i, f) in self.fix.iter().enumerate() {
-            if f.u1.is_none() && f.u2.is_none() {
-                return Err(
-                    self.fail(&format!("fix.{i}"), format!("fixes nothing on \"{}\": give u1, u2 or both", f.group))
-                );
-            }
-            if let Some(v) = f.u1.iter().chain(&f.u2).find(|v| !v.is_finite()) {
-                return Err(self.fail(&format!("fix.{i}"), format!("value {v} is not finite")));
-            }
-        }
-        for (i, l) in self.load.iter().enumerate() {
-            let given = usize::from(l.force.is_some())
-                + usize::from(l.traction.is_some())
-                + usize::from(l.pressure.is_some())
-                + usize::from(l.body_force.is_some());
-            if given != 1 {
-                return Err(self.fail(
-                    &format!("load.{i}"),
-                    format!(
-                        "give exactly one of force, traction, pressure, body_force on \"{}\" ({given} given)",
-                        l.group
-                    ),
-                ));
-            }
-            if l.body_force.is_some() && !self.body.iter().any(|b| b.region == l.group) {
-                return Err(self.fail(
-                    &format!("load.{i}.body_force"),
-                    format!("\"{}\" is no [[body]] region: a body force acts on a body", l.group),
-                ));
-            }
-        }
+        self.validate_points()?;
         for (i, c) in self.contact.iter().enumerate() {
             if !(c.friction.is_finite() && c.friction >= 0.0) {
                 return Err(
@@ -471,6 +517,16 @@ impl GenericScene {
                     _ => {}
                 }
             }
+            if let (Some(step), true) = (f.from_step.or(f.until_step), f.point.is_some() || f.rotation.is_some()) {
+                let key = if f.from_step.is_some() { "from_step" } else { "until_step" };
+                return Err(self.fail(
+                    &format!("fix.{i}.{key}"),
+                    format!(
+                        "step {step}: staged supports hold a group's u1 / u2; a point's fix or a rotation holds in \
+                         every step"
+                    ),
+                ));
+            }
             if let (Some(from), Some(until)) = (f.from_step, f.until_step)
                 && from > until
             {
@@ -513,8 +569,11 @@ impl GenericScene {
         let steps = self.schedule()?.steps().len();
         let active_in = |step: usize| -> Vec<bool> {
             let k = step + 1;
+            // The fixes of the description, in its order: the groups' u1 / u2 (a rotation's and a
+            // point's values are node values, held in every step).
             self.fix
                 .iter()
+                .filter(|f| f.rotation.is_none() && f.group.is_some())
                 .flat_map(|f| {
                     let on = f.from_step.is_none_or(|from| from <= k) && f.until_step.is_none_or(|until| k <= until);
                     std::iter::repeat_n(on, usize::from(f.u1.is_some()) + usize::from(f.u2.is_some()))
@@ -533,14 +592,23 @@ impl GenericScene {
     }
 
     /// The pattern names the scene's values and loads use, `main` first
-    /// ([`contact2d_contact::builder::pattern_order`], the order the built problem has).
+    /// ([`contact2d_contact::builder::pattern_order`], the order the built problem has: the
+    /// groups' values, the nodes' values (rotations, kinematic points), the group loads, the
+    /// point loads).
     pub fn pattern_names(&self) -> Vec<String> {
-        let values = self
-            .fix
-            .iter()
-            .filter(|f| f.u1.is_some_and(|v| v != 0.0) || f.u2.is_some_and(|v| v != 0.0))
-            .map(|f| f.pattern.as_str());
-        pattern_order(values.chain(self.load.iter().map(|l| l.pattern.as_str())))
+        let plain = |f: &&FixEntry| f.group.is_some() && f.rotation.is_none();
+        let values = self.fix.iter().filter(|f| plain(f) && f.moves()).map(|f| f.pattern.as_str());
+        let node_values = self.fix.iter().filter(|f| !plain(f) && f.moves()).map(|f| f.pattern.as_str());
+        let loads = self.load.iter().filter(|l| l.point.is_none()).map(|l| l.pattern.as_str());
+        let point_loads = self.load.iter().filter(|l| l.point.is_some()).map(|l| l.pattern.as_str());
+        pattern_order(values.chain(node_values).chain(loads).chain(point_loads))
+    }
+
+    /// The patterns only zero-valued fixes name (a support is in no pattern): a schedule may
+    /// name them, to no effect.
+    pub(super) fn inert_patterns(&self) -> Vec<String> {
+        let names = self.pattern_names();
+        self.fix.iter().map(|f| f.pattern.clone()).filter(|p| !names.contains(p)).collect()
     }
 
     /// The solver settings.
@@ -564,8 +632,13 @@ impl GenericScene {
             .collect()
     }
 
-    /// The problem description on `mesh`.
-    pub fn description(&self, mesh: Mesh) -> ProblemDescription {
+    /// The problem description on `mesh`: the groups' fixes and loads, and the points' as
+    /// values and forces of single nodes ([`GenericScene::point_conditions`]).
+    ///
+    /// # Errors
+    /// [`SceneError::Value`] naming the `[[point]]`, `[[fix]]` or `[[load]]` key a point's
+    /// group or node does not fit.
+    pub fn description(&self, mesh: Mesh) -> Result<ProblemDescription, SceneError> {
         let bodies = self
             .body
             .iter()
@@ -579,18 +652,21 @@ impl GenericScene {
             })
             .collect();
         let mut fixes = vec![];
-        for f in &self.fix {
+        for f in self.fix.iter().filter(|f| f.rotation.is_none()) {
+            let Some(group) = &f.group else { continue };
             for (component, value) in [(Component::X, f.u1), (Component::Y, f.u2)] {
                 if let Some(value) = value {
-                    fixes.push(FixDescription { group: f.group.clone(), component, value, pattern: f.pattern.clone() });
+                    fixes.push(FixDescription { group: group.clone(), component, value, pattern: f.pattern.clone() });
                 }
             }
         }
         let loads = self
             .load
             .iter()
-            .map(|l| LoadDescription {
-                group: l.group.clone(),
+            .filter_map(|l| Some((l.group.as_ref()?, l)))
+            .filter(|(_, l)| l.point.is_none())
+            .map(|(group, l)| LoadDescription {
+                group: group.clone(),
                 kind: match (l.force, l.traction, l.body_force, l.pressure) {
                     (Some(f), _, _, _) => EdgeLoadKind::Force(f),
                     (_, Some(t), _, _) => EdgeLoadKind::Traction(t),
@@ -600,6 +676,7 @@ impl GenericScene {
                 pattern: l.pattern.clone(),
             })
             .collect();
+        let (node_fixes, node_loads) = self.point_conditions(&mesh)?;
         let contacts = self
             .contact
             .iter()
@@ -622,7 +699,7 @@ impl GenericScene {
                 self_contact: c.self_contact,
             })
             .collect();
-        ProblemDescription { mesh, bodies, fixes, loads, contacts }
+        Ok(ProblemDescription { mesh, bodies, fixes, loads, node_fixes, node_loads, contacts })
     }
 }
 

@@ -92,8 +92,10 @@ impl GenericScene {
         rows: &[BTreeMap<String, f64>],
         names: &[String],
     ) -> Result<Vec<Vec<f64>>, SceneError> {
+        // A pattern only zero-valued fixes name scales nothing: a step may name it.
+        let inert = self.inert_patterns();
         for (i, step) in rows.iter().enumerate() {
-            if let Some(unknown) = step.keys().find(|k| !names.contains(k)) {
+            if let Some(unknown) = step.keys().find(|k| !names.contains(k) && !inert.contains(k)) {
                 return Err(self.fail(
                     &format!("{key}[{i}]"),
                     format!("\"{unknown}\" is no load pattern of this scene (patterns: {})", names.join(", ")),

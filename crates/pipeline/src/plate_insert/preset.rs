@@ -46,9 +46,12 @@ impl PlateInsert {
             },
         };
         let fix = |group: &str, u1: Option<f64>, u2: Option<f64>| FixEntry {
-            group: group.into(),
+            group: Some(group.into()),
+            point: None,
             u1,
             u2,
+            rotation: None,
+            about: None,
             pattern: DEFAULT_PATTERN.into(),
             from_step: None,
             until_step: None,
@@ -88,6 +91,7 @@ impl PlateInsert {
             body: bodies,
             fix: fixes,
             load: vec![],
+            point: vec![],
             contact: vec![contact],
             loading: LoadingSection { steps: None, schedule: Some(schedule), cycle: None, cycles: None },
             solver: SolverEntry { place_zone_ends: None, ..solver.clone() },
@@ -101,8 +105,14 @@ impl PlateInsert {
     }
 
     /// The generic description of the case on `mesh`: that of [`PlateInsert::generic_scene`].
-    pub fn description(&self, mesh: Mesh) -> ProblemDescription {
-        self.generic_scene("plate_insert", &[1.0], &SolverEntry::default()).description(mesh)
+    ///
+    /// # Errors
+    /// None in practice (the case has no `[[point]]`); a point's error as
+    /// [`ContactError::InvalidInput`].
+    pub fn description(&self, mesh: Mesh) -> Result<ProblemDescription, ContactError> {
+        self.generic_scene("plate_insert", &[1.0], &SolverEntry::default())
+            .description(mesh)
+            .map_err(|e| ContactError::InvalidInput(e.to_string()))
     }
 
     /// The master and slave curves (groups) of the pairing variant.
@@ -151,7 +161,7 @@ impl PlateInsert {
     /// # Errors
     /// Those of [`ProblemDescription::build`], and a clearance the mesh has no room for.
     pub fn build_preset(&self, mesh: Mesh) -> Result<PlateInsertProblem, ContactError> {
-        let mut built: BuiltProblem = self.description(mesh).build()?;
+        let mut built: BuiltProblem = self.description(mesh)?.build()?;
         self.set_gaps(&mut built)?;
         self.case_of(built)
     }
