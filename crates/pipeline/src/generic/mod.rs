@@ -432,8 +432,7 @@ fn solve_generic_from(
     // keep only what the next step needs.
     // Finite sliding's last problem (its pairs those of the last step), kept for the summary.
     let mut last_built: Option<BuiltProblem> = None;
-    let mut rows =
-        SummaryRows::new(&built, &fixed, scene.every_profile).about(scene.moment_centre).with_points(points);
+    let mut rows = SummaryRows::new(&built, &fixed, scene.every_profile).about(scene.moment_centre).with_points(points);
     // Finite sliding forms the pairs on the current configuration: the small-sliding check
     // (displacements against the undeformed pairs' segments) does not apply to the run.
     let finite: Vec<bool> = scene.contact.iter().map(|c| c.sliding == scene::SlidingKey::Finite).collect();
