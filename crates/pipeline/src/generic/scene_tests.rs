@@ -132,6 +132,9 @@ fn staged_supports_out_of_the_schedule_name_their_key() {
     assert!(finite.contains("fix.1.from_step") && finite.contains("finite"), "{finite}");
     let boussinesq = err(&["fix.0.until_step=1", "solver.algorithm=boussinesq"]);
     assert!(boussinesq.contains("fix.0.until_step") && boussinesq.contains("boussinesq"), "{boussinesq}");
+    // A rotation's values are node values that hold in every step: staging one is refused.
+    let turned = err(&["fix.1.rotation=0.001", "fix.1.about=[0.0, 0.0]", "fix.1.from_step=2"]);
+    assert!(turned.contains("fix.1.from_step") && turned.contains("every step"), "{turned}");
 }
 
 #[test]
