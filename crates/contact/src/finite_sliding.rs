@@ -96,16 +96,16 @@ pub const REPAIRING_TOLERANCE: f64 = 1e-6;
 pub const KINK_TOLERANCE: f64 = 1e-3;
 
 /// Solves `schedule` on `built` with finite sliding (see the module docs) on the interfaces
-/// where `finite[i]` is true: each step on pairs formed on the configuration the previous step
-/// ended in; the other interfaces keep the pairs of `built` (small sliding). `on_step(i, step,
-/// current)` is told each solved step with the problem it was solved on (its pairs are that
-/// step's). The history stops after the first step that does not converge; [`History::scaled`]
+/// where `finite[i]` is true: each step on pairs formed on its own answer (re-paired until they
+/// hold, [`MAX_REPAIRINGS`] at most; [`SolvedStep::repairings`] counts them); the other
+/// interfaces keep the pairs of `built` (small sliding). `on_step(i, step, current)` is told each
+/// solved step with the problem it was solved on (its pairs are that step's). The history stops after the first step that does not converge; [`History::scaled`]
 /// is false. Returns the history and the problem of the last step solved.
 ///
 /// # Errors
 /// [`ContactError::InvalidInput`] when `finite` does not hold one flag per interface;
-/// [`ContactError::NotApplicable`] for an algorithm other than the active set and the augmented
-/// Lagrangian; [`ContactError::FiniteSliding`] for an interface that is neither node to segment
+/// [`ContactError::NotApplicable`] for an algorithm other than the active set, the augmented
+/// Lagrangian and Clarabel; [`ContactError::FiniteSliding`] for an interface that is neither node to segment
 /// nor segment to segment, or has a given gap; a schedule naming a pattern the problem does not have; every error of the
 /// pairing, factorisation and step solve.
 pub fn solve_finite_sliding(
