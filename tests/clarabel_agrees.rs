@@ -24,7 +24,6 @@
 
 mod common;
 
-use contact2d::contact::ContactError;
 use contact2d::generic::{GenericError, GenericReport, load_scene, solve_generic};
 
 fn run(path: &std::path::Path, algorithm: &str) -> Result<(GenericReport, f64), GenericError> {
@@ -35,8 +34,8 @@ fn run(path: &std::path::Path, algorithm: &str) -> Result<(GenericReport, f64), 
     Ok((outcome.report, clock.elapsed().as_secs_f64()))
 }
 
-/// Whether the scene has a contact with finite sliding, which Clarabel does not solve (its pairs
-/// are formed again before every step; refused before solving, docs/user-guide.md `sliding`).
+/// Whether the scene has a contact with finite sliding (its pairs formed again inside every
+/// step, docs/user-guide.md `sliding`).
 fn has_finite_sliding(path: &std::path::Path) -> bool {
     let scene = load_scene(path, &[]).unwrap();
     scene.contact.iter().any(|c| c.sliding == contact2d::generic::scene::SlidingKey::Finite)
@@ -49,32 +48,50 @@ fn clarabel_converges_and_agrees_with_the_active_set_on_every_bundled_scene() {
     for path in &scenes {
         let name = path.file_stem().unwrap().to_string_lossy().to_string();
         let (active, t_active) = run(path, "active_set").unwrap();
-        let (clarabel, t_clarabel) = match run(path, "clarabel") {
-            Ok(run) => run,
-            // The one refusal allowed: finite sliding, named before solving.
-            Err(GenericError::Contact { source, .. })
-                if has_finite_sliding(path) && matches!(*source, ContactError::NotApplicable { .. }) =>
-            {
-                println!("{name}: Clarabel refused before solving ({source})");
-                continue;
-            }
-            Err(e) => panic!("{name}: Clarabel: {e}"),
-        };
+        let (clarabel, t_clarabel) = run(path, "clarabel").unwrap_or_else(|e| panic!("{name}: Clarabel: {e}"));
         println!("{name}: active set {t_active:.2} s, Clarabel {t_clarabel:.2} s");
-        assert_eq!(active.status, "converged", "{name}: the active set");
-        assert_eq!(clarabel.status, "converged", "{name}: Clarabel ({:?})", clarabel.failed_check);
-        assert_eq!(active.steps.len(), clarabel.steps.len(), "{name}: steps");
-        for contact in active.contacts.keys() {
-            let scale = active.steps.iter().map(|s| s.contacts[contact].normal_force.abs()).fold(0.0f64, f64::max);
-            assert!(scale > 0.0, "{name}/{contact}: no normal force in any step");
-            for (i, (a, c)) in active.steps.iter().zip(&clarabel.steps).enumerate() {
-                let (a, c) = (a.contacts[contact].normal_force, c.contacts[contact].normal_force);
-                assert!(
-                    (a - c).abs() <= 1e-5 * scale,
-                    "{name}/{contact}, step {}: Clarabel {c} against the active set {a} (scale {scale})",
-                    i + 1
-                );
-            }
+        agree(&name, "Clarabel", &active, &clarabel);
+    }
+}
+
+/// Both runs converged, with the same steps, and every step's total normal force of every
+/// contact within 1e-5 of the contact's largest (the module docs' tolerance).
+fn agree(name: &str, label: &str, active: &GenericReport, other: &GenericReport) {
+    assert_eq!(active.status, "converged", "{name}: the active set");
+    assert_eq!(other.status, "converged", "{name}: {label} ({:?})", other.failed_check);
+    assert_eq!(active.steps.len(), other.steps.len(), "{name}: steps");
+    for contact in active.contacts.keys() {
+        let scale = active.steps.iter().map(|s| s.contacts[contact].normal_force.abs()).fold(0.0f64, f64::max);
+        assert!(scale > 0.0, "{name}/{contact}: no normal force in any step");
+        for (i, (a, c)) in active.steps.iter().zip(&other.steps).enumerate() {
+            let (a, c) = (a.contacts[contact].normal_force, c.contacts[contact].normal_force);
+            assert!(
+                (a - c).abs() <= 1e-5 * scale,
+                "{name}/{contact}, step {}: {label} {c} against the active set {a} (scale {scale})",
+                i + 1
+            );
         }
+    }
+}
+
+#[test]
+fn the_augmented_lagrangian_agrees_with_the_active_set_on_every_finite_sliding_scene() {
+    // Finite sliding forms the pairs again inside every step (each solve on the pairs of the
+    // iterate): a third algorithm on the same re-pairing, to the same 1e-5 (the augmented
+    // Lagrangian's semi-smooth Newton ends at round-off on its states, as the active set does).
+    // The moving roller is left out for time (the augmented Lagrangian takes 25 s on it on the
+    // shared machine; `contact2d run ... --set solver.algorithm=augmented_lagrangian` measured
+    // its normal forces within 1.3e-13 of the active set's at every step).
+    let scenes: Vec<_> = common::bundled_scenes()
+        .into_iter()
+        .filter(|p| has_finite_sliding(p) && !p.ends_with("moving_roller.toml"))
+        .collect();
+    assert!(scenes.len() >= 3, "the bundled finite-sliding scenes are missing");
+    for path in &scenes {
+        let name = path.file_stem().unwrap().to_string_lossy().to_string();
+        let (active, t_active) = run(path, "active_set").unwrap();
+        let (other, t_other) = run(path, "augmented_lagrangian").unwrap_or_else(|e| panic!("{name}: {e}"));
+        println!("{name}: active set {t_active:.2} s, augmented Lagrangian {t_other:.2} s");
+        agree(&name, "the augmented Lagrangian", &active, &other);
     }
 }

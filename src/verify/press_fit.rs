@@ -50,11 +50,13 @@
 //!   left midway, the same on L1 and L2: the continuum's, not the mesh's).
 //! * equilibrium: the driven face's reaction against the rigid wall's force on the plug, 1e-9 of
 //!   F (round-off).
-//! * energy balance per step against the step's work, 1 %: the trapezoid rule of the work is
-//!   exact only for a step whose pairs keep their normals and states; here nodes touch down on
-//!   the lead-in and slide along its curve (the normal turns by Δx/R per step), an error of the
-//!   first order in the step length (measured 0.61 % at Δx = 0.125 on both levels); the step
-//!   study (L1, 96 steps) asserts that halving the step divides it by 0.5 ± 0.1.
+//! * energy balance per step against the step's work, 1 %, on both levels and with 96 steps on
+//!   L1: the trapezoid rule of the work is exact only for a step whose pairs keep their normals
+//!   and states; here nodes touch down on the lead-in and slide along its curve. With pairs
+//!   formed once at a step's start that error was of the first order in the step (0.61 % at
+//!   Δx = 0.125, halved by halving the step); with the pairs of each step's answer
+//!   (`contact2d_contact::finite_sliding`) it is 8.0e-5 on L1 and 9.4e-6 on L2, and no longer
+//!   falls with the step (96 steps: 9.7e-5; the ratio is reported).
 //!
 //! Reported, not asserted: F / (μ p L) (1.29 at L = 2.09, 1.12 at L = 5.22: the constant entry
 //! offset F − μ p L = 1.21–1.22 over μ p L), the offset against the slender model's F_lead = 0.99
@@ -224,16 +226,16 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
     let halved = measure(&solve(root, &[mesh_override(MESHES[0].1), "loading.steps=96".into()])?)?;
     let ratio = halved.balance / l1_balance.unwrap_or(f64::NAN);
     report.checks.push(Check {
-        quantity: "energy balance error, 96 steps against 48 (first order: 0.5)".into(),
-        mesh: "L1".into(),
-        measured: ratio,
-        reference: 0.5,
-        tolerance: Tolerance::Absolute(0.1),
-    });
-    report.measurements.push(Measurement {
         quantity: "abs(ΔW − ΔE − ΔD) / ΔW, worst step, 96 steps".into(),
         mesh: "L1".into(),
-        value: halved.balance,
+        measured: halved.balance,
+        reference: 0.0,
+        tolerance: Tolerance::Absolute(0.01),
+    });
+    report.measurements.push(Measurement {
+        quantity: "energy balance error, 96 steps over 48 (no longer of first order in the step)".into(),
+        mesh: "L1".into(),
+        value: ratio,
     });
     report.notes.push(format!(
         "F_lead (slender model) = {lead:.4}; p = {p}; the half model's force, 2 μ p L for the whole plug"

@@ -199,6 +199,14 @@ pub struct SolvedStep {
     /// The force the stabilising springs still carry, `‖D (u_{j+1} − u_j)‖₁` (0 without floating
     /// bodies): the equilibrium error of the answer.
     pub floating_residual: f64,
+    /// Finite sliding: how many times the pairs were formed again on the step's answer and the
+    /// step solved again ([`crate::finite_sliding`]; 0 for a step whose first pairing was
+    /// stable, and for every step of small sliding).
+    pub repairings: usize,
+    /// Finite sliding: why the step ended at [`crate::finite_sliding::MAX_REPAIRINGS`] with a
+    /// pairing still changing (its status is then [`ContactStatus::MaxIterations`]); `None`
+    /// otherwise.
+    pub unstable_pairing: Option<String>,
 }
 
 /// A solved schedule.
@@ -297,6 +305,8 @@ pub fn solve_keeping(
         dissipated: h.dissipated,
         floating_iterations: floating.borrow().get(i).map_or(0, |f: &(usize, f64)| f.0),
         floating_residual: floating.borrow().get(i).map_or(0.0, |f: &(usize, f64)| f.1),
+        repairings: 0,
+        unstable_pairing: None,
     };
     let history = march_keeping(
         &targets,
@@ -359,6 +369,8 @@ fn scale_steps(
             solution,
             floating_iterations: if i == 0 { unit.floating_iterations } else { 0 },
             floating_residual: unit.floating_residual * t,
+            repairings: 0,
+            unstable_pairing: None,
         };
         on_step(i, &step);
         if retention == Retention::Last {

@@ -439,6 +439,9 @@ fn solve_generic_from(
     if scene.linearised_displacements || finite.iter().any(|f| *f) {
         rows = rows.without_sliding_check();
     }
+    if finite.iter().any(|f| *f) {
+        rows = rows.with_repairings();
+    }
     if let Some(cycle) = scene.last_cycle() {
         let references: Vec<Option<[String; 2]>> = scene.contact.iter().map(|c| c.reference_groups.clone()).collect();
         rows = rows.with_fretting(fretting::FrettingWatch::new(&built, cycle, &references).map_err(contact_error)?);

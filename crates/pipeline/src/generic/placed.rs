@@ -227,6 +227,8 @@ fn summary_of_steps(
                 dissipated: *dissipated,
                 floating_iterations: 0,
                 floating_residual: 0.0,
+                repairings: 0,
+                unstable_pairing: None,
             }
         })
         .collect();

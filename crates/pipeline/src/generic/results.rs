@@ -175,8 +175,14 @@ pub struct StepResult {
     /// The check that failed, for every status but `converged` (none there).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub failed_check: Option<String>,
-    /// Iterations of the algorithm (summed over a floating body's proximal iterations).
+    /// Iterations of the algorithm (summed over a floating body's proximal iterations, and over
+    /// finite sliding's solves of the step on its re-formed pairs).
     pub iterations: usize,
+    /// Finite sliding (`sliding = "finite"` on some contact): how many times the step's pairs
+    /// were formed again on its answer and the step solved again before the pairing was stable
+    /// (0: the pairs formed at the step's start held). Absent with small sliding only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub repairings: Option<usize>,
     /// Per interface.
     pub contacts: BTreeMap<String, ContactResult>,
     /// Per fixed group: `[f1, f2]`, a component `None` (JSON `null`) where the group's own
@@ -209,6 +215,9 @@ pub struct StepResult {
 /// Why a step did not converge ([`contact2d_contact::status_reason`]), with the floating
 /// bodies' proximal iteration where it ran.
 fn failed_check(problem: &contact2d_contact::ContactProblem, step: &SolvedStep) -> Option<String> {
+    if let Some(why) = &step.unstable_pairing {
+        return Some(why.clone());
+    }
     let reason = contact2d_contact::status_reason(problem, &step.solution)?;
     Some(if step.floating_iterations > 0 {
         format!(
@@ -373,6 +382,7 @@ impl<'a> StepResults<'a> {
             status: status_name(s.status),
             failed_check: failed_check(problem, step),
             iterations: s.iterations,
+            repairings: None,
             contacts,
             reactions: group_reactions(built, &reactions, self.fixed_groups, self.step),
             points: self.points.iter().map(|p| (p.name.clone(), p.result(&s.displacement, &reactions))).collect(),

@@ -21,6 +21,8 @@ pub struct SummaryRows<'a> {
     first_non_finite: Option<String>,
     sliding: SlidingWatch,
     fretting: Option<FrettingWatch>,
+    /// Whether each row reports its step's re-pairings (finite sliding).
+    repairings: bool,
 }
 
 impl<'a> SummaryRows<'a> {
@@ -34,6 +36,7 @@ impl<'a> SummaryRows<'a> {
             first_non_finite: None,
             sliding: SlidingWatch::new(built),
             fretting: None,
+            repairings: false,
         }
     }
 
@@ -58,6 +61,12 @@ impl<'a> SummaryRows<'a> {
         SummaryRows { fretting: Some(watch), ..self }
     }
 
+    /// The same rows, each with its step's re-pairings (finite sliding,
+    /// [`contact2d_contact::finite_sliding`]).
+    pub fn with_repairings(self) -> Self {
+        SummaryRows { repairings: true, ..self }
+    }
+
     /// The row of the next step, solved on `built` (the history's problem, or one of the same
     /// topology whose nodes moved).
     ///
@@ -75,7 +84,10 @@ impl<'a> SummaryRows<'a> {
     /// # Errors
     /// As [`SummaryRows::push`].
     pub fn push_on(&mut self, current: &BuiltProblem, step: &SolvedStep) -> Result<(), ContactError> {
-        let row = self.results.push_on(current, step, self.every_profile)?;
+        let mut row = self.results.push_on(current, step, self.every_profile)?;
+        if self.repairings {
+            row.repairings = Some(step.repairings);
+        }
         self.sliding.observe(&step.solution);
         if let Some(watch) = &mut self.fretting {
             watch.observe(current, &step.solution)?;

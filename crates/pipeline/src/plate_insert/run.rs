@@ -223,6 +223,8 @@ fn outcome_of_steps(
             dissipated: s.dissipated,
             floating_iterations: 0,
             floating_residual: 0.0,
+            repairings: 0,
+            unstable_pairing: None,
         })
         .collect();
     let (Some(first), Some(last), Some(last_step)) = (steps.first(), steps.last(), solved.last()) else {
