@@ -154,6 +154,8 @@ pub fn solve_stages(
                 dissipated,
                 floating_iterations: iterations,
                 floating_residual: residual,
+                repairings: 0,
+                unstable_pairing: None,
             };
             on_step(stage.steps.start + count, &step, &stage.built);
             count += 1;
