@@ -177,9 +177,11 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
     if count > 0 {
         let worst: Vec<String> = poor.iter().take(3).map(ToString::to_string).collect();
         notes.push(format!(
-            "{count} cells below quality {} (det J varies more than 20-fold inside; stresses near them are not to \
-             be trusted), the worst: {}",
+            "{count} cells below quality {} (det J varies more than 20-fold inside) or shape {} (scaled Jacobian at \
+             the corners: a corner under about 10° or over 170°); stresses near them are not to be trusted, the \
+             worst: {}",
             crate::mesh_summary::MIN_QUALITY,
+            crate::mesh_summary::MIN_SHAPE,
             worst.join("; ")
         ));
     }
