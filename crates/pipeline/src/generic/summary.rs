@@ -282,7 +282,8 @@ fn non_finite(value: &serde_json::Value, at: &str) -> Option<String> {
 /// The status of a history — its worst step's; `numerical` (with the check) when a step's
 /// solution fails [`contact2d_contact::certify`] or the history breaks its energy balance `W = Φ_E + Φ_f`
 /// ([`check_energy_balance`]: tight when solved once and scaled, where W is exact; the
-/// trapezoid rule's tolerance otherwise; `scaled`: whether the history was).
+/// trapezoid rule's tolerance otherwise; `scaled`: whether the history was; each step's own
+/// allowance for the trapezoid rule's bound and round-off).
 fn certified_status(scaled: bool, steps: &[StepResult], balance: bool) -> (&'static str, Option<String>) {
     let converged = results::status_name(contact2d_contact::ContactStatus::Converged);
     if let Some((i, step)) = steps.iter().enumerate().find(|(_, s)| s.status != converged) {
@@ -292,7 +293,9 @@ fn certified_status(scaled: bool, steps: &[StepResult], balance: bool) -> (&'sta
     let stored = |step: &StepResult| step.energies.values().sum::<f64>();
     let scale = energy_scale(steps.iter().map(|s| (s.work, stored(s), s.dissipated)));
     for (i, step) in steps.iter().enumerate().filter(|_| balance) {
-        if let Err(f) = check_energy_balance(step.work, stored(step), step.dissipated, scaled, scale) {
+        if let Err(f) =
+            check_energy_balance(step.work, stored(step), step.dissipated, scaled, scale, step.energy_allowance)
+        {
             return ("numerical", Some(format!("step {}: {f}", i + 1)));
         }
     }
