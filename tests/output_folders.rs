@@ -140,6 +140,15 @@ fn an_output_folder_that_cannot_be_created_fails_before_the_solve() {
     let out = Command::new(env!("CARGO_BIN_EXE_contact2d")).args(["run", SCENE, "--out"]).arg(&file).output().unwrap();
     assert!(String::from_utf8_lossy(&out.stderr).contains("not a directory"));
     std::fs::remove_file(&file).unwrap();
+    // A symbolic link to nothing is named as such, not as "File exists (os error 17)".
+    let link = fresh("dangling");
+    std::os::unix::fs::symlink(fresh("nowhere"), &link).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_contact2d")).args(["run", SCENE, "--out"]).arg(&link).output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("is a dangling symbolic link") && stderr.contains("nowhere"), "{stderr}");
+    assert!(!stderr.contains("os error") && stderr.trim().lines().count() == 1, "{stderr}");
+    std::fs::remove_file(&link).unwrap();
 }
 
 #[test]

@@ -80,11 +80,16 @@ impl OutputDir {
     /// whose results go there, so that a bad folder fails fast.
     ///
     /// # Errors
-    /// [`OutputError::NotADirectory`], [`OutputError::Io`] (cannot be created or written),
+    /// [`OutputError::NotADirectory`], [`OutputError::DanglingLink`] (a link to nothing, which
+    /// cannot be created as a folder), [`OutputError::Io`] (cannot be created or written),
     /// [`OutputError::Locked`] when another live process holds the lock.
     pub fn prepare(dir: &Path, manifest: Option<&str>) -> Result<OutputDir, OutputError> {
         if dir.exists() && !dir.is_dir() {
             return Err(OutputError::NotADirectory { path: dir.to_path_buf() });
+        }
+        if !dir.exists() && std::fs::symlink_metadata(dir).is_ok_and(|m| m.file_type().is_symlink()) {
+            let target = std::fs::read_link(dir).unwrap_or_default();
+            return Err(OutputError::DanglingLink { path: dir.to_path_buf(), target });
         }
         std::fs::create_dir_all(dir).map_err(|e| OutputError::io(dir, e))?;
         let lock = dir.join(LOCK_FILE);
