@@ -43,7 +43,9 @@ Examples:
   contact2d run scenes/generic/pin_lug.toml --about 0,-30 --json
 
 --set takes a dotted key and a TOML value (a bare word is read as a string); it may set a key the
-file leaves at its default. The scene keys are listed in docs/user-guide.md.";
+file leaves at its default. --unset KEY removes a key the file gives (applied before every --set),
+e.g. `--unset loading.steps --set 'loading.schedule=[[1.0, 0.0], [1.0, 0.5]]'`, or a whole entry
+(`--unset contact.1`). The scene keys are listed in docs/user-guide.md.";
 
 #[derive(Debug, Subcommand)]
 enum Command {
@@ -64,6 +66,11 @@ enum Command {
         /// Override a scene value by its dotted path, e.g. `plate_insert.load=0.5` (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
+        /// Remove a key the scene file gives, by its dotted path, e.g. `loading.steps` (so that
+        /// `--set loading.schedule=...` gives the schedule instead) or a whole entry such as
+        /// `contact.1` (repeatable; applied before every --set).
+        #[arg(long = "unset", value_name = "KEY")]
+        unset: Vec<String>,
         /// Print one JSON object instead of text.
         #[arg(long)]
         json: bool,
@@ -113,6 +120,10 @@ enum Command {
         /// Override a scene value for every run, as in `run` (repeatable).
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
+        /// Remove a key the scene file gives, for every run, as in `run` (repeatable; applied
+        /// before every --set and --vary).
+        #[arg(long = "unset", value_name = "KEY")]
+        unset: Vec<String>,
         /// The outputs to plot, comma-separated: any number of the run's JSON summary by its
         /// dotted path (the flagship's scenes: l, b, P, Phi_E1, Phi_E2, Phi_f, W, sigma_star, K,
         /// insert_hoop_max; generic scenes e.g. contacts.hertz.max_pressure,
@@ -198,13 +209,13 @@ fn run(cli: Cli) -> anyhow::Result<()> {
                 writeln!(stdout, "{}\n{summary}", file.display())?;
             }
         }
-        Command::Run { scene, set, json, out, quiet, verbose, profiles, about } => {
+        Command::Run { scene, set, unset, json, out, quiet, verbose, profiles, about } => {
             let options = RunOptions { quiet, verbose, every_profile: profiles == "all", about };
-            run_scene(&scene, &set, json, out.as_deref(), options)?;
+            run_scene(&scene, &overrides(&unset, &set), json, out.as_deref(), options)?;
         }
-        Command::Sweep { scene, vary, set, plot, out, quiet, shard, shards } => {
+        Command::Sweep { scene, vary, set, unset, plot, out, quiet, shard, shards } => {
             let shard = contact2d::sweep::Shard::new(shard, shards)?;
-            sweep(&scene, &vary, &set, &plot, (out, shard), quiet)?;
+            sweep(&scene, &vary, &overrides(&unset, &set), &plot, (out, shard), quiet)?;
         }
         Command::Bench(args) => writeln!(std::io::stdout().lock(), "{}", contact2d::bench::run_command(&args)?)?,
         Command::Verify(args) => {
@@ -228,6 +239,11 @@ fn run(cli: Cli) -> anyhow::Result<()> {
         }
     }
     Ok(())
+}
+
+/// The override entries of `--unset` (first) and `--set`, in the order the scene applies them.
+fn overrides(unset: &[String], set: &[String]) -> Vec<String> {
+    unset.iter().map(|key| contact2d::scene::unset_override(key)).chain(set.iter().cloned()).collect()
 }
 
 /// `--about x,y`: two finite numbers separated by a comma.

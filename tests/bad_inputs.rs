@@ -1,7 +1,8 @@
 //! The bad-input corpus (`tests/bad_inputs/`): every malformed mesh and scene there fails through
 //! the command line with the error recorded in `tests/bad_inputs/expected.toml`: the expected
 //! exit status, one line on stderr naming the file and containing the recorded substrings
-//! (the line, byte or key at fault), and no panic. An entry may add arguments after the file
+//! (the line, byte or key at fault), and no panic; a file that is valid but poor (a sliver) may
+//! instead exit 0 with recorded substrings on stdout (`stdout`). An entry may add arguments after the file
 //! (`args`, e.g. a `--set` or `--vary`), and for a flag at fault the message names the flag
 //! instead of the file (`names_file = false`).
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
@@ -17,6 +18,9 @@ struct Expected {
     command: String,
     exit: i32,
     stderr: Vec<String>,
+    /// Substrings stdout must contain (a warning about a valid but poor file).
+    #[serde(default)]
+    stdout: Vec<String>,
     /// For a run that solves (exit 0): the `status` its `--json` summary must report.
     #[serde(default)]
     status: Option<String>,
@@ -78,6 +82,9 @@ fn every_bad_input_fails_with_its_recorded_error() {
             }
             wrong.extend(want.stderr.iter().filter(|s| !stderr.contains(s.as_str())).map(|s| format!("lacks {s:?}")));
         }
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        wrong
+            .extend(want.stdout.iter().filter(|s| !stdout.contains(s.as_str())).map(|s| format!("stdout lacks {s:?}")));
         if let Some(status) = &want.status {
             wrong.extend(check_summary(&out.stdout, status, &want.failed_check));
         }

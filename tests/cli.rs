@@ -107,6 +107,26 @@ fn bad_override_values_name_the_key_and_the_override() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
 }
 
+/// `--unset KEY` removes a key the file gives: pin_lug.toml gives `loading.steps = 4`; without
+/// it the documented default is one step (docs/user-guide.md, `[loading]`: neither given, one
+/// step). A key the file does not give is one clear line naming the flag.
+#[test]
+fn unset_removes_a_key_the_scene_gives() {
+    let steps = |args: &[&str]| {
+        let (ok, stdout, stderr) = contact2d(&[&["run", "scenes/generic/pin_lug.toml", "--json"], args].concat());
+        assert!(ok, "{stderr}");
+        let summary: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+        summary["steps"].as_array().unwrap().len()
+    };
+    assert_eq!(steps(&[]), 4);
+    assert_eq!(steps(&["--unset", "loading.steps"]), 1);
+    // Applied before every --set, whatever the order on the command line.
+    assert_eq!(steps(&["--set", "loading.steps=2", "--unset", "loading.steps"]), 2);
+    let (ok, _, stderr) = contact2d(&["run", "scenes/generic/pin_lug.toml", "--unset", "loading.stepz"]);
+    assert!(!ok && stderr.trim().lines().count() == 1, "{stderr}");
+    assert!(stderr.contains("--unset loading.stepz: the scene gives no key \"loading.stepz\" to remove"), "{stderr}");
+}
+
 #[test]
 fn a_closed_stdout_ends_quietly_without_a_panic() {
     // `contact2d mesh big.msh --json | head -1`: the reader goes away before the output is written.

@@ -7,6 +7,9 @@
 //! fail fast  an --out that cannot be created fails before the solve (no report on stdout)
 //! killed     SIGTERM at any moment: either no summary.json, or one listing exactly the
 //!            (non-hidden) files present
+//! SIGKILL    a run killed outright leaves its files and its lock; the next run, a shorter one,
+//!            removes the files the dead run's lock records (its step_001/002.vtu) before
+//!            writing: its summary lists exactly the files present
 //! undrawable a non-finite field: its figures skipped with a note, the rest written whole
 //! ```
 //! The scene is the clearance history on the N = 16 mesh (three steps, well under a second).
@@ -137,6 +140,15 @@ fn an_output_folder_that_cannot_be_created_fails_before_the_solve() {
     let out = Command::new(env!("CARGO_BIN_EXE_contact2d")).args(["run", SCENE, "--out"]).arg(&file).output().unwrap();
     assert!(String::from_utf8_lossy(&out.stderr).contains("not a directory"));
     std::fs::remove_file(&file).unwrap();
+    // A symbolic link to nothing is named as such, not as "File exists (os error 17)".
+    let link = fresh("dangling");
+    std::os::unix::fs::symlink(fresh("nowhere"), &link).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_contact2d")).args(["run", SCENE, "--out"]).arg(&link).output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("is a dangling symbolic link") && stderr.contains("nowhere"), "{stderr}");
+    assert!(!stderr.contains("os error") && stderr.trim().lines().count() == 1, "{stderr}");
+    std::fs::remove_file(&link).unwrap();
 }
 
 #[test]
@@ -175,6 +187,57 @@ fn a_run_killed_at_any_moment_leaves_a_whole_folder_or_no_summary() {
     // The next run cleans up whatever a killed one left (stale lock, temporary files).
     assert!(run(&dir, &[]).status.success());
     assert_eq!(listed(&dir).unwrap(), names(&dir));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// What a run killed by SIGKILL while writing leaves, made exactly: the lock of a dead process
+/// (a pid above Linux's pid_max) recording the three-step run's files, those files present, no
+/// summary. A one-step run then writes into the folder: the dead run's step_001/002.vtu and
+/// history.* go, the user's own file stays, and the summary lists exactly the files present.
+#[test]
+fn a_killed_runs_files_recorded_in_its_lock_are_removed_before_writing() {
+    let dir = fresh("sigkill");
+    assert!(run(&dir, &[]).status.success(), "three steps");
+    let three = listed(&dir).unwrap();
+    assert!(three.contains(&"step_002.vtu".to_string()) && three.contains(&"history.png".to_string()));
+    // The killed run had removed the manifest and recorded every file it started writing.
+    std::fs::remove_file(dir.join("summary.json")).unwrap();
+    let record: String = three.iter().map(|f| format!("{f}\n")).collect();
+    std::fs::write(dir.join(".contact2d.lock"), format!("4194305\n{record}")).unwrap();
+    std::fs::write(dir.join(".contact2d-tmp-4194305-step_003.vtu"), "half").unwrap();
+    std::fs::write(dir.join("notes_of_mine.txt"), "mine").unwrap();
+    let out = run(&dir, &["--set", "plate_insert.steps=1"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let files = listed(&dir).unwrap();
+    let present: Vec<String> = names(&dir).into_iter().filter(|n| n != "notes_of_mine.txt").collect();
+    assert_eq!(files, present, "the summary lists exactly the files present");
+    for gone in ["step_001.vtu", "step_002.vtu", "history.png", ".contact2d-tmp-4194305-step_003.vtu"] {
+        assert!(!dir.join(gone).exists(), "{gone} of the dead run");
+    }
+    assert!(dir.join("notes_of_mine.txt").exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The same with a real SIGKILL at growing delays: whatever moment the three-step run died,
+/// the one-step run after it leaves exactly the files its summary lists.
+#[test]
+fn a_run_after_a_sigkill_leaves_exactly_its_own_files() {
+    let dir = fresh("sigkill_real");
+    for delay_ms in [150, 400, 800] {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_contact2d"))
+            .args(["run", SCENE, "--set", MESH, "--quiet", "--out"])
+            .arg(&dir)
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(delay_ms));
+        let _ = Command::new("kill").args(["-KILL", &child.id().to_string()]).status();
+        child.wait().unwrap();
+        let out = run(&dir, &["--set", "plate_insert.steps=1"]);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert_eq!(listed(&dir).unwrap(), names(&dir), "after a SIGKILL at {delay_ms} ms");
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -71,6 +71,17 @@ impl Scene {
         Scene { text: self.text.clone(), path: self.path.clone(), overrides }.checked()
     }
 
+    /// A copy of the scene without `key` (a dotted path as `--unset` takes it, e.g.
+    /// "loading.steps", or a whole entry such as "contact.1"): the key falls back to its default,
+    /// or another can take its place (`.unset("loading.steps").set("loading.schedule", [...])`).
+    /// Applied in order with `set`. Raises SceneError with the CLI's message if the scene does
+    /// not give the key or the scene it makes is invalid.
+    fn unset(&self, key: &str) -> PyResult<Scene> {
+        let mut overrides = self.overrides.clone();
+        overrides.push(contact2d::scene::unset_override(key));
+        Scene { text: self.text.clone(), path: self.path.clone(), overrides }.checked()
+    }
+
     /// The scene's TOML text with the overrides applied (comments and layout are not kept).
     fn to_toml(&self) -> PyResult<String> {
         contact2d::scene::overridden_scene_text(&self.text, &self.path, &self.overrides).map_err(scene_error)
@@ -88,7 +99,8 @@ impl Scene {
         self.path.clone()
     }
 
-    /// The overrides applied so far, as `--set` arguments.
+    /// The overrides applied so far, in order: `key=value` for a `set` (as `--set` takes it),
+    /// `!key` for an `unset`.
     #[getter]
     fn overrides(&self) -> Vec<String> {
         self.overrides.clone()

@@ -5,11 +5,12 @@ parses both JSON texts to the same doubles, so `==` is bit-for-bit equality). On
 
 from __future__ import annotations
 
+import json
 import sys
 from pathlib import Path
 
 import pytest
-from conftest import ROOT, cli_json
+from conftest import ROOT, cli_json, run_cli
 
 import contact2d
 
@@ -55,6 +56,22 @@ def test_overrides_are_the_cli_set() -> None:
     assert scene.overrides == ["contact.bore.friction=0.1", "solver.algorithm=clarabel"]
     expected = cli_json(path, "contact.bore.friction=0.1", "solver.algorithm=clarabel")
     assert without_times(contact2d.solve(scene).json) == without_times(expected)
+
+
+def test_unset_is_the_cli_unset() -> None:
+    # pin_lug gives loading.steps = 4; without it the default is one step (docs/user-guide.md).
+    path = ROOT / "scenes" / "generic" / "pin_lug.toml"
+    scene = contact2d.Scene.load(path).unset("loading.steps")
+    assert scene.overrides == ["!loading.steps"]
+    done = run_cli("run", str(path), "--json", "--quiet", "--unset", "loading.steps")
+    assert done.returncode == 0, done.stderr
+    result = contact2d.solve(scene).json
+    assert without_times(result) == without_times(json.loads(done.stdout))
+    assert len(result["steps"]) == 1
+    # In order with set: a key removed and then set again.
+    assert len(contact2d.solve(scene.set("loading.steps", 2)).json["steps"]) == 2
+    with pytest.raises(contact2d.SceneError, match='--unset loading.stepz: the scene gives no key "loading.stepz"'):
+        contact2d.Scene.load(path).unset("loading.stepz")
 
 
 def test_from_dict_and_to_toml_give_the_file_s_results() -> None:

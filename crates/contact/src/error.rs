@@ -46,8 +46,9 @@ pub enum ContactError {
     /// closes against some of its rigid motions (it would fly away or spin).
     #[error(
         "body \"{body}\" is held by no Dirichlet condition and its contact does not hold it under the load at \
-         step {step}: free {}; fix these motions (a [[fix]] on a group of the body) or make sure a contact closes",
-        modes.join(", ")
+         step {step}: free {}; {}",
+        modes.join(", "),
+        not_held_advice(*largest_gap, *model_size)
     )]
     BodyNotHeld {
         /// The body.
@@ -56,6 +57,10 @@ pub enum ContactError {
         modes: Vec<String>,
         /// The load step (from 1).
         step: usize,
+        /// The initial gap of largest magnitude of the problem's pairs (negative: an interference).
+        largest_gap: f64,
+        /// The model's size (its largest coordinate extent).
+        model_size: f64,
     },
     /// A solution with a non-finite number (overflow): reported as an error, never as a
     /// result whose NaN would be written as JSON `null`.
@@ -92,4 +97,22 @@ pub enum ContactError {
     /// A parameter outside its admissible range.
     #[error("invalid contact input: {0}")]
     InvalidInput(String),
+}
+
+/// What to do about a body the contact does not hold: when the initial gaps exceed the model's
+/// size (a gap of ±1e6 on a block of size 4), the rigid travel across them is beyond what the
+/// landing resolves — the pairs' positions after a travel `t` are rounded to about `ε t`, and
+/// the landing's safety margin is relative to `t` — so the gap, not a missing fix, is at fault.
+fn not_held_advice(largest_gap: f64, model_size: f64) -> String {
+    if largest_gap.abs() > model_size {
+        let what = if largest_gap > 0.0 { "gap" } else { "interference" };
+        format!(
+            "its contact's initial {what} reaches {largest_gap:.3e}, {:.1e} times the model's size {model_size:.3e}: a \
+             gap or travel that large is beyond what the landing onto the contact can cross; give a gap within \
+             the model's size, or fix these motions (a [[fix]] on a group of the body)",
+            largest_gap.abs() / model_size
+        )
+    } else {
+        "fix these motions (a [[fix]] on a group of the body) or make sure a contact closes".into()
+    }
 }

@@ -544,5 +544,12 @@ fn not_held(problem: &ContactProblem, modes: &RigidModes, direction: &[f64], ste
         .filter(|((p, _), d)| *p == piece_index && d.abs() >= 1e-3 * largest)
         .map(|((_, m), _)| names[*m].clone())
         .collect();
-    ContactError::BodyNotHeld { body: piece.body.clone(), modes: moving, step }
+    let largest_gap = problem.gap.iter().copied().fold(0.0f64, |a, g| if g.abs() > a.abs() { g } else { a });
+    ContactError::BodyNotHeld {
+        body: piece.body.clone(),
+        modes: moving,
+        step,
+        largest_gap,
+        model_size: length_scale(problem),
+    }
 }

@@ -62,7 +62,7 @@ pub use builder::{
     BodyDescription, BuiltProblem, ContactDescription, EdgeLoadKind, FixDescription, GapDescription, InterfaceInfo,
     LoadDescription, NodeFixDescription, NodeLoadDescription, Pairing, ProblemDescription,
 };
-pub use certify::{Check, FailedCheck, certify, check_energy_balance, energy_scale, status_reason};
+pub use certify::{Check, EnergyAllowance, FailedCheck, certify, check_energy_balance, energy_scale, status_reason};
 pub use clarabel_qp::{solve_frictionless_qp, solve_frictionless_qp_on};
 pub use clarabel_tresca::{solve_frictional_qp, solve_frictional_qp_on};
 pub use error::ContactError;

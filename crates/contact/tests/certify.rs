@@ -14,7 +14,8 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use contact2d_contact::{
-    Check, ContactStatus, Interface, certify, check_energy_balance, energy_scale, solve_frictionless_active_set,
+    Check, ContactStatus, EnergyAllowance, Interface, certify, check_energy_balance, energy_scale,
+    solve_frictionless_active_set,
 };
 use contact2d_mesh::CellKind;
 
@@ -49,15 +50,24 @@ fn exact_answer_passes_and_each_wrong_one_fails_with_its_check() {
 #[test]
 fn energy_balance_is_exact_for_one_step_and_loose_for_the_trapezoid_rule() {
     // W = Φ_E + Φ_f exactly.
-    check_energy_balance(1.0, 0.75, 0.25, true, 0.0).unwrap();
+    check_energy_balance(1.0, 0.75, 0.25, true, 0.0, EnergyAllowance::default()).unwrap();
     // 1e-3 off: a failure when W is exact, within the trapezoid rule's error when not.
-    assert_eq!(check_energy_balance(1.0, 0.75, 0.25 + 1e-3, true, 0.0).unwrap_err().check, Check::EnergyBalance);
-    check_energy_balance(1.0, 0.75, 0.25 + 1e-3, false, 0.0).unwrap();
+    assert_eq!(
+        check_energy_balance(1.0, 0.75, 0.25 + 1e-3, true, 0.0, EnergyAllowance::default()).unwrap_err().check,
+        Check::EnergyBalance
+    );
+    check_energy_balance(1.0, 0.75, 0.25 + 1e-3, false, 0.0, EnergyAllowance::default()).unwrap();
     // A strain energy 60 times the work (Clarabel at c = 1e6 before issue 15) fails either way.
-    assert_eq!(check_energy_balance(0.84, 53.5, 0.0, false, 0.0).unwrap_err().check, Check::EnergyBalance);
-    assert_eq!(check_energy_balance(f64::NAN, 1.0, 0.0, false, 0.0).unwrap_err().check, Check::Finite);
+    assert_eq!(
+        check_energy_balance(0.84, 53.5, 0.0, false, 0.0, EnergyAllowance::default()).unwrap_err().check,
+        Check::EnergyBalance
+    );
+    assert_eq!(
+        check_energy_balance(f64::NAN, 1.0, 0.0, false, 0.0, EnergyAllowance::default()).unwrap_err().check,
+        Check::Finite
+    );
     // Nothing loaded, nothing stored.
-    check_energy_balance(0.0, 0.0, 0.0, true, 0.0).unwrap();
+    check_energy_balance(0.0, 0.0, 0.0, true, 0.0, EnergyAllowance::default()).unwrap();
 }
 
 #[test]
@@ -68,15 +78,21 @@ fn a_step_at_zero_load_balances_against_the_history_energy() {
     // against the history's largest energy it is 4e-28, round-off by any measure.
     let scale = energy_scale([(0.0, 4.7e-29, 0.0), (0.1317, 0.1316, 0.0)]);
     assert_eq!(scale, 0.1317, "the largest |W| or |Φ_E + Φ_f| over the steps");
-    check_energy_balance(0.0, 4.7e-29, 0.0, false, scale).unwrap();
-    check_energy_balance(0.0, 4.7e-29, 0.0, true, scale).unwrap();
+    check_energy_balance(0.0, 4.7e-29, 0.0, false, scale, EnergyAllowance::default()).unwrap();
+    check_energy_balance(0.0, 4.7e-29, 0.0, true, scale, EnergyAllowance::default()).unwrap();
     // Pressed then released (schedule [{press = 1}, {press = 0}]): the trapezoid W of the
     // release cancels the loading's (−2e-15) while Φ_f = 5.2e-5 stays; the trapezoid rule's
     // error is 4e-4 of the history's energy, well inside its tolerance.
-    check_energy_balance(-2.0e-15, 4.7e-29, 5.2e-5, false, scale).unwrap();
+    check_energy_balance(-2.0e-15, 4.7e-29, 5.2e-5, false, scale, EnergyAllowance::default()).unwrap();
     // A real imbalance at a small step is still caught: half the history's energy stored with
     // no work put in.
-    assert_eq!(check_energy_balance(0.0, 0.066, 0.0, false, scale).unwrap_err().check, Check::EnergyBalance);
+    assert_eq!(
+        check_energy_balance(0.0, 0.066, 0.0, false, scale, EnergyAllowance::default()).unwrap_err().check,
+        Check::EnergyBalance
+    );
     // With W exact (tolerance 1e-4), 1e-3 of the history's energy is an imbalance.
-    assert_eq!(check_energy_balance(0.0, 1.3e-4, 0.0, true, scale).unwrap_err().check, Check::EnergyBalance);
+    assert_eq!(
+        check_energy_balance(0.0, 1.3e-4, 0.0, true, scale, EnergyAllowance::default()).unwrap_err().check,
+        Check::EnergyBalance
+    );
 }

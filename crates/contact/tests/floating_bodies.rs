@@ -167,7 +167,7 @@ fn a_block_pulled_away_is_reported_not_held() {
     let built = description(blocks(6, [0.5, 2.5], 4), 0.0, -10.0, None).build().unwrap();
     let schedule = LoadSchedule::ramp(vec!["press".into()], 1).unwrap();
     match solve(&built.problem, &SolverSettings::new(ContactAlgorithm::ActiveSet), &schedule) {
-        Err(ContactError::BodyNotHeld { body, modes, step }) => {
+        Err(ContactError::BodyNotHeld { body, modes, step, .. }) => {
             assert_eq!(body, "b_domain");
             assert_eq!(step, 1);
             assert!(modes.iter().any(|m| m == "u2 translation"), "{modes:?}");

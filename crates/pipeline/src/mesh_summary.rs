@@ -5,12 +5,26 @@
 //! the whole mesh, which is negative if any cell is inverted. Both are measured as a model sees
 //! the cells: clockwise cells (a Gmsh surface from a clockwise curve loop) are counted in
 //! `clockwise_cells` and measured renumbered counter-clockwise, as `Model::add_body` renumbers them.
+//!
+//! det J is constant in a straight-sided triangle, so that ratio is 1 for any triangle however
+//! flat. The shape of a cell is therefore measured as well, by its scaled Jacobian at the corners
+//! (Knupp 2000), from the corner nodes (the straight-sided cell):
+//!
+//! ```text
+//!   at corner i, with edges e1 = x(i+1) − x(i) and e2 = x(i−1) − x(i) (corners counter-clockwise):
+//!     s_i   = (e1 × e2) / (|e1| |e2|) = sin θ_i            θ_i the corner's angle
+//!   shape   = min_i s_i / sin θ*                           θ* = 60° (triangle), 90° (quadrangle)
+//! ```
+//!
+//! 1 for an equilateral triangle or a square (0.816 for a right isosceles triangle), → 0 for a
+//! corner closing to 0° or opening to 180° (a sliver, a needle), ≤ 0 for an inverted or
+//! non-convex corner.
 
 use std::collections::BTreeMap;
 
 use contact2d_element::{GaussRule, jacobian_determinant};
 use contact2d_fem::element_type;
-use contact2d_mesh::{CellBlock, Mesh};
+use contact2d_mesh::{CellBlock, CellKind, Mesh, NodeId};
 use serde::Serialize;
 
 /// One physical group in the summary.
@@ -39,11 +53,15 @@ pub struct MeshSummary {
     pub min_det_j: Option<f64>,
     /// Worst cell quality `min det J / max det J` (`None` without 2D cells).
     pub worst_quality: Option<f64>,
+    /// Worst cell shape, the scaled Jacobian at the corners (see the module doc; `None` without
+    /// 2D cells).
+    pub worst_shape: Option<f64>,
     /// Cells whose nodes run clockwise (renumbered when a model is built; not an error).
     pub clockwise_cells: usize,
-    /// Cells of quality below [`MIN_QUALITY`], worst first (at most [`MAX_LISTED`]).
+    /// Cells of quality below [`MIN_QUALITY`] or shape below [`MIN_SHAPE`], worst first (at
+    /// most [`MAX_LISTED`]).
     pub poor_cells: Vec<PoorCell>,
-    /// How many cells are below [`MIN_QUALITY`] (all of them, listed or not).
+    /// How many cells are below [`MIN_QUALITY`] or [`MIN_SHAPE`] (all of them, listed or not).
     pub poor_cell_count: usize,
 }
 
@@ -52,6 +70,14 @@ pub struct MeshSummary {
 /// near it are not to be trusted. The cells of every bundled mesh stay above 0.17 (Gmsh's
 /// curved quadratic meshes; measured 2026-11-25).
 pub const MIN_QUALITY: f64 = 0.05;
+
+/// The shape (scaled Jacobian at the corners, see the module doc) below which a cell is warned
+/// about: a corner angle under about 10° or over 170° in a triangle (sin θ < 0.2 · sin 60°),
+/// under 11.5° or over 168.5° in a quadrangle. Such a cell makes the stiffness ill-conditioned
+/// and its stresses inaccurate (the error bounds of triangles grow as 1/sin θ_max, Babuška &
+/// Aziz 1976). The cells of every bundled mesh stay above 0.24 (moving_roller_L1; measured
+/// 2026-11-28).
+pub const MIN_SHAPE: f64 = 0.2;
 
 /// The most poor cells a summary lists.
 pub const MAX_LISTED: usize = 10;
@@ -67,21 +93,35 @@ pub struct PoorCell {
     pub centroid: [f64; 2],
     /// Its quality `min det J / max det J`.
     pub quality: f64,
+    /// Its shape, the scaled Jacobian at the corners (see the module doc).
+    pub shape: f64,
+}
+
+impl PoorCell {
+    /// How far below its thresholds the cell is: the smaller of quality / [`MIN_QUALITY`] and
+    /// shape / [`MIN_SHAPE`] (below 1 for every poor cell; the worst cell first when sorted).
+    fn severity(&self) -> f64 {
+        (self.quality / MIN_QUALITY).min(self.shape / MIN_SHAPE)
+    }
 }
 
 impl std::fmt::Display for PoorCell {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let [x, y] = self.centroid;
-        write!(
-            f,
-            "element {} of \"{}\" at ({x:.4e}, {y:.4e}): quality {:.2e} (below {MIN_QUALITY})",
-            self.element, self.region, self.quality
-        )
+        write!(f, "element {} of \"{}\" at ({x:.4e}, {y:.4e}): ", self.element, self.region)?;
+        let mut below = vec![];
+        if self.quality < MIN_QUALITY {
+            below.push(format!("quality {:.2e} (below {MIN_QUALITY})", self.quality));
+        }
+        if self.shape < MIN_SHAPE {
+            below.push(format!("shape {:.2e} (below {MIN_SHAPE})", self.shape));
+        }
+        write!(f, "{}", below.join(", "))
     }
 }
 
-/// The cells of `mesh` below [`MIN_QUALITY`], worst first, and how many there are (the list
-/// capped at [`MAX_LISTED`]); measured counter-clockwise as a model sees them.
+/// The cells of `mesh` below [`MIN_QUALITY`] or [`MIN_SHAPE`], worst first, and how many there
+/// are (the list capped at [`MAX_LISTED`]); measured counter-clockwise as a model sees them.
 pub fn poor_cells(mesh: &Mesh) -> (Vec<PoorCell>, usize) {
     let mut poor = vec![];
     for b in mesh.blocks.iter().filter(|b| element_type(b.kind).is_some()) {
@@ -92,17 +132,18 @@ pub fn poor_cells(mesh: &Mesh) -> (Vec<PoorCell>, usize) {
             .map_or(String::new(), |g| g.name.clone());
         for ((cell, tag), [lo, hi]) in b.cells().zip(&b.element_tags).zip(block_jacobian_extremes(mesh, b)) {
             let quality = if hi > 0.0 { lo / hi } else { lo.min(0.0) };
-            if quality < MIN_QUALITY {
+            let shape = cell_shape(mesh, b.kind, cell);
+            if quality < MIN_QUALITY || shape < MIN_SHAPE {
                 let n = cell.len() as f64;
                 let centroid = cell.iter().fold([0.0; 2], |a, p| {
                     let x = mesh.points[p.0];
                     [a[0] + x[0] / n, a[1] + x[1] / n]
                 });
-                poor.push(PoorCell { element: *tag, region: region.clone(), centroid, quality });
+                poor.push(PoorCell { element: *tag, region: region.clone(), centroid, quality, shape });
             }
         }
     }
-    poor.sort_by(|a, b| a.quality.total_cmp(&b.quality));
+    poor.sort_by(|a, b| a.severity().total_cmp(&b.severity()));
     let count = poor.len();
     poor.truncate(MAX_LISTED);
     (poor, count)
@@ -131,6 +172,12 @@ pub fn summarize_mesh(mesh: &Mesh) -> MeshSummary {
         let q = if hi > 0.0 { lo / hi } else { lo.min(0.0) };
         worst_quality = Some(worst_quality.map_or(q, |w| w.min(q)));
     }
+    let worst_shape = oriented
+        .blocks
+        .iter()
+        .filter(|b| element_type(b.kind).is_some())
+        .flat_map(|b| b.cells().map(|cell| cell_shape(&oriented, b.kind, cell)))
+        .reduce(f64::min);
     let (poor_cells, poor_cell_count) = poor_cells(&oriented);
     MeshSummary {
         poor_cells,
@@ -141,8 +188,31 @@ pub fn summarize_mesh(mesh: &Mesh) -> MeshSummary {
         bbox: mesh.bounding_box().unwrap_or([[0.0; 2]; 2]),
         min_det_j,
         worst_quality,
+        worst_shape,
         clockwise_cells,
     }
+}
+
+/// The shape of one cell of kind `kind`: its scaled Jacobian at the corners, `min_i sin θ_i /
+/// sin θ*` (see the module doc), from its corner nodes (the first three of a triangle, four of
+/// a quadrangle, in Gmsh's order); 1 for a kind without corners (points, lines). A corner with a zero-length
+/// edge counts as 0.
+pub fn cell_shape(mesh: &Mesh, kind: CellKind, cell: &[NodeId]) -> f64 {
+    let (corners, ideal) = match kind {
+        CellKind::Tri3 | CellKind::Tri6 => (3, 3f64.sqrt() / 2.0),
+        CellKind::Quad4 | CellKind::Quad8 | CellKind::Quad9 => (4, 1.0),
+        _ => return 1.0,
+    };
+    let point = |i: usize| cell.get(i % corners).and_then(|n| mesh.points.get(n.0)).copied().unwrap_or([0.0; 2]);
+    (0..corners)
+        .map(|i| {
+            let (x, next, prev) = (point(i), point(i + 1), point(i + corners - 1));
+            let e1 = [next[0] - x[0], next[1] - x[1]];
+            let e2 = [prev[0] - x[0], prev[1] - x[1]];
+            let lengths = e1[0].hypot(e1[1]) * e2[0].hypot(e2[1]);
+            if lengths > 0.0 { (e1[0] * e2[1] - e1[1] * e2[0]) / lengths / ideal } else { 0.0 }
+        })
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// `[min, max]` of det J over each cell with an element type (at the Gauss points of its
@@ -192,8 +262,18 @@ impl std::fmt::Display for MeshSummary {
             (Some(d), Some(q)) => write!(f, "min det J: {d:.6e}\nworst quality (min/max det J): {q:.4}")?,
             _ => write!(f, "no 2D cells")?,
         }
+        if let Some(s) = self.worst_shape {
+            write!(
+                f,
+                "\nworst shape (scaled Jacobian at the corners, 1 for a square or equilateral triangle): {s:.4}"
+            )?;
+        }
         if self.poor_cell_count > 0 {
-            write!(f, "\nwarning: {} cells below quality {MIN_QUALITY}, the worst:", self.poor_cell_count)?;
+            write!(
+                f,
+                "\nwarning: {} cells below quality {MIN_QUALITY} or shape {MIN_SHAPE}, the worst:",
+                self.poor_cell_count
+            )?;
             for cell in &self.poor_cells {
                 write!(f, "\n  {cell}")?;
             }
@@ -224,7 +304,52 @@ mod tests {
         assert!(sliver.quality.abs() < 0.01 && sliver.region == "domain", "{sliver}");
         let [x, y] = sliver.centroid;
         assert!((x - (1.0 + 2.0 + 1.501 + 1.0) / 4.0).abs() < 1e-12 && (y - (0.501 + 1.0) / 4.0).abs() < 1e-12);
-        assert!(format!("{s}").contains("warning: 1 cells below quality 0.05"), "{s}");
+        assert!(format!("{s}").contains("warning: 1 cells below quality 0.05 or shape 0.2"), "{s}");
+    }
+
+    /// The textbook bad element det J cannot see: a triangle (0, 0), (1, 0), (0.5, h) with
+    /// h = 1e-3 (aspect 1/h = 1,000). Its det J is constant (quality exactly 1), but its apex
+    /// angle is 180° − 2·atan(2h) and its base angles atan(2h), whose sine 2h/√(1 + 4h²) is the
+    /// smallest (the apex's is twice it): the shape is 2h/√(1 + 4h²) / (√3/2), about 2.3e-3, far
+    /// below 0.2.
+    #[test]
+    fn a_flat_triangle_is_a_sliver_whatever_its_det_j() {
+        let h = 1e-3;
+        let mut mesh = rectangle(CellKind::Tri3, [0.0, 1.0], [0.0, 1.0], 1, 1);
+        mesh.points = vec![[0.0, 0.0], [1.0, 0.0], [0.5, h], [2.0, 2.0]];
+        mesh.blocks[0].nodes = vec![NodeId(0), NodeId(1), NodeId(2), NodeId(1), NodeId(3), NodeId(2)];
+        let s = summarize_mesh(&mesh);
+        let base = 2.0 * h / (1.0 + 4.0 * h * h).sqrt() / (3f64.sqrt() / 2.0);
+        let sliver = &s.poor_cells[0];
+        assert_eq!(s.poor_cell_count, 1, "{s}");
+        // Both sines are computed from rounded coordinates of size 1: a relative 1e-12 bounds it.
+        assert!((sliver.shape - base).abs() < 1e-12 * base, "{} against {base}", sliver.shape);
+        assert!((sliver.quality - 1.0).abs() < 1e-12);
+        assert_eq!(sliver.element, mesh.blocks[0].element_tags[0]);
+        assert!(s.to_string().contains("shape 2.31e-3 (below 0.2)"), "{s}");
+        assert!(!s.to_string().contains("quality 1"), "{s}");
+    }
+
+    /// Closed forms of the shape: a square 1, any rectangle 1 (right angles), a right isosceles
+    /// triangle sin 45° / sin 60° = √(2/3), an equilateral triangle 1, a rhombus of 30° sin 30° = 0.5.
+    #[test]
+    fn shape_of_known_cells() {
+        let shape = |kind: CellKind, points: Vec<[f64; 2]>| {
+            let n = points.len();
+            let mesh = Mesh { points, ..Mesh::default() };
+            let cell: Vec<NodeId> = (0..n).map(NodeId).collect();
+            cell_shape(&mesh, kind, &cell)
+        };
+        let close = |a: f64, b: f64| (a - b).abs() < 1e-14;
+        assert!(close(shape(CellKind::Quad4, vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]), 1.0));
+        assert!(close(shape(CellKind::Quad4, vec![[0.0, 0.0], [1e3, 0.0], [1e3, 1.0], [0.0, 1.0]]), 1.0));
+        assert!(close(shape(CellKind::Tri3, vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]), (2.0f64 / 3.0).sqrt()));
+        assert!(close(shape(CellKind::Tri3, vec![[0.0, 0.0], [1.0, 0.0], [0.5, 3f64.sqrt() / 2.0]]), 1.0));
+        let (c, s) = (30f64.to_radians().cos(), 30f64.to_radians().sin());
+        assert!(close(shape(CellKind::Quad4, vec![[0.0, 0.0], [1.0, 0.0], [1.0 + c, s], [c, s]]), 0.5));
+        // Clockwise: every corner negative, the right angle most: −1 / sin 60°.
+        assert!(close(shape(CellKind::Tri3, vec![[0.0, 0.0], [0.0, 1.0], [1.0, 0.0]]), -2.0 / 3f64.sqrt()));
+        assert_eq!(shape(CellKind::Line3, vec![[0.0, 0.0], [1.0, 0.0], [0.5, 0.0]]), 1.0);
     }
 
     #[test]

@@ -27,7 +27,7 @@ use crate::generic::{
 #[cfg(feature = "native")]
 use crate::output::{OutputDir, OutputError};
 use crate::preset::{Preset, PresetOutcome, PresetScene};
-pub use crate::schema::{SceneError, overridden_scene_text, read_scene_text};
+pub use crate::schema::{SceneError, overridden_scene_text, read_scene_text, unset_override};
 
 /// The registered presets, in the order the scene reader tries their sections: a new preset is
 /// its module ([`crate::preset`]) and one line here.

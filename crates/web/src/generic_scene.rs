@@ -125,6 +125,12 @@ pub fn generic_scene(
     mesh_file: &str,
     overrides: &[String],
 ) -> Result<GenericScene, WebError> {
+    if toml::from_str::<toml::Table>(text).is_err() {
+        // Not TOML at all: the CLI's own message, with the line and column at fault.
+        return Err(WebError::Scene(GenericScene::from_toml_str(text, scene_file, &[]).err().unwrap_or_else(|| {
+            SceneError::Invalid { path: scene_file.display().to_string(), reason: "not TOML".into() }
+        })));
+    }
     if !is_generic(text) {
         return Err(WebError::Scene(SceneError::Invalid {
             path: scene_file.display().to_string(),
@@ -286,6 +292,12 @@ mod tests {
         let preset = include_str!("../../../scenes/plate_insert_nogap_mu0.toml");
         let e = solve_user_scene("s.toml", preset.as_bytes(), "m.msh", bundled.mesh_bytes, &[]).unwrap_err();
         assert!(e.to_string().contains("not a generic scene"), "{e}");
+        // A TOML syntax error gets the CLI's line and column (`contact2d run` on the same text:
+        // "line 3, column 9: unclosed table, expected `]`").
+        let broken = "name = \"x\"\nmesh = \"a.msh\"\n[loading\nsteps = 2\n";
+        let e = solve_user_scene("s.toml", broken.as_bytes(), "m.msh", bundled.mesh_bytes, &[]).unwrap_err();
+        assert!(e.to_string().contains("line 3, column 9: unclosed table"), "{e}");
+        assert!(!e.to_string().contains("not a generic scene"), "{e}");
     }
 
     /// A user's scene (the bundled two-blocks text and mesh as if dropped on the page) gives

@@ -5,8 +5,14 @@
 //!              finish_nodes()                                         planarity: |z| <= tol
 //!   $Elements  node(tag), add_element_tag(tag), push_block(...)       missing nodes, duplicates
 //!   (any)      require_name(dim, tag)                                 deferred name check
-//!   end        finish(names) -> Mesh
+//!   end        finish(names) -> Mesh                                  duplicated elements
 //! ```
+//!
+//! A duplicated element is a line or surface cell whose node set (in any order) is that of
+//! another cell of the same dimension in the same physical group (or with no physical group on
+//! either): it would be assembled twice and silently double that element's stiffness or load.
+//! The same element in two *different* physical groups is legitimate (MSH 2.2 writes such an
+//! element once per group, under two element tags) and passes.
 //!
 //! Planarity: every node must satisfy
 //!
@@ -18,7 +24,7 @@
 
 use super::cursor::{msh_error, unsupported};
 use super::physical::PhysicalNames;
-use super::tags::{TagMap, TagSet};
+use super::tags::TagMap;
 use crate::error::{Location, MeshError};
 use crate::mesh::{CellBlock, CellKind, Mesh, NodeId};
 
@@ -50,7 +56,10 @@ pub(crate) struct MeshBuilder {
     node_index: TagMap,
     max_z: Option<ZRecord>,
     blocks: Vec<CellBlock>,
-    element_tags: TagSet,
+    /// File element tag -> index into `element_at` (the order the elements were read in).
+    element_index: TagMap,
+    /// Where each element was read.
+    element_at: Vec<Location>,
     name_uses: Vec<NameUse>,
 }
 
@@ -59,7 +68,7 @@ impl MeshBuilder {
     pub(crate) fn new() -> Self {
         MeshBuilder {
             node_index: TagMap::with_expected(0),
-            element_tags: TagSet::with_expected(0),
+            element_index: TagMap::with_expected(0),
             ..MeshBuilder::default()
         }
     }
@@ -73,7 +82,8 @@ impl MeshBuilder {
 
     /// Prepares for `n` more elements (`n` already checked against the file size).
     pub(crate) fn reserve_elements(&mut self, n: usize) {
-        self.element_tags.expect(n);
+        self.element_at.reserve(n);
+        self.element_index.expect(self.element_at.len().saturating_add(n));
     }
 
     /// Adds a node with file tag `tag` at the origin; its coordinates follow with
@@ -154,17 +164,93 @@ impl MeshBuilder {
         self.node_index.get(tag).map(NodeId)
     }
 
-    /// Registers an element tag.
+    /// Registers an element tag, read at `at`.
     ///
     /// # Errors
     /// [`MeshError::Msh`] at `at` if the tag was used before.
     #[inline]
     pub(crate) fn add_element_tag(&mut self, tag: u64, at: Location) -> Result<(), MeshError> {
-        if self.element_tags.insert(tag) {
-            Ok(())
-        } else {
-            Err(msh_error(at, format!("element tag {tag} appears twice")))
+        match self.element_index.insert(tag, self.element_at.len()) {
+            Ok(()) => {
+                self.element_at.push(at);
+                Ok(())
+            }
+            Err(_) => Err(msh_error(at, format!("element tag {tag} appears twice"))),
         }
+    }
+
+    /// Where element `tag` was read (the start of the file if it was never registered).
+    fn element_location(&self, tag: u64) -> (usize, Location) {
+        self.element_index
+            .get(tag)
+            .and_then(|i| self.element_at.get(i).map(|&at| (i, at)))
+            .unwrap_or((0, Location::Line(1)))
+    }
+
+    /// Checks that no line or surface cell is written twice (see the module doc).
+    ///
+    /// Sorts one key per cell (dimension, sorted node ids), so it costs O(n log n) for n cells
+    /// and no allocation per cell.
+    ///
+    /// # Errors
+    /// [`MeshError::Msh`] at the later-read element of the first duplicated pair, naming both
+    /// element tags.
+    fn check_duplicate_elements(&self) -> Result<(), MeshError> {
+        /// (dimension, sorted node ids padded with `usize::MAX`, block, element tag)
+        type Key = (usize, [usize; 9], usize, u64);
+        let mut keys: Vec<Key> = Vec::with_capacity(self.blocks.iter().map(CellBlock::len).sum());
+        for (b, block) in self.blocks.iter().enumerate() {
+            let dim = block.kind.dim();
+            let per = block.kind.nodes_per_cell();
+            if dim == 0 || per == 0 || per > 9 {
+                continue;
+            }
+            for (cell, &tag) in block.nodes.chunks_exact(per).zip(&block.element_tags) {
+                let mut sorted = [usize::MAX; 9];
+                for (slot, node) in sorted.iter_mut().zip(cell) {
+                    *slot = node.0;
+                }
+                sorted.sort_unstable();
+                keys.push((dim, sorted, b, tag));
+            }
+        }
+        keys.sort_unstable();
+        let same_group = |a: usize, b: usize| match (self.blocks.get(a), self.blocks.get(b)) {
+            (Some(a), Some(b)) => {
+                (a.physical_tags.is_empty() && b.physical_tags.is_empty())
+                    || a.physical_tags.iter().any(|t| b.physical_tags.contains(t))
+            }
+            _ => false,
+        };
+        // Cells with equal node sets are adjacent after the sort; a run of them is short, so
+        // comparing every pair within a run is cheap.
+        let mut start = 0;
+        while start < keys.len() {
+            let mut end = start + 1;
+            while keys.get(end).is_some_and(|k| keys.get(start).is_some_and(|s| k.0 == s.0 && k.1 == s.1)) {
+                end += 1;
+            }
+            let run = keys.get(start..end).unwrap_or_default();
+            for (i, a) in run.iter().enumerate() {
+                for b in run.iter().skip(i + 1) {
+                    if same_group(a.2, b.2) {
+                        let (ia, at_a) = self.element_location(a.3);
+                        let (ib, at_b) = self.element_location(b.3);
+                        let ((first, _), (second, at)) =
+                            if ia <= ib { ((a.3, at_a), (b.3, at_b)) } else { ((b.3, at_b), (a.3, at_a)) };
+                        return Err(msh_error(
+                            at,
+                            format!(
+                                "element {second} has the nodes of element {first} (an element written twice \
+                                 would be assembled twice; remove one of them)"
+                            ),
+                        ));
+                    }
+                }
+            }
+            start = end;
+        }
+        Ok(())
     }
 
     /// Appends a block.
@@ -181,8 +267,10 @@ impl MeshBuilder {
     /// The finished mesh.
     ///
     /// # Errors
-    /// [`MeshError::Msh`] at its first use if a physical tag has no name.
+    /// [`MeshError::Msh`] at the later one if an element is written twice (see the module doc);
+    /// at its first use if a physical tag has no name.
     pub(crate) fn finish(self, names: PhysicalNames) -> Result<Mesh, MeshError> {
+        self.check_duplicate_elements()?;
         if let Some(u) = self.name_uses.iter().find(|u| !names.contains(u.dim, u.tag)) {
             return Err(msh_error(
                 u.at,
@@ -295,6 +383,55 @@ mod tests {
         b.add_element_tag(5, AT).unwrap();
         let e = b.add_element_tag(5, Location::Line(7)).unwrap_err();
         assert!(matches!(e, MeshError::Msh { at: Location::Line(7), .. }), "{e}");
+    }
+
+    /// A builder with four nodes and the triangles `cells` (element tag, nodes, physical tag),
+    /// each triangle in a block of its own, read on lines 10, 11, ...
+    fn triangles(cells: &[(u64, [usize; 3], i32)]) -> MeshBuilder {
+        let mut b = MeshBuilder::new();
+        for tag in 1..=4 {
+            b.add_node(tag, AT).unwrap();
+        }
+        for (i, &(tag, nodes, physical)) in cells.iter().enumerate() {
+            b.add_element_tag(tag, Location::Line(10 + i)).unwrap();
+            b.push_block(CellBlock {
+                kind: CellKind::Tri3,
+                entity_dim: 2,
+                entity_tag: 1,
+                physical_tags: vec![physical],
+                nodes: nodes.iter().map(|&n| NodeId(n)).collect(),
+                element_tags: vec![tag],
+            });
+        }
+        b
+    }
+
+    fn named() -> PhysicalNames {
+        PhysicalNames {
+            groups: vec![
+                PhysicalGroup { name: "a".into(), dim: 2, tag: 1 },
+                PhysicalGroup { name: "b".into(), dim: 2, tag: 2 },
+            ],
+        }
+    }
+
+    #[test]
+    fn an_element_written_twice_is_refused_naming_both_tags() {
+        // The same triangle with its nodes rotated, second read on line 12.
+        let e = triangles(&[(7, [0, 1, 2], 1), (8, [1, 2, 3], 1), (9, [2, 0, 1], 1)]).finish(named()).unwrap_err();
+        assert!(matches!(e, MeshError::Msh { at: Location::Line(12), .. }), "{e}");
+        assert!(e.to_string().contains("element 9 has the nodes of element 7"), "{e}");
+        // Read in the other order, the later one (on line 11) is named as the copy.
+        let e = triangles(&[(9, [2, 0, 1], 1), (7, [0, 1, 2], 1)]).finish(named()).unwrap_err();
+        assert!(e.to_string().contains("element 7 has the nodes of element 9"), "{e}");
+    }
+
+    #[test]
+    fn the_same_element_in_two_physical_groups_passes() {
+        // MSH 2.2 writes an element of two groups once per group.
+        triangles(&[(7, [0, 1, 2], 1), (8, [0, 1, 2], 2), (9, [1, 2, 3], 1)]).finish(named()).unwrap();
+        // Neighbours sharing an edge are not duplicates.
+        triangles(&[(7, [0, 1, 2], 1), (8, [0, 2, 3], 1)]).finish(named()).unwrap();
     }
 
     #[test]

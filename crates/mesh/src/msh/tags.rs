@@ -99,13 +99,6 @@ impl TagSet {
         TagSet { bits: Vec::new(), sparse: HashSet::new(), limit: dense_limit(expected) }
     }
 
-    /// Raises the expected size; no effect once a tag went to the hash set.
-    pub(crate) fn expect(&mut self, expected: usize) {
-        if self.sparse.is_empty() {
-            self.limit = self.limit.max(dense_limit(expected));
-        }
-    }
-
     /// Adds `tag`; `false` if it was already there.
     pub(crate) fn insert(&mut self, tag: u64) -> bool {
         if tag < self.limit {
@@ -168,9 +161,6 @@ mod tests {
         assert!(s.insert(u64::MAX));
         assert!(!s.insert(1));
         assert!(!s.insert(64));
-        assert!(!s.insert(u64::MAX));
-        s.expect(1 << 30);
-        assert!(!s.insert(u64::MAX));
         assert!(s.insert(2));
     }
 }

@@ -61,7 +61,9 @@ use std::collections::BTreeMap;
 
 use serde::Serialize;
 
-use contact2d_contact::{BuiltProblem, ContactError, ContactSolution, History, InterfaceInfo, PairState, SolvedStep};
+use contact2d_contact::{
+    BuiltProblem, ContactError, ContactSolution, EnergyAllowance, History, InterfaceInfo, PairState, SolvedStep,
+};
 
 use super::points::{PointResult, ResolvedPoint};
 use super::zones::{PairCurve, ZoneEnds, ZoneMarks, zone_ends, zones_length, zones_span};
@@ -210,6 +212,11 @@ pub struct StepResult {
     pub dissipated: f64,
     /// KKT residuals.
     pub kkt: Kkt,
+    /// What the energy balance of the history up to this step may miss by: the trapezoid rule's
+    /// bound and the round-off of `W` and `Φ_E` ([`contact2d_contact::check_energy_balance`]);
+    /// not in the JSON.
+    #[serde(skip)]
+    pub energy_allowance: EnergyAllowance,
 }
 
 /// Why a step did not converge ([`contact2d_contact::status_reason`]), with the floating
@@ -290,7 +297,11 @@ pub struct StepResults<'a> {
     owner: Vec<usize>,
     dissipated: Vec<f64>,
     work: f64,
+    /// Σ ½ |Δf Δu| and Σ ½ (|f_prev| + |f| + (|K||u|)_prev + |K||u|) |Δu| so far.
+    work_bounds: (f64, f64),
     previous_force: Vec<f64>,
+    /// |K||u| of the previous step, per global DOF.
+    previous_abs_ku: Vec<f64>,
     previous: Option<(Vec<f64>, Vec<f64>)>,
     /// The index of the next step (from 0).
     step: usize,
@@ -309,7 +320,9 @@ impl<'a> StepResults<'a> {
             owner: dof_owners(problem),
             dissipated: vec![0.0; built.interfaces.len()],
             work: 0.0,
+            work_bounds: (0.0, 0.0),
             previous_force: vec![0.0; problem.system.dofs.num_global()],
+            previous_abs_ku: vec![0.0; problem.system.dofs.num_global()],
             previous: None,
             step: 0,
         }
@@ -373,8 +386,21 @@ impl<'a> StepResults<'a> {
             .enumerate()
             .map(|(d, u)| 0.5 * (previous_force[d] + force[d]) * (u - before.map_or(0.0, |b| b[d])))
             .sum::<f64>();
+        let (per_body, abs_ku, abs_energy) = body_energies(problem, &self.owner, &s.displacement);
+        for (d, u) in s.displacement.iter().enumerate() {
+            let du = (u - before.map_or(0.0, |b| b[d])).abs();
+            let (f0, f1) = (previous_force[d], force[d]);
+            self.work_bounds.0 += 0.5 * ((f1 - f0) * du).abs();
+            self.work_bounds.1 += 0.5 * (f0.abs() + f1.abs() + self.previous_abs_ku[d] + abs_ku[d]) * du;
+        }
         self.previous_force = force;
-        let per_body = body_energies(problem, &self.owner, &s.displacement);
+        self.previous_abs_ku = abs_ku;
+        // γ_n = n ε / (1 − n ε) for sums of n terms (Higham 2002, §3.1), n the DOFs plus the
+        // longest stiffness row (≤ 100 for Q9 neighbourhoods).
+        let n = s.displacement.len() as f64 + 100.0;
+        let gamma = n * f64::EPSILON / (1.0 - n * f64::EPSILON).max(0.5);
+        let energy_allowance =
+            EnergyAllowance { trapezoid: self.work_bounds.0, round_off: gamma * (self.work_bounds.1 + abs_energy) };
         let energies: BTreeMap<String, f64> =
             problem.model.bodies.iter().zip(per_body).map(|(body, e)| (body.name.clone(), e)).collect();
         let result = StepResult {
@@ -392,6 +418,7 @@ impl<'a> StepResults<'a> {
             energies,
             work: self.work,
             dissipated: step.dissipated,
+            energy_allowance,
             kkt: Kkt {
                 max_penetration: s.kkt.max_penetration,
                 max_complementarity: s.kkt.max_complementarity,
@@ -445,26 +472,32 @@ fn dof_owners(problem: &contact2d_contact::ContactProblem) -> Vec<usize> {
 /// ```
 ///
 /// The same energy as the sum over the cells of `½ u_eᵀ K_e u_e` up to round-off, at the cost
-/// of one pass over the matrix per step instead of every element's stiffness.
-fn body_energies(problem: &contact2d_contact::ContactProblem, owner: &[usize], u: &[f64]) -> Vec<f64> {
+/// of one pass over the matrix per step instead of every element's stiffness. Also returns what
+/// bounds the round-off of these sums: `|K||u|` per global DOF and `½ |u|ᵀ|K||u|` over all
+/// bodies (with the springs `D`, whose `K u` terms are rounded as well).
+fn body_energies(problem: &contact2d_contact::ContactProblem, owner: &[usize], u: &[f64]) -> (Vec<f64>, Vec<f64>, f64) {
     let dofs = &problem.system.dofs;
     let (free, fixed) = (dofs.free_dofs(), dofs.constrained_dofs());
     // `K u` row by row first (each row's rigid-motion terms cancel there, to ε |K_i| |u|, as in
     // `K_e u_e`), then `½ Σ u_g (K u)_g` per body: summing the products `u_i K_ij u_j` one by
     // one instead loses the cancellation (1e-7 relative on a sliding block).
     let mut ku = vec![0.0; dofs.num_global()];
+    let mut abs_ku = vec![0.0; dofs.num_global()];
     let kff = problem.system.stiffness.as_ref();
     for (j, dj) in free.iter().enumerate() {
         for (i, v) in kff.row_idx_of_col(j).zip(kff.val_of_col(j)) {
             let di = free[i];
             ku[di.0] += v * u[dj.0];
+            abs_ku[di.0] += (v * u[dj.0]).abs();
             if i != j {
                 ku[dj.0] += v * u[di.0];
+                abs_ku[dj.0] += (v * u[di.0]).abs();
             }
         }
     }
     for &(i, k) in &problem.system.stabilisation {
         ku[free[i].0] -= k * u[free[i].0];
+        abs_ku[free[i].0] += (k * u[free[i].0]).abs();
     }
     let kfc = problem.system.coupling.as_ref();
     let kcc = problem.system.constrained.as_ref();
@@ -472,9 +505,12 @@ fn body_energies(problem: &contact2d_contact::ContactProblem, owner: &[usize], u
         for (i, v) in kfc.row_idx_of_col(j).zip(kfc.val_of_col(j)) {
             ku[free[i].0] += v * u[dj.0];
             ku[dj.0] += v * u[free[i].0];
+            abs_ku[free[i].0] += (v * u[dj.0]).abs();
+            abs_ku[dj.0] += (v * u[free[i].0]).abs();
         }
         for (i, v) in kcc.row_idx_of_col(j).zip(kcc.val_of_col(j)) {
             ku[fixed[i].0] += v * u[dj.0];
+            abs_ku[fixed[i].0] += (v * u[dj.0]).abs();
         }
     }
     let mut energy = vec![0.0; problem.model.bodies.len()];
@@ -483,7 +519,8 @@ fn body_energies(problem: &contact2d_contact::ContactProblem, owner: &[usize], u
             *e += 0.5 * ug * kug;
         }
     }
-    energy
+    let abs_energy = abs_ku.iter().zip(u).map(|(k, v)| 0.5 * k * v.abs()).sum();
+    (energy, abs_ku, abs_energy)
 }
 
 /// The reactions of a step in global DOF order (zero at free DOFs).

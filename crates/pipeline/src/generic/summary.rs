@@ -204,9 +204,11 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
     if count > 0 {
         let worst: Vec<String> = poor.iter().take(3).map(ToString::to_string).collect();
         notes.push(format!(
-            "{count} cells below quality {} (det J varies more than 20-fold inside; stresses near them are not to \
-             be trusted), the worst: {}",
+            "{count} cells below quality {} (det J varies more than 20-fold inside) or shape {} (scaled Jacobian at \
+             the corners: a corner under about 10° or over 170°); stresses near them are not to be trusted, the \
+             worst: {}",
             crate::mesh_summary::MIN_QUALITY,
+            crate::mesh_summary::MIN_SHAPE,
             worst.join("; ")
         ));
     }
@@ -314,7 +316,8 @@ fn non_finite(value: &serde_json::Value, at: &str) -> Option<String> {
 /// The status of a history — its worst step's; `numerical` (with the check) when a step's
 /// solution fails [`contact2d_contact::certify`] or the history breaks its energy balance `W = Φ_E + Φ_f`
 /// ([`check_energy_balance`]: tight when solved once and scaled, where W is exact; the
-/// trapezoid rule's tolerance otherwise; `scaled`: whether the history was). A history whose
+/// trapezoid rule's tolerance otherwise; `scaled`: whether the history was; each step's own
+/// allowance for the trapezoid rule's bound and round-off). A history whose
 /// energies stay below `round_off` is not checked (its work and strain energy are round-off).
 fn certified_status(
     scaled: bool,
@@ -330,7 +333,9 @@ fn certified_status(
     let stored = |step: &StepResult| step.energies.values().sum::<f64>();
     let scale = energy_scale(steps.iter().map(|s| (s.work, stored(s), s.dissipated)));
     for (i, step) in steps.iter().enumerate().filter(|_| balance && scale > round_off) {
-        if let Err(f) = check_energy_balance(step.work, stored(step), step.dissipated, scaled, scale) {
+        if let Err(f) =
+            check_energy_balance(step.work, stored(step), step.dissipated, scaled, scale, step.energy_allowance)
+        {
             return ("numerical", Some(format!("step {}: {f}", i + 1)));
         }
     }

@@ -4,7 +4,8 @@
 //! ```text
 //! OutputDir::prepare(dir, manifest)   before any work: create dir, check it is a writable
 //!                                     directory, take the lock file (create_new; stale lock of a
-//!                                     dead process replaced), read the previous manifest
+//!                                     dead process replaced, and the files it records removed),
+//!                                     read the previous manifest
 //! out.write_bytes(name, bytes)        each file: written to .contact2d-tmp-<pid>-<name> in the
 //! out.write_with(name, |tmp| ...)     same folder, synced, renamed onto <name> (atomic on one
 //!                                     file system); the first write removes the old manifest
@@ -25,6 +26,18 @@
 //! [`OutputDir::finish`] removes the files this run wrote (except streamed `.partial` files,
 //! which keep what was finished), those the previous manifest listed if writing had started,
 //! and the lock. Nothing here knows what the files contain.
+//!
+//! The lock file records what its run has started writing, so that a run killed outright
+//! (SIGKILL, power cut of the process) leaves no files another run would show as its own:
+//!
+//! ```text
+//! .contact2d.lock    <pid>               line 1: the writer
+//!                    <name>              one line per file, appended before the file is created
+//!                    ...                 (and the previous manifest's files, before it is removed)
+//! ```
+//! A run that finds the lock of a dead process removes the regular files it records (and that
+//! process's temporary files) before it takes the lock: the next run into the folder then never
+//! leaves a killed run's `step_007.vtu` beside its own whole summary.
 //!
 //! A manifest is a JSON object with `"written_by"` (starting with `contact2d`) and `"files"` (the
 //! file names of the run, the manifest last); [`manifest_json`] adds both to any JSON object.
@@ -67,15 +80,22 @@ impl OutputDir {
     /// whose results go there, so that a bad folder fails fast.
     ///
     /// # Errors
-    /// [`OutputError::NotADirectory`], [`OutputError::Io`] (cannot be created or written),
+    /// [`OutputError::NotADirectory`], [`OutputError::DanglingLink`] (a link to nothing, which
+    /// cannot be created as a folder), [`OutputError::Io`] (cannot be created or written),
     /// [`OutputError::Locked`] when another live process holds the lock.
     pub fn prepare(dir: &Path, manifest: Option<&str>) -> Result<OutputDir, OutputError> {
         if dir.exists() && !dir.is_dir() {
             return Err(OutputError::NotADirectory { path: dir.to_path_buf() });
         }
+        if !dir.exists() && std::fs::symlink_metadata(dir).is_ok_and(|m| m.file_type().is_symlink()) {
+            let target = std::fs::read_link(dir).unwrap_or_default();
+            return Err(OutputError::DanglingLink { path: dir.to_path_buf(), target });
+        }
         std::fs::create_dir_all(dir).map_err(|e| OutputError::io(dir, e))?;
         let lock = dir.join(LOCK_FILE);
-        take_lock(dir, &lock)?;
+        if let Some(dead) = take_lock(dir, &lock)? {
+            remove_dead_run_files(dir, &dead);
+        }
         let record = manifest.unwrap_or(RECORD_FILE);
         let previous = previous_files(&dir.join(record));
         Ok(OutputDir {
@@ -125,6 +145,7 @@ impl OutputDir {
     ) -> Result<PathBuf, OutputError> {
         let target = self.target(name)?;
         self.remove_old_manifest()?;
+        self.note_start(&[name])?;
         let tmp = self.dir.join(format!("{TEMP_PREFIX}{}-{name}", std::process::id()));
         let created = create_exclusive(&tmp).map(drop).map_err(|e| OutputError::io(&tmp, e));
         if let Err(e) = created.and_then(|()| write(&tmp)).and_then(|()| commit(&tmp, &target)) {
@@ -145,6 +166,7 @@ impl OutputDir {
     pub fn stream(&mut self, name: &str) -> Result<StreamedFile, OutputError> {
         let target = self.target(name)?;
         self.remove_old_manifest()?;
+        self.note_start(&[name])?;
         let partial = self.dir.join(format!("{name}{PARTIAL_SUFFIX}"));
         let file = create_exclusive(&partial).map_err(|e| OutputError::io(&partial, e))?;
         Ok(StreamedFile { file: std::io::BufWriter::new(file), partial, target })
@@ -226,6 +248,7 @@ impl OutputDir {
     /// Writes a reserved name (the hidden record) atomically, like [`OutputDir::write_bytes`].
     fn write_reserved(&mut self, name: &str, bytes: &[u8]) -> Result<(), OutputError> {
         let target = self.dir.join(name);
+        self.note_start(&[name])?;
         let tmp = self.dir.join(format!("{TEMP_PREFIX}{}-{name}", std::process::id()));
         let written = create_exclusive(&tmp)
             .and_then(|mut f| f.write_all(bytes))
@@ -261,6 +284,9 @@ impl OutputDir {
         if self.manifest_removed {
             return Ok(());
         }
+        // Once the manifest is gone, only the lock says which files were the previous run's.
+        let previous: Vec<&str> = self.previous.iter().map(String::as_str).collect();
+        self.note_start(&previous)?;
         let path = self.dir.join(&self.manifest);
         match std::fs::remove_file(&path) {
             Ok(()) => {}
@@ -273,6 +299,23 @@ impl OutputDir {
 
     /// Removes what the previous record listed and this run did not write, and the temporary
     /// (`.contact2d-tmp-<pid>-<name>`) and `.partial` leftovers of a listed or written name.
+    /// Appends `names` to the lock file (see the module docs): written before the files are, so
+    /// that a run killed at any moment leaves a record of them. A plain `write` (no sync): what
+    /// a killed process wrote stays in the file system's cache for the next run to read.
+    fn note_start(&self, names: &[&str]) -> Result<(), OutputError> {
+        if names.is_empty() {
+            return Ok(());
+        }
+        let text: String = names.iter().map(|n| format!("{n}\n")).collect();
+        let mut options = std::fs::OpenOptions::new();
+        options.append(true);
+        no_follow(&mut options);
+        options
+            .open(&self.lock)
+            .and_then(|mut f| f.write_all(text.as_bytes()))
+            .map_err(|e| OutputError::io(&self.lock, e))
+    }
+
     fn remove_stale(&self) -> Result<(), OutputError> {
         let entries = std::fs::read_dir(&self.dir).map_err(|e| OutputError::io(&self.dir, e))?;
         let known = |stem: &str| self.previous.iter().chain(&self.written).any(|p| p == stem);
@@ -444,22 +487,42 @@ fn plain_name(name: &str) -> bool {
 
 /// Creates the lock file with create_new; a lock left by a process that no longer runs is
 /// replaced once.
-fn take_lock(dir: &Path, lock: &Path) -> Result<(), OutputError> {
+/// What the lock of a dead writer recorded: its pid and the files it had started writing.
+#[derive(Debug)]
+struct DeadRun {
+    pid: u32,
+    files: Vec<String>,
+}
+
+/// Takes the lock; if it replaced the stale lock of a dead process, returns what that lock
+/// recorded.
+fn take_lock(dir: &Path, lock: &Path) -> Result<Option<DeadRun>, OutputError> {
+    let mut dead_run = None;
     for attempt in 0..2 {
         match std::fs::OpenOptions::new().write(true).create_new(true).open(lock) {
             Ok(mut f) => {
                 return f
                     .write_all(format!("{}\n", std::process::id()).as_bytes())
                     .and_then(|()| f.sync_all())
+                    .map(|()| dead_run)
                     .map_err(|e| {
                         let _ = std::fs::remove_file(lock);
                         OutputError::io(lock, e)
                     });
             }
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => {
-                let pid = std::fs::read_to_string(lock).ok().and_then(|t| t.trim().parse::<u32>().ok());
+                // A lock is small; anything else at that name is read as no pid.
+                let text = std::fs::symlink_metadata(lock)
+                    .is_ok_and(|m| m.is_file() && m.len() < 16 << 20)
+                    .then(|| std::fs::read_to_string(lock).ok())
+                    .flatten()
+                    .unwrap_or_default();
+                let mut lines = text.lines();
+                let pid = lines.next().and_then(|t| t.trim().parse::<u32>().ok());
                 let dead = pid.is_some_and(|p| p != std::process::id() && process_is_gone(p));
                 if attempt == 0 && dead {
+                    let files = lines.map(str::to_string).filter(|f| plain_name(f) && *f != LOCK_FILE).collect();
+                    dead_run = pid.map(|pid| DeadRun { pid, files });
                     let _ = std::fs::remove_file(lock);
                     continue;
                 }
@@ -473,6 +536,28 @@ fn take_lock(dir: &Path, lock: &Path) -> Result<(), OutputError> {
 
 /// Whether no process `pid` runs (known on systems with `/proc`; elsewhere a lock is never
 /// taken for stale).
+/// Removes what a dead run recorded in its lock: the regular files of those names (never a
+/// directory or a link) and its temporary files; a streamed `.partial` file stays (it keeps
+/// the rows that were finished). Best effort: a file that cannot be removed stays.
+fn remove_dead_run_files(dir: &Path, dead: &DeadRun) {
+    let temporary = format!("{TEMP_PREFIX}{}-", dead.pid);
+    let temporaries = std::fs::read_dir(dir)
+        .map(|entries| {
+            entries
+                .flatten()
+                .filter_map(|e| e.file_name().to_str().map(String::from))
+                .filter(|n| n.starts_with(&temporary))
+                .collect::<Vec<_>>()
+        })
+        .unwrap_or_default();
+    for name in dead.files.iter().chain(&temporaries) {
+        let path = dir.join(name);
+        if std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+            let _ = std::fs::remove_file(path);
+        }
+    }
+}
+
 fn process_is_gone(pid: u32) -> bool {
     Path::new("/proc/self").exists() && !Path::new(&format!("/proc/{pid}")).exists()
 }

@@ -56,6 +56,17 @@ pub enum OutputError {
         /// The path given as the output folder.
         path: PathBuf,
     },
+    /// The output path is a symbolic link to nothing (its target does not exist).
+    #[error(
+        "{path}: is a dangling symbolic link (to {}, which does not exist); remove the link or create its target",
+        target.display()
+    )]
+    DanglingLink {
+        /// The path given as the output folder.
+        path: PathBuf,
+        /// Where the link points.
+        target: PathBuf,
+    },
     /// Another process writes into the folder (its lock file exists).
     #[error(
         "{dir}: another contact2d process{} is writing into this folder (lock file {lock}); wait for it, \

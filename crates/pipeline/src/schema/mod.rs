@@ -9,7 +9,7 @@ mod parse;
 mod solver;
 
 pub(crate) use overrides::apply_override;
-pub use overrides::overridden_scene_text;
+pub use overrides::{overridden_scene_text, unset_override};
 pub(crate) use parse::parse_scene_toml;
 pub use parse::read_scene_text;
 pub use solver::{SolverEntry, algorithm_from_key, deserialize_algorithm, serialize_algorithm};
@@ -65,10 +65,11 @@ pub enum SceneError {
         /// Why.
         reason: String,
     },
-    /// A `--set` override that does not parse or names no key.
-    #[error("--set {assignment}: {reason}")]
+    /// A `--set` override that does not parse or names no key, or an `--unset` that names no
+    /// key the scene gives.
+    #[error("{}: {reason}", overrides::as_flag(assignment))]
     Override {
-        /// The assignment as given.
+        /// The assignment as given (`key=value`, or [`unset_override`]`(key)` for an `--unset`).
         assignment: String,
         /// What is wrong.
         reason: String,
