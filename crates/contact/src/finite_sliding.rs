@@ -87,14 +87,22 @@ pub fn solve_finite_sliding(
         let (problem, free) = pair_current(built, finite, &u)?;
         let start = StepStart { slip: start_slip(built, finite, &problem, &u, &previous_end), ..previous_end };
         let previous = if i == 0 { &zeros } else { &factors[i - 1] };
-        let (mut solution, floating_iterations, floating_residual) =
+        let outcome =
             solve_step_from(&problem, settings, target, previous, &start, guess.as_deref(), i + 1, &mut alpha)?;
+        let mut solution = outcome.solution;
         for k in free.iter().enumerate().filter(|(_, f)| **f).map(|(k, _)| k) {
             solution.state[k] = PairState::Free;
         }
         dissipated += solution.dissipation;
         let converged = solution.status.is_solved();
-        let step = SolvedStep { factors: target.clone(), solution, dissipated, floating_iterations, floating_residual };
+        let step = SolvedStep {
+            factors: target.clone(),
+            solution,
+            dissipated,
+            floating_iterations: outcome.iterations,
+            floating_residual: outcome.residual,
+            not_held: outcome.not_held,
+        };
         current.problem = problem;
         on_step(i, &step, &current);
         u.clone_from(&step.solution.displacement);

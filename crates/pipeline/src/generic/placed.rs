@@ -227,6 +227,7 @@ fn summary_of_steps(
                 dissipated: *dissipated,
                 floating_iterations: 0,
                 floating_residual: 0.0,
+                not_held: None,
             }
         })
         .collect();

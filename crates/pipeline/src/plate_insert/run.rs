@@ -223,6 +223,7 @@ fn outcome_of_steps(
             dissipated: s.dissipated,
             floating_iterations: 0,
             floating_residual: 0.0,
+            not_held: None,
         })
         .collect();
     let (Some(first), Some(last), Some(last_step)) = (steps.first(), steps.last(), solved.last()) else {
