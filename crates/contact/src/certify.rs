@@ -166,6 +166,8 @@ pub fn certify(problem: &ContactProblem, solution: &ContactSolution) -> Result<(
 /// infeasible      feasibility (the solver's certificate that no point meets the inequalities)
 /// inadmissible    the first violated inequality the algorithm reported (pair and condition)
 /// penalised       the exact check the regularised answer fails
+/// not_held        friction cannot hold a body held only by contact (the run's `not_held` report
+///                 names the contact and the ratio of demanded to available friction force)
 /// ```
 pub fn status_reason(problem: &ContactProblem, solution: &ContactSolution) -> Option<String> {
     let check = || certify(problem, solution).err();
@@ -184,6 +186,10 @@ pub fn status_reason(problem: &ContactProblem, solution: &ContactSolution) -> Op
                 "solver breakdown: the equations of the algorithm's last state are singular or not finite".to_string()
             }
         },
+        ContactStatus::NotHeld => {
+            "not held: a body held only by contact slides away, its closed pairs all slipping at the friction cone"
+                .to_string()
+        }
         ContactStatus::Infeasible => "feasibility: no point satisfies every contact inequality".to_string(),
         ContactStatus::Inadmissible => match solution.violations.first() {
             Some(v) => format!(

@@ -137,11 +137,12 @@ pub fn solve_finite_sliding(
         // The pairings solved on in this step, and the last solve (for a cycle between two).
         let mut visited = vec![signature(built, finite, &formed)];
         let mut last: Option<(f64, Attempt)> = None;
+        let mut not_held;
         let (problem, mut solution, floating_iterations, floating_residual, unstable) = loop {
             let problem = problem_on(built, &formed)?;
             let start =
                 StepStart { slip: start_slip(built, finite, &problem, &u, &previous_end), ..previous_end.clone() };
-            let (mut solution, floating_iterations, floating_residual) = solve_step_from(
+            let outcome = solve_step_from(
                 &problem,
                 settings,
                 target,
@@ -151,6 +152,10 @@ pub fn solve_finite_sliding(
                 i + 1,
                 &mut alpha,
             )?;
+            // A step that ends `not_held` ends here (it is not solved): its report is this solve's.
+            not_held = outcome.not_held;
+            let (mut solution, floating_iterations, floating_residual) =
+                (outcome.solution, outcome.iterations, outcome.residual);
             iterations += solution.iterations;
             time += solution.time;
             for k in formed.free.iter().enumerate().filter(|(_, f)| **f).map(|(k, _)| k) {
@@ -213,6 +218,7 @@ pub fn solve_finite_sliding(
             floating_residual,
             repairings,
             unstable_pairing: unstable,
+            not_held,
         };
         current.problem = problem;
         on_step(i, &step, &current);

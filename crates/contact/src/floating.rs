@@ -160,6 +160,42 @@ pub(crate) struct FloatingStep<'a> {
     pub predict: bool,
 }
 
+/// A step whose load a body held only by contact cannot take ([`ContactStatus::NotHeld`]): along
+/// the free rigid motion `d` (unit, in the body's rigid modes `R`) that no pair resists, the load
+/// friction has to carry exceeds what it can.
+///
+/// ```text
+/// demanded  = | dᵀ Rᵀ (f + B_Nᵀ λ) |            the load along d not taken by normal forces
+/// available = Σ_i μ_i λ_i | (B_T R d)_i |       every closed pair at the cone along d
+/// ratio     = demanded / available  (> 1)
+/// ```
+///
+/// For a block pressed by N on a flat base and pushed sideways by F: `ratio = F / (μ N)`. The
+/// forces are those of the state where the free motion is found: the pins still hold the pieces
+/// against the load friction cannot carry, and the λ they leave differ from the sliding
+/// equilibrium's by the pins' share (a few per cent on the incline of
+/// `scenes/generic/incline_push.toml`), so `ratio` is an estimate; that it exceeds 1 is not.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NotHeld {
+    /// The body that slides away.
+    pub body: String,
+    /// The load step (from 1).
+    pub step: usize,
+    /// The closed pairs (λ > 0) that the motion slides along: they name the contact.
+    pub pairs: Vec<usize>,
+    /// The tangential load demanded along the motion.
+    pub demanded: f64,
+    /// The friction force available along the motion.
+    pub available: f64,
+}
+
+impl NotHeld {
+    /// `demanded / available` (infinite where no friction is available).
+    pub fn ratio(&self) -> f64 {
+        if self.available > 0.0 { self.demanded / self.available } else { f64::INFINITY }
+    }
+}
+
 /// The answer of a floating step: the solution, the Newton iterations, the pins' force left.
 pub(crate) struct FloatingAnswer {
     pub solution: ContactSolution,
@@ -168,6 +204,8 @@ pub(crate) struct FloatingAnswer {
     /// `α` after the last rigid travel of the leg (its start without one): from there on the
     /// pieces moved with the contact's deformation only.
     pub engaged_from: Vec<f64>,
+    /// Set when the step's load is not held ([`ContactStatus::NotHeld`]).
+    pub not_held: Option<NotHeld>,
 }
 
 /// The contact solve of one step at given `α`, `start` and warm-start `guess`; the flag says
@@ -356,7 +394,7 @@ fn balance_pins(
     let finish = |mut solution: ContactSolution, iterations: usize, s: &[f64], engaged_from: Vec<f64>| {
         solution.iterations = inner_iterations.get();
         solution.trace = trace.take();
-        FloatingAnswer { solution, iterations, residual: norm1(s), engaged_from }
+        FloatingAnswer { solution, iterations, residual: norm1(s), engaged_from, not_held: None }
     };
     loop {
         let scale = force_scale(load_scale, &solution);
@@ -407,14 +445,22 @@ fn balance_pins(
         }
         if travel.norm() > allowed {
             let direction = travel.normalize();
-            let t = landing_distance(loaded, modes, &solution, direction.as_slice())
+            if let Some(t) = landing_distance(loaded, modes, &solution, direction.as_slice()) {
+                let t = t * (1.0 + 1e-6);
+                alpha.iter_mut().zip(direction.iter()).for_each(|(a, d)| *a += t * d);
+                anchor_open_pairs(loaded, modes, &open_at_start, step_start, &alpha_start, alpha, &mut start);
+                engaged_from.clone_from(alpha);
+                (solution, s) = evaluate(loaded, interface, alpha, &start, Some(&guess), true)?;
+                continue;
+            }
+            // No pair lies ahead: a body that no closed pair touches flies away (an error: the
+            // model lacks a support); one pressed on its contact slides away (a status).
+            let report = sliding_away(loaded, modes, &solution, direction.as_slice(), alpha, step.step)
                 .ok_or_else(|| not_held(loaded, modes, direction.as_slice(), step.step))?;
-            let t = t * (1.0 + 1e-6);
-            alpha.iter_mut().zip(direction.iter()).for_each(|(a, d)| *a += t * d);
-            anchor_open_pairs(loaded, modes, &open_at_start, step_start, &alpha_start, alpha, &mut start);
-            engaged_from.clone_from(alpha);
-            (solution, s) = evaluate(loaded, interface, alpha, &start, Some(&guess), true)?;
-            continue;
+            solution.status = ContactStatus::NotHeld;
+            let mut answer = finish(solution, iterations, &s, engaged_from);
+            answer.not_held = Some(report);
+            return Ok(answer);
         }
         // Newton on the engaged modes, backtracked on ‖s‖₁. Pins that carry more than
         // `FAR_IMBALANCE` of the force scale hold the pieces far from where the contact would:
@@ -524,6 +570,52 @@ fn anchor_open_pairs(
             start.slip[k] = original.slip[k] + row.dot(&rigid, &zeros);
         }
     }
+}
+
+/// The [`NotHeld`] report of pieces that travel freely along `direction` (unit, in `α`) while
+/// pressed on closed pairs the travel slides along; `None` where no closed pair sees the
+/// travel (nothing holds the pieces at all).
+fn sliding_away(
+    problem: &ContactProblem,
+    modes: &RigidModes,
+    solution: &ContactSolution,
+    direction: &[f64],
+    alpha: &[f64],
+    step: usize,
+) -> Option<NotHeld> {
+    let rigid = modes.displacement(direction);
+    let zeros = vec![0.0; problem.system.dofs.num_constrained()];
+    let scale = rigid.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    // The load without the pins' anchor: `r − D R α`.
+    let anchor = modes.anchor_load(alpha);
+    let load: Vec<f64> = problem.pattern_rhs.iter().zip(&anchor).map(|(r, a)| r - a).collect();
+    let mut demanded: f64 = modes.modal_load(&load).iter().zip(direction).map(|(m, d)| m * d).sum();
+    let (mut available, mut pairs) = (0.0, vec![]);
+    for (k, (normal, tangent)) in problem.normal_rows.iter().zip(&problem.tangent_rows).enumerate() {
+        let lambda = solution.normal_force.get(k).copied().unwrap_or(0.0);
+        if lambda <= 0.0 {
+            continue;
+        }
+        demanded += lambda * normal.dot(&rigid, &zeros);
+        // A row that does not see the travel (to round-off of the unit motion) is not slid along.
+        let along = tangent.dot(&rigid, &zeros);
+        if problem.tangential.get(k).copied().unwrap_or(false) && along.abs() > 1e-9 * scale {
+            available += problem.friction.get(k).copied().unwrap_or(0.0) * lambda * along.abs();
+            pairs.push(k);
+        }
+    }
+    if pairs.is_empty() {
+        return None;
+    }
+    let body = moving_body(problem, modes, direction)?;
+    Some(NotHeld { body, step, pairs, demanded: demanded.abs(), available })
+}
+
+/// The name of the body that moves most along `direction`.
+fn moving_body(problem: &ContactProblem, modes: &RigidModes, direction: &[f64]) -> Option<String> {
+    let (worst, _) = direction.iter().enumerate().max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()).then(b.0.cmp(&a.0)))?;
+    let piece = problem.system.floating.get(modes.owners.get(worst)?.0)?;
+    Some(piece.body.clone())
 }
 
 /// The error for the piece that moves most along `direction`, naming its modes that move.

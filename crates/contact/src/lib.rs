@@ -67,6 +67,7 @@ pub use clarabel_qp::{solve_frictionless_qp, solve_frictionless_qp_on};
 pub use clarabel_tresca::{solve_frictional_qp, solve_frictional_qp_on};
 pub use error::ContactError;
 pub use finite_sliding::solve_finite_sliding;
+pub use floating::NotHeld;
 pub use frictional_active_set::{solve_frictional_active_set, solve_frictional_active_set_with};
 pub use frictionless_active_set::solve_frictionless_active_set;
 pub use history::{HistoryStep, Retention, equal_steps};

@@ -57,6 +57,10 @@ pub enum ContactStatus {
     /// [`crate::certify::certify`]: the penetration it allows (`kkt.max_penetration`) is part of
     /// the method. Never reported for an answer that passes the certificate.
     Penalised,
+    /// A body held only by contact whose load the contact cannot hold: its closed pairs slip at
+    /// the friction cone along a free rigid motion and the load along that motion exceeds what
+    /// friction carries (gross slip; [`crate::NotHeld`]). The run ends at this step.
+    NotHeld,
 }
 
 impl ContactStatus {

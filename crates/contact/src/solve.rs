@@ -16,8 +16,11 @@
 //! it has free rigid modes, and each step finds the pieces' rigid motions `α` that leave the
 //! pins without force (`crates/contact/src/floating.rs`): exact equilibrium `K u = f + Bᵀλ`, any load lands
 //! in one step, zero load leaves a body where it was, and a body that no contact holds along the
-//! direction its load pushes it fails with [`ContactError::BodyNotHeld`] naming the body and its
-//! free rigid motions.
+//! direction its load pushes it ends the run: with status [`ContactStatus::NotHeld`] where it is
+//! pressed on closed pairs that all slip along the motion (friction cannot carry the load:
+//! [`crate::NotHeld`] gives the demanded and available friction forces), and with the error
+//! [`ContactError::BodyNotHeld`] naming the body and its free rigid motions where no closed pair
+//! touches it at all (a support is missing from the model: nothing can be solved).
 
 use crate::algorithms::augmented_lagrangian::solve_augmented_lagrangian;
 use crate::algorithms::boussinesq::{BoussinesqLoading, solve_boussinesq_step};
@@ -26,7 +29,7 @@ use crate::algorithms::frictional_active_set::solve_frictional_active_set_from;
 use crate::algorithms::penalty::{PenaltyParameters, solve_penalty};
 use crate::algorithms::stick_continuation::{StartingStates, StickContinuation, applies};
 use crate::error::ContactError;
-use crate::floating::{FloatingStep, RigidModes, solve_floating_step as solve_floating_step_with};
+use crate::floating::{FloatingStep, NotHeld, RigidModes, solve_floating_step as solve_floating_step_with};
 use crate::history::{HistoryStep, Retention, march_keeping};
 use crate::interface::Interface;
 use crate::linear::LinearSolver;
@@ -207,6 +210,17 @@ pub struct SolvedStep {
     /// pairing still changing (its status is then [`ContactStatus::MaxIterations`]); `None`
     /// otherwise.
     pub unstable_pairing: Option<String>,
+    /// What a step with status [`ContactStatus::NotHeld`] could not hold (`None` otherwise).
+    pub not_held: Option<NotHeld>,
+}
+
+/// One step's answer: the solution, the floating bodies' iterations, the force their pins still
+/// carry, and the load not held.
+pub(crate) struct StepOutcome {
+    pub solution: ContactSolution,
+    pub iterations: usize,
+    pub residual: f64,
+    pub not_held: Option<NotHeld>,
 }
 
 /// A solved schedule.
@@ -297,14 +311,15 @@ pub fn solve_keeping(
     };
     let mut alpha = vec![0.0; modes.len()];
     let zeros = vec![0.0; problem.patterns().len()];
-    // (iterations, residual) of the floating bodies' proximal iteration, per step.
+    // (iterations, residual, load not held) of the floating bodies' proximal iteration, per step.
     let floating = std::cell::RefCell::new(Vec::with_capacity(targets.len()));
     let step_of = |i: usize, h: &HistoryStep| SolvedStep {
         factors: targets[i].clone(),
         solution: h.solution.clone(),
         dissipated: h.dissipated,
-        floating_iterations: floating.borrow().get(i).map_or(0, |f: &(usize, f64)| f.0),
-        floating_residual: floating.borrow().get(i).map_or(0.0, |f: &(usize, f64)| f.1),
+        floating_iterations: floating.borrow().get(i).map_or(0, |f: &(usize, f64, Option<NotHeld>)| f.0),
+        floating_residual: floating.borrow().get(i).map_or(0.0, |f: &(usize, f64, Option<NotHeld>)| f.1),
+        not_held: floating.borrow().get(i).and_then(|f: &(usize, f64, Option<NotHeld>)| f.2.clone()),
         repairings: 0,
         unstable_pairing: None,
     };
@@ -320,10 +335,10 @@ pub fn solve_keeping(
             let context = StepContext { order: &order, start, guess, far_guess: false, step };
             let previous = if step >= 2 { &targets[step - 2] } else { &zeros };
             let factors = StepFactors { target, previous };
-            let (solution, iterations, residual) =
+            let outcome =
                 solve_floating_step(&mut loaded, &mut interface, settings, &factors, &context, &modes, &mut alpha)?;
-            floating.borrow_mut().push((iterations, residual));
-            Ok::<_, ContactError>(solution)
+            floating.borrow_mut().push((outcome.iterations, outcome.residual, outcome.not_held));
+            Ok::<_, ContactError>(outcome.solution)
         },
         &mut |h| {
             if scaled.is_none() {
@@ -371,6 +386,7 @@ fn scale_steps(
             floating_residual: unit.floating_residual * t,
             repairings: 0,
             unstable_pairing: None,
+            not_held: unit.not_held.clone(),
         };
         on_step(i, &step);
         if retention == Retention::Last {
@@ -426,8 +442,8 @@ struct StepContext<'a> {
 }
 
 /// One step at `factors`; with floating bodies their rigid motions `alpha` are unknowns
-/// (`floating.rs`). Returns the solution, the Newton iterations on `α` and the force
-/// the pins still carry.
+/// (`floating.rs`). Returns the solution, the Newton iterations on `α`, the force the pins
+/// still carry and the load not held.
 fn solve_floating_step(
     loaded: &mut ContactProblem,
     interface: &mut Interface,
@@ -436,11 +452,12 @@ fn solve_floating_step(
     context: &StepContext,
     modes: &RigidModes,
     alpha: &mut Vec<f64>,
-) -> Result<(ContactSolution, usize, f64), ContactError> {
+) -> Result<StepOutcome, ContactError> {
     if modes.is_empty() {
         loaded.apply_load(factors.target, None)?;
         interface.update_load_factors(loaded, factors.target);
-        return Ok((solve_step(loaded, interface, settings, context), 0, 0.0));
+        let solution = solve_step(loaded, interface, settings, context);
+        return Ok(StepOutcome { solution, iterations: 0, residual: 0.0, not_held: None });
     }
     let step = FloatingStep {
         factors: factors.target,
@@ -461,7 +478,12 @@ fn solve_floating_step(
         solve_step(problem, interface, settings, &inner)
     };
     let answer = solve_floating_step_with(loaded, interface, modes, &step, alpha, &solve)?;
-    Ok((answer.solution, answer.iterations, answer.residual))
+    Ok(StepOutcome {
+        solution: answer.solution,
+        iterations: answer.iterations,
+        residual: answer.residual,
+        not_held: answer.not_held,
+    })
 }
 
 /// One step of the chosen algorithm at the problem's current load (`w` = 1).
@@ -511,7 +533,8 @@ fn solve_step(
 /// before: `previous`) from `start` and the pair states `guess`: the step of [`solve_keeping`]
 /// without its shortcut or history (finite sliding, [`crate::finite_sliding`], solves each step
 /// on pairs of its own). `alpha` carries the floating bodies' rigid motions from step to step.
-/// Returns the solution, the floating bodies' iterations and their residual force.
+/// Returns the solution, the floating bodies' iterations, their residual force and the load
+/// not held.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn solve_step_from(
     problem: &ContactProblem,
@@ -522,7 +545,7 @@ pub(crate) fn solve_step_from(
     guess: Option<&[PairState]>,
     step: usize,
     alpha: &mut Vec<f64>,
-) -> Result<(ContactSolution, usize, f64), ContactError> {
+) -> Result<StepOutcome, ContactError> {
     let mut loaded = problem.clone();
     loaded.apply_load(target, None)?;
     let mut interface = match settings.linear.resolve(settings.algorithm, problem.num_pairs())? {
@@ -561,7 +584,7 @@ pub(crate) fn solve_run_from(
     settings: &SolverSettings,
     targets: &[Vec<f64>],
     run: &RunStart,
-    on_step: &mut dyn FnMut(ContactSolution, usize, f64),
+    on_step: &mut dyn FnMut(StepOutcome),
 ) -> Result<usize, ContactError> {
     if settings.algorithm == ContactAlgorithm::Boussinesq {
         return Err(not_boussinesq(
@@ -587,13 +610,13 @@ pub(crate) fn solve_run_from(
         }
         let context = StepContext { order: &[], start: &start, guess: guess.as_deref(), far_guess: false, step };
         let factors = StepFactors { target, previous: &previous };
-        let (solution, iterations, residual) =
+        let outcome =
             solve_floating_step(&mut loaded, &mut interface, settings, &factors, &context, &modes, &mut alpha)?;
-        let converged = solution.status.is_solved();
-        start = StepStart::after(&solution);
-        guess = Some(solution.state.clone());
+        let converged = outcome.solution.status.is_solved();
+        start = StepStart::after(&outcome.solution);
+        guess = Some(outcome.solution.state.clone());
         previous.clone_from(target);
-        on_step(solution, iterations, residual);
+        on_step(outcome);
         if !converged {
             return Ok(i + 1);
         }

@@ -146,16 +146,17 @@ pub fn solve_stages(
         // Each step is handed on as it is solved, so that memory stays flat with
         // `Retention::Last`.
         let mut count = 0;
-        let mut hand_on = |solution: crate::ContactSolution, iterations: usize, residual: f64| {
-            dissipated += solution.dissipation;
+        let mut hand_on = |outcome: crate::solve::StepOutcome| {
+            dissipated += outcome.solution.dissipation;
             let step = SolvedStep {
                 factors: targets[count].clone(),
-                solution,
+                solution: outcome.solution,
                 dissipated,
-                floating_iterations: iterations,
-                floating_residual: residual,
+                floating_iterations: outcome.iterations,
+                floating_residual: outcome.residual,
                 repairings: 0,
                 unstable_pairing: None,
+                not_held: outcome.not_held,
             };
             on_step(stage.steps.start + count, &step, &stage.built);
             count += 1;

@@ -36,7 +36,7 @@ use contact2d_contact::{
 use contact2d_mesh::read_msh;
 
 pub use points::{PointResult, ResolvedPoint};
-pub use results::{ContactResult, FixedGroup, Kkt, Profile, StepResult};
+pub use results::{ContactResult, FixedGroup, Kkt, NotHeldResult, Profile, StepResult};
 pub use scene::GenericScene;
 pub use summary::{SummaryInput, SummaryRows, summarise};
 
@@ -148,6 +148,10 @@ pub struct GenericReport {
     /// For `numerical`: the check that failed, with its value and tolerance.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub failed_check: Option<String>,
+    /// For `not_held`: the contact, the step, the last load factors held and the ratio of the
+    /// demanded to the available friction force (the step row's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub not_held: Option<NotHeldResult>,
     /// The algorithm (its scene key).
     #[serde(serialize_with = "crate::schema::serialize_algorithm")]
     pub algorithm: contact2d_contact::ContactAlgorithm,
@@ -210,6 +214,7 @@ impl GenericReport {
             scene: self.scene.clone(),
             status: self.status,
             failed_check: self.failed_check.clone(),
+            not_held: self.not_held.clone(),
             algorithm: self.algorithm,
             dofs: self.dofs,
             pairs: self.pairs,

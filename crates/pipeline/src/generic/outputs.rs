@@ -120,19 +120,25 @@ pub fn finish_outputs(
     let report = folder.report;
     let name = &report.scene;
     let n = report.steps.len();
+    // The figures show the last step: one that did not converge says so in their titles.
+    let solved = ["converged", "penalised"];
+    let shown = match report.steps.last().filter(|s| !solved.contains(&s.status)) {
+        Some(last) => format!("{n}/{n}, {}: did not converge", last.status),
+        None => format!("{n}/{n}"),
+    };
     let view = &folder.last;
     let mut skipped = vec![];
     for ext in FIGURE_EXTENSIONS {
         figure(&mut out, &format!("mesh.{ext}"), &mut skipped, |p| {
-            mesh_plot::draw_mesh(p, &format!("{name}: mesh (step {n}/{n})"), view)
+            mesh_plot::draw_mesh(p, &format!("{name}: mesh (step {shown})"), view)
         })?;
         for (iface, result) in &report.contacts {
             figure(&mut out, &format!("contact_{}.{ext}", file_safe(iface)), &mut skipped, |p| {
-                draw_profile(p, &format!("{name}: contact \"{iface}\" (step {n}/{n})"), result)
+                draw_profile(p, &format!("{name}: contact \"{iface}\" (step {shown})"), result)
             })?;
         }
         figure(&mut out, &format!("von_mises.{ext}"), &mut skipped, |p| {
-            field_plot::draw_von_mises(p, &format!("{name}: von Mises stress (step {n}/{n})"), view)
+            field_plot::draw_von_mises(p, &format!("{name}: von Mises stress (step {shown})"), view)
         })?;
         for (iface, result) in &report.contacts {
             let Some(f) = result.fretting.as_deref() else { continue };

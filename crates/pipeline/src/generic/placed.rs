@@ -229,6 +229,7 @@ fn summary_of_steps(
                 floating_residual: 0.0,
                 repairings: 0,
                 unstable_pairing: None,
+                not_held: None,
             }
         })
         .collect();

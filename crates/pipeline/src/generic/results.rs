@@ -217,6 +217,36 @@ pub struct StepResult {
     /// not in the JSON.
     #[serde(skip)]
     pub energy_allowance: EnergyAllowance,
+    /// For status `not_held`: what the contact could not hold (absent otherwise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub not_held: Option<NotHeldResult>,
+}
+
+/// A load that the friction of a contact cannot hold (status `not_held`): a body held only by
+/// contact slides away, every closed pair of its contact slipping along the same rigid motion.
+///
+/// ```text
+/// ratio = demanded / available
+///       = | dᵀ Rᵀ (f + B_Nᵀ λ) | / Σ_i μ_i λ_i |(B_T R d)_i|     (d the free rigid motion)
+/// ```
+/// For a block pressed by N on a flat base and pushed sideways by F: `ratio = F / (μ N)`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct NotHeldResult {
+    /// The contact (interface name) that lets go.
+    pub contact: String,
+    /// The body that slides away.
+    pub body: String,
+    /// The step (from 1) whose load is not held.
+    pub step: usize,
+    /// The load factors of the last step held (the previous converged step's; all zero when
+    /// the first step is not held).
+    pub last_held_factors: BTreeMap<String, f64>,
+    /// Demanded over available friction force (above 1).
+    pub ratio: f64,
+    /// The tangential force demanded along the motion.
+    pub demanded: f64,
+    /// The friction force available along it, `Σ μ λ`.
+    pub available: f64,
 }
 
 /// Why a step did not converge ([`contact2d_contact::status_reason`]), with the floating
@@ -246,6 +276,7 @@ pub fn status_name(status: contact2d_contact::ContactStatus) -> &'static str {
         S::Numerical => "numerical",
         S::Inadmissible => "inadmissible",
         S::Penalised => "penalised",
+        S::NotHeld => "not_held",
     }
 }
 
@@ -305,6 +336,8 @@ pub struct StepResults<'a> {
     previous: Option<(Vec<f64>, Vec<f64>)>,
     /// The index of the next step (from 0).
     step: usize,
+    /// The factors of the last step held (zeros before the first).
+    held_factors: Vec<f64>,
 }
 
 impl<'a> StepResults<'a> {
@@ -325,6 +358,7 @@ impl<'a> StepResults<'a> {
             previous_abs_ku: vec![0.0; problem.system.dofs.num_global()],
             previous: None,
             step: 0,
+            held_factors: vec![0.0; problem.patterns().len()],
         }
     }
 
@@ -428,7 +462,23 @@ impl<'a> StepResults<'a> {
                 floating_residual: step.floating_residual,
                 floating_iterations: step.floating_iterations,
             },
+            not_held: step.not_held.as_ref().map(|n| NotHeldResult {
+                contact: built
+                    .interfaces
+                    .iter()
+                    .find(|i| n.pairs.first().is_some_and(|k| i.pairs.contains(k)))
+                    .map_or_else(String::new, |i| i.name.clone()),
+                body: n.body.clone(),
+                step: n.step,
+                last_held_factors: self.names.iter().cloned().zip(self.held_factors.iter().copied()).collect(),
+                ratio: n.ratio(),
+                demanded: n.demanded,
+                available: n.available,
+            }),
         };
+        if s.status.is_solved() {
+            self.held_factors.clone_from(&step.factors);
+        }
         self.previous = Some((s.displacement.clone(), s.tangential_force.clone()));
         self.step += 1;
         Ok(result)

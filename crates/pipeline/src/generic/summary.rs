@@ -236,6 +236,7 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
         scene: scene.name.clone(),
         status,
         failed_check,
+        not_held: summary_steps.iter().find_map(|s| s.not_held.clone()),
         algorithm: scene.solver.algorithm,
         dofs: built.problem.system.dofs.num_free(),
         pairs: built.problem.num_pairs(),

@@ -225,6 +225,7 @@ fn outcome_of_steps(
             floating_residual: 0.0,
             repairings: 0,
             unstable_pairing: None,
+            not_held: None,
         })
         .collect();
     let (Some(first), Some(last), Some(last_step)) = (steps.first(), steps.last(), solved.last()) else {
