@@ -574,7 +574,7 @@ fn anchor_open_pairs(
 
 /// The [`NotHeld`] report of pieces that travel freely along `direction` (unit, in `α`) while
 /// pressed on closed pairs the travel slides along; `None` where no closed pair sees the
-/// travel (nothing holds the pieces at all).
+/// travel (nothing holds the pieces at all), or where an initial gap exceeds the model's size.
 fn sliding_away(
     problem: &ContactProblem,
     modes: &RigidModes,
@@ -583,6 +583,12 @@ fn sliding_away(
     alpha: &[f64],
     step: usize,
 ) -> Option<NotHeld> {
+    // An initial gap or interference beyond the model's size is no load that friction fails to
+    // hold: small-strain contact cannot land across it, and the error says so.
+    let largest_gap = problem.gap.iter().fold(0.0f64, |a, g| a.max(g.abs()));
+    if largest_gap > length_scale(problem) {
+        return None;
+    }
     let rigid = modes.displacement(direction);
     let zeros = vec![0.0; problem.system.dofs.num_constrained()];
     let scale = rigid.iter().fold(0.0f64, |a, v| a.max(v.abs()));
