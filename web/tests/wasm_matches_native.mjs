@@ -61,7 +61,15 @@ const RELATIVE = 1e-12;
 const FLOATING_RELATIVE = 1e-8;
 let tolerance = RELATIVE;
 // Per case: the largest displacement, interface force and work (the scales of round-off above).
-let caseScales = { displacement: 0, force: 0, work: 0 };
+let caseScales = { displacement: 0, force: 0, work: 0, length: 1 };
+// A moment about a centre (reaction_moments, reaction_moment_total, an interface's moment,
+// rigid_moment, couple) is a sum over a group's or an interface's nodes of arm × nodal force:
+// each term carries the forces' 1e-12 of the force scale times an arm up to the model's size, and
+// the sum cancels (a balanced group's moment is small beside its terms), so its round-off is
+// bounded by the number of terms × 1e-12 × force × length; these meshes' groups and interfaces
+// have at most ~10² nodes.
+const MOMENT_TERMS = 100;
+const MOMENT_KEYS = new Set(["reaction_moments", "reaction_moment_total", "moment", "rigid_moment", "couple"]);
 let floating = false;
 const referencePath = process.argv[2] || join(web, "out/reference.json");
 const reference = JSON.parse(readFileSync(referencePath, "utf8"));
@@ -138,6 +146,7 @@ function compare(path, a, b, scale = 0) {
       // the work W = Σ Φ + Φ_f, certified relative to W (as the energies above).
       if (k === "reactions" || k === "reactions_total") scale = Math.max(scale, caseScales.force);
       if (k === "dissipated" || k === "dissipation") scale = caseScales.work;
+      if (MOMENT_KEYS.has(k)) scale = Math.max(scale, MOMENT_TERMS * caseScales.force * caseScales.length);
       compare(`${path}.${k}`, a[k], b[k], scale);
     }
     return;
@@ -164,6 +173,8 @@ for (const [scene, cases] of Object.entries(reference)) {
       displacement: largest(view.mesh?.displacement ?? []),
       force: largest(steps.flatMap((st) => Object.values(st.contacts ?? {}).map((c) => c.normal_force))),
       work: largest(steps.map((st) => st.work)),
+      // The model's size: the largest coordinate of the groups' bounding boxes.
+      length: largest(Object.values(view.summary?.groups ?? {}).flatMap((g) => (g.bbox ?? []).flat())) || 1,
     };
     tolerance = floating ? FLOATING_RELATIVE : RELATIVE;
     const wasm = JSON.parse(solvers[scene](JSON.stringify(params)));
