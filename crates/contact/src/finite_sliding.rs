@@ -256,7 +256,7 @@ fn check_applies(built: &BuiltProblem, finite: &[bool], algorithm: ContactAlgori
                 .into(),
         });
     }
-    for info in built.interfaces.iter().zip(finite).filter(|(_, f)| **f).map(|(info, _)| info) {
+    for info in finite_interfaces(built, finite) {
         let refuse = |reason: &str| ContactError::FiniteSliding { contact: info.name.clone(), reason: reason.into() };
         if !matches!(info.pairing, Pairing::NodeToSegment | Pairing::SegmentToSegment) {
             return Err(refuse(
@@ -317,7 +317,7 @@ fn start_slip(
     previous: &StepStart,
 ) -> Vec<f64> {
     let mut slip = previous.slip.clone();
-    for info in built.interfaces.iter().zip(finite).filter(|(_, f)| **f).map(|(info, _)| info) {
+    for info in finite_interfaces(built, finite) {
         for k in info.pairs.clone() {
             slip[k] = row_values(&problem.pairs[k], u)[1];
         }
@@ -345,7 +345,7 @@ fn form_pairs(built: &BuiltProblem, finite: &[bool], u: &[f64]) -> Result<Formed
     let mut pairs = built.problem.pairs.clone();
     let mut gaps = built.problem.gap.clone();
     let mut free = vec![false; built.problem.num_pairs()];
-    for info in built.interfaces.iter().zip(finite).filter(|(_, f)| **f).map(|(info, _)| info) {
+    for info in finite_interfaces(built, finite) {
         let (master, slave) = current_contours(&moved, info)?;
         let formed = if info.pairing == Pairing::SegmentToSegment {
             pair_segments(&moved, &master, &slave, &info.slave_region)?
@@ -414,16 +414,19 @@ struct Attempt {
     floating_residual: f64,
 }
 
+/// The interfaces slid finitely (`finite[i]` true).
+fn finite_interfaces<'a>(built: &'a BuiltProblem, finite: &'a [bool]) -> impl Iterator<Item = &'a InterfaceInfo> {
+    built.interfaces.iter().zip(finite).filter(|(_, f)| **f).map(|(info, _)| info)
+}
+
+/// The pairs of the interfaces slid finitely, interface by interface.
+fn finite_pairs<'a>(built: &'a BuiltProblem, finite: &'a [bool]) -> impl Iterator<Item = usize> + 'a {
+    finite_interfaces(built, finite).flat_map(|info| info.pairs.clone())
+}
+
 /// Which slave nodes, or which end, every pair of the finite interfaces reaches.
 fn signature(built: &BuiltProblem, finite: &[bool], formed: &FormedPairs) -> Vec<(bool, Vec<usize>)> {
-    built
-        .interfaces
-        .iter()
-        .zip(finite)
-        .filter(|(_, f)| **f)
-        .flat_map(|(info, _)| info.pairs.clone())
-        .map(|k| (formed.free[k], slave_nodes(&formed.pairs[k])))
-        .collect()
+    finite_pairs(built, finite).map(|k| (formed.free[k], slave_nodes(&formed.pairs[k]))).collect()
 }
 
 /// The largest difference, relative to the mesh size `h_k`, between the linearised gap of the
@@ -437,12 +440,7 @@ fn gap_mismatch(
     next: &FormedPairs,
     u: &[f64],
 ) -> f64 {
-    built
-        .interfaces
-        .iter()
-        .zip(finite)
-        .filter(|(_, f)| **f)
-        .flat_map(|(info, _)| info.pairs.clone())
+    finite_pairs(built, finite)
         .filter(|&k| !used.free[k] && !next.free[k])
         .map(|k| {
             let (a, b) = (&used.pairs[k], &next.pairs[k]);
@@ -489,7 +487,7 @@ fn pairing_change(
 ) -> Option<String> {
     let points = &built.problem.model.mesh.points;
     let mut worst: Option<(f64, usize, f64)> = None;
-    for info in built.interfaces.iter().zip(finite).filter(|(_, f)| **f).map(|(info, _)| info) {
+    for info in finite_interfaces(built, finite) {
         for k in info.pairs.clone() {
             let (a, b) = (&used.pairs[k], &next.pairs[k]);
             let tolerance = REPAIRING_TOLERANCE * sizes[k];
