@@ -27,6 +27,10 @@ pub(crate) fn print_summary(
     heading(out, &r.scene, (r.dofs, r.pairs), &format!("{:?}", r.algorithm), r.status, (r.iterations, r.steps.len()))?;
     // Every choice the run made on its own: a refinement study must not mix them unknowingly.
     writeln!(out, "  {}", contact2d::generic::readme::method_line(r))?;
+    if let Some(e) = r.path_error {
+        let steps = r.steps_taken.map_or_else(String::new, |n| format!(", adaptive stepping: {n} steps"));
+        writeln!(out, "  path error (the step size's, from halving every step): {:.3} %{steps}", 100.0 * e)?;
+    }
     for line in preset_lines {
         writeln!(out, "{line}")?;
     }

@@ -156,6 +156,16 @@ class Result:
         return self.json["kkt"]
 
     @property
+    def path_error(self) -> float | None:
+        """The error the step size causes, relative (``json["path_error"]``; docs/theory.md
+        section 13): the run solved again with every step halved, the largest change of the
+        contact forces (against the largest force of each interface) and of the dissipation
+        (against the largest work), doubled. 0 for a run that cannot depend on the path (no
+        friction, or solved once and scaled); ``None`` where it was not estimated. Per step:
+        ``steps["path_error"]``."""
+        return self.json.get("path_error")
+
+    @property
     def paper(self) -> dict[str, Any] | None:
         """The paper's quantities (l, b, P, Phi_E1, ..., sigma_star, K) for the preset scenes of
         the plate with an insert; ``None`` for a generic scene."""

@@ -25,10 +25,11 @@ use std::path::Path;
 
 use super::profile::l2_error;
 use super::{
-    CaseReport, Check, Figure, Level, Measurement, Tolerance, VerifyError, mesh_override, scene_path, solve_on_mesh,
+    CaseReport, Check, Figure, Level, Measurement, Tolerance, VerifyError, gallery_scene, mesh_override, scene_path,
+    solve_on_mesh,
 };
+use crate::generic::GenericOutcome;
 use crate::generic::results::contact_result;
-use crate::generic::{GenericOutcome, load_scene};
 use crate::output::chart::{Axes, Series};
 
 const SCENE: &str = "scenes/generic/cattaneo_mindlin.toml";
@@ -173,7 +174,7 @@ pub fn run(root: &Path, level: Level) -> Result<CaseReport, VerifyError> {
 /// shear error should not depend on the increments (monotone loading).
 fn step_study(root: &Path, mesh: &str, report: &mut CaseReport) -> Result<(), VerifyError> {
     let file = format!("cattaneo_mindlin_{mesh}.msh");
-    let scene = load_scene(&scene_path(root, SCENE), &[mesh_override(&file)])?;
+    let scene = gallery_scene(&scene_path(root, SCENE), &[mesh_override(&file)])?;
     let schedule = scene.schedule()?;
     let at = schedule.patterns().iter().position(|p| p == "shear");
     let last_shear = at.and_then(|i| schedule.steps().last().map(|f| f[i]));

@@ -21,8 +21,8 @@ use std::path::Path;
 
 use contact2d_contact::ContactError;
 
-use super::{CaseReport, Check, Figure, Level, Measurement, Tolerance, VerifyError, scene_path};
-use crate::generic::{GenericError, load_scene, solve_generic};
+use super::{CaseReport, Check, Figure, Level, Measurement, Tolerance, VerifyError, gallery_scene, scene_path};
+use crate::generic::{GenericError, solve_generic};
 use crate::output::chart::{Axes, Series};
 
 const SCENE: &str = "scenes/generic/incline_push.toml";
@@ -42,7 +42,7 @@ pub fn onset_closed_form() -> f64 {
 /// A scene that cannot be read or solved below the onset.
 pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
     let path = scene_path(root, SCENE);
-    let out = solve_generic(&load_scene(&path, &[])?, &mut |_, _| {})?;
+    let out = solve_generic(&gallery_scene(&path, &[])?, &mut |_, _| {})?;
     let alpha = SLOPE.atan();
     let mut report = CaseReport {
         name: "incline".into(),
@@ -128,7 +128,7 @@ fn bisect_onset(path: &Path, mut held: f64, mut slides: f64, halvings: usize) ->
 /// Whether the block is held at `F/G = push` (weight applied first, then the push in one step).
 fn is_held(path: &Path, push: f64) -> Result<bool, VerifyError> {
     let schedule = format!("loading.schedule=[{{weight = 1.0}}, {{weight = 1.0, push = {push}}}]");
-    let scene = load_scene(path, &[schedule])?;
+    let scene = gallery_scene(path, &[schedule])?;
     match solve_generic(&scene, &mut |_, _| {}) {
         Ok(out) => Ok(out.report.status == "converged"),
         Err(GenericError::Contact { source, .. }) if matches!(*source, ContactError::BodyNotHeld { .. }) => Ok(false),

@@ -15,8 +15,8 @@ use std::path::Path;
 
 use contact2d_fem::{StressRecovery, nodal_stresses};
 
-use super::{CaseReport, Check, Level, Tolerance, VerifyError, scene_path};
-use crate::generic::{load_scene, solve_generic};
+use super::{CaseReport, Check, Level, Tolerance, VerifyError, gallery_scene, scene_path};
+use crate::generic::solve_generic;
 
 const SCENE: &str = "scenes/generic/interference_fit.toml";
 
@@ -28,7 +28,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
     let (a, b, e, delta) = (500.0f64, 1000.0f64, 2e5f64, 0.6667f64);
     let p = e * delta * (b * b - a * a) / (2.0 * a * b * b);
     let hoop = p * (b * b + a * a) / (b * b - a * a);
-    let out = solve_generic(&load_scene(&scene_path(root, SCENE), &[])?, &mut |_, _| {})?;
+    let out = solve_generic(&gallery_scene(&scene_path(root, SCENE), &[])?, &mut |_, _| {})?;
     let missing = |reason: String| VerifyError::Missing { case: "interference_fit".into(), reason };
     let fit = out.report.contacts.get("fit").ok_or_else(|| missing("no interface \"fit\"".into()))?;
     let profile = fit.profile.as_ref().ok_or_else(|| missing("no profile".into()))?;

@@ -41,9 +41,9 @@ use std::f64::consts::PI;
 use std::path::Path;
 
 use super::profile::l2_error;
-use super::{CaseReport, Check, Level, Measurement, Tolerance, VerifyError, mesh_override, scene_path};
+use super::{CaseReport, Check, Level, Measurement, Tolerance, VerifyError, gallery_scene, mesh_override, scene_path};
 use crate::generic::results::contact_result;
-use crate::generic::{GenericOutcome, load_scene, solve_generic};
+use crate::generic::{GenericOutcome, solve_generic};
 
 /// The scene.
 pub const SCENE: &str = "scenes/generic/cattaneo_mindlin_fretting.toml";
@@ -173,7 +173,7 @@ pub fn run(root: &Path, level: Level) -> Result<CaseReport, VerifyError> {
 /// The checks on one mesh level.
 fn check_mesh(root: &Path, mesh: &str, report: &mut CaseReport) -> Result<(), VerifyError> {
     let overrides = [mesh_override(&format!("cattaneo_mindlin_{mesh}.msh"))];
-    let scene = load_scene(&scene_path(root, SCENE), &overrides)?;
+    let scene = gallery_scene(&scene_path(root, SCENE), &overrides)?;
     let cycle = scene.last_cycle().ok_or_else(|| missing("the scene has no load cycle"))?;
     let out = solve_generic(&scene, &mut |_, _| {})?;
     let mesh = mesh.to_string();

@@ -38,9 +38,9 @@ use std::path::Path;
 
 use contact2d_contact::{BuiltProblem, PairState, SolvedStep};
 
-use super::{CaseReport, Check, Figure, Measurement, Tolerance, VerifyError, mesh_override, scene_path};
+use super::{CaseReport, Check, Figure, Measurement, Tolerance, VerifyError, gallery_scene, mesh_override, scene_path};
+use crate::generic::solve_generic_streaming;
 use crate::generic::zones::zone_length;
-use crate::generic::{load_scene, solve_generic_streaming};
 use crate::output::chart::{Axes, Series};
 
 use super::Level;
@@ -165,7 +165,7 @@ pub fn measure(root: &Path, overrides: &[String]) -> Result<Vec<RollerStep>, Ver
     let missing = |reason: String| VerifyError::Missing { case: "moving_roller".into(), reason };
     let mut sets = vec![mesh_override(MESH)];
     sets.extend_from_slice(overrides);
-    let scene = load_scene(&scene_path(root, SCENE), &sets)?;
+    let scene = gallery_scene(&scene_path(root, SCENE), &sets)?;
     let mut reference: Option<Undeformed> = None;
     let mut steps: Vec<Option<RollerStep>> = vec![];
     let out = solve_generic_streaming(&scene, &mut |_, _| {}, &mut |built, _, step| {

@@ -22,9 +22,11 @@ use std::path::Path;
 
 use contact2d_fem::{StressRecovery, nodal_stresses};
 
-use super::{CaseReport, Check, Figure, Level, Measurement, Tolerance, VerifyError, mesh_override, scene_path};
+use super::{
+    CaseReport, Check, Figure, Level, Measurement, Tolerance, VerifyError, gallery_scene, mesh_override, scene_path,
+};
 use crate::bench::reference::{Reference, ReferenceMethod, richardson};
-use crate::generic::{GenericOutcome, load_scene, solve_generic};
+use crate::generic::{GenericOutcome, solve_generic};
 use crate::output::chart::{Axes, Series};
 
 const HOLE_RADIUS: f64 = 10.0;
@@ -87,7 +89,7 @@ pub fn run(root: &Path, level: Level) -> Result<CaseReport, VerifyError> {
         let mut finals = vec![];
         for (i, (name, file)) in meshes.iter().enumerate() {
             let overrides = [mesh_override(file), format!("contact.bore.friction={friction}")];
-            let out = solve_generic(&load_scene(&scene_path(root, scene), &overrides)?, &mut |_, _| {})?;
+            let out = solve_generic(&gallery_scene(&scene_path(root, scene), &overrides)?, &mut |_, _| {})?;
             if out.report.status != "converged" {
                 report.notes.push(format!("{label}, {name}: status {}", out.report.status));
             }

@@ -66,8 +66,8 @@
 
 use std::path::Path;
 
-use super::{CaseReport, Check, Level, Measurement, Tolerance, VerifyError, mesh_override, scene_path};
-use crate::generic::{GenericOutcome, load_scene, solve_generic};
+use super::{CaseReport, Check, Level, Measurement, Tolerance, VerifyError, gallery_scene, mesh_override, scene_path};
+use crate::generic::{GenericOutcome, solve_generic};
 
 const SCENE: &str = "scenes/generic/press_fit.toml";
 const MESHES: [(&str, &str); 2] = [("L1", "press_fit_L1.msh"), ("L2", "press_fit_L2.msh")];
@@ -245,7 +245,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
 
 /// Solves the scene with `overrides`, keeping every step's profile.
 fn solve(root: &Path, overrides: &[String]) -> Result<GenericOutcome, VerifyError> {
-    let mut scene = load_scene(&scene_path(root, SCENE), overrides)?;
+    let mut scene = gallery_scene(&scene_path(root, SCENE), overrides)?;
     scene.every_profile = true;
     Ok(solve_generic(&scene, &mut |_, _| {})?)
 }

@@ -20,8 +20,8 @@
 
 use std::path::Path;
 
-use super::{CaseReport, Check, Level, Measurement, Tolerance, VerifyError, scene_path};
-use crate::generic::{GenericReport, load_scene, solve_generic};
+use super::{CaseReport, Check, Level, Measurement, Tolerance, VerifyError, gallery_scene, scene_path};
+use crate::generic::{GenericReport, solve_generic};
 
 const SCENES: [(&str, &str); 2] = [
     ("matching", "scenes/generic/sliding_patch_matching.toml"),
@@ -56,7 +56,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
         ..CaseReport::default()
     };
     for (mesh, scene) in SCENES {
-        let mut scene = load_scene(&scene_path(root, scene), &[])?;
+        let mut scene = gallery_scene(&scene_path(root, scene), &[])?;
         scene.every_profile = true;
         let out = solve_generic(&scene, &mut |_, _| {})?;
         let (worst, transition) = measure(&out.report)?;

@@ -6,11 +6,13 @@
 //!   → solve(&problem, &settings, &schedule) → History → GenericReport (JSON) → outputs
 //! ```
 
+pub mod adaptive;
 pub mod fretting;
 #[cfg(feature = "native")]
 pub mod fretting_outputs;
 #[cfg(feature = "native")]
 pub mod outputs;
+pub mod path_error;
 pub mod placed;
 mod placed_ends;
 pub mod points;
@@ -20,6 +22,7 @@ pub mod scene;
 mod schedule;
 pub mod setup_notes;
 pub mod sliding;
+mod stepping;
 mod summary;
 pub mod zones;
 
@@ -29,15 +32,13 @@ use web_time::Instant;
 
 use serde::Serialize;
 
-use contact2d_contact::{
-    BuiltProblem, ContactError, History, Retention, SolvedStep, Stage, builder::group_length, solve_finite_sliding,
-    solve_keeping, solve_stages,
-};
+use contact2d_contact::{BuiltProblem, ContactError, History, Retention, SolvedStep, Stage, builder::group_length};
 use contact2d_mesh::read_msh;
 
 pub use points::{PointResult, ResolvedPoint};
 pub use results::{ContactResult, FixedGroup, Kkt, NotHeldResult, Profile, StepResult};
 pub use scene::GenericScene;
+use stepping::{Run, estimate_path_error, keep_user_steps, plan_path, solve_run};
 pub use summary::{SummaryInput, SummaryRows, summarise};
 
 use crate::input_file::{InputFileError, MAX_MESH_BYTES, check_input_file};
@@ -169,6 +170,16 @@ pub struct GenericReport {
     /// algorithm and pair count): `condensed` (the interface's dense compliances) or `sparse`
     /// (the full system, no dense block).
     pub linear_used: &'static str,
+    /// The largest error the step size causes over the steps, relative (each step's
+    /// `path_error`, [`path_error`]): 0 for a path-independent run (no friction, or solved once
+    /// and scaled), `None` (absent from the JSON) where it was not estimated (`loading.path_error =
+    /// false`, the placed Boussinesq runs, or a halved path that did not solve: the notes say).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub path_error: Option<f64>,
+    /// Adaptive stepping (`[loading] adaptive`): the steps its path took for the user's steps
+    /// (absent without it).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub steps_taken: Option<usize>,
     /// Every step, without profiles.
     pub steps: Vec<StepResult>,
     /// The last step's interfaces, with profiles.
@@ -222,6 +233,8 @@ impl GenericReport {
             scaled: self.scaled,
             pairing_used: self.pairing_used.clone(),
             linear_used: self.linear_used,
+            path_error: self.path_error,
+            steps_taken: self.steps_taken,
             steps: vec![],
             contacts: self.contacts.clone(),
             reactions: self.reactions.clone(),
@@ -431,16 +444,19 @@ fn solve_generic_from(
         Some(d) => settings.with_deadline(d),
         None => settings,
     };
+    // Finite sliding forms the pairs on the current configuration.
+    let finite: Vec<bool> = scene.contact.iter().map(|c| c.sliding == scene::SlidingKey::Finite).collect();
     let total = schedule.steps().len();
     let fixed = fixed_groups(scene);
+    // Adaptive stepping: the path the user's steps take (the user's own without it).
+    let user_run = Run { built: &built, stages: &stages, finite: &finite, settings: &settings, schedule: &schedule };
+    let (path, adaptive_note) = plan_path(scene, &user_run, &fixed).map_err(contact_error)?;
+    let (schedule, stages) = (path.schedule.clone(), path.stages(&stages));
     // Each step's summary row is made as the step is solved; of the steps before, the rows
     // keep only what the next step needs.
-    // Finite sliding's last problem (its pairs those of the last step), kept for the summary.
-    let mut last_built: Option<BuiltProblem> = None;
     let mut rows = SummaryRows::new(&built, &fixed, scene.every_profile).about(scene.moment_centre).with_points(points);
     // Finite sliding forms the pairs on the current configuration: the small-sliding check
     // (displacements against the undeformed pairs' segments) does not apply to the run.
-    let finite: Vec<bool> = scene.contact.iter().map(|c| c.sliding == scene::SlidingKey::Finite).collect();
     if scene.linearised_displacements || finite.iter().any(|f| *f) {
         rows = rows.without_sliding_check();
     }
@@ -449,6 +465,7 @@ fn solve_generic_from(
     }
     if let Some(cycle) = scene.last_cycle() {
         let references: Vec<Option<[String; 2]>> = scene.contact.iter().map(|c| c.reference_groups.clone()).collect();
+        let cycle = path.steps_of(&cycle);
         rows = rows.with_fretting(fretting::FrettingWatch::new(&built, cycle, &references).map_err(contact_error)?);
     }
     let (mut failed, mut solve_time, mut post_time) = (None, 0.0, 0.0);
@@ -461,28 +478,24 @@ fn solve_generic_from(
         {
             failed = Some(e);
         }
-        on_solved(current, i, step);
+        // The outputs see the user's steps only (every step of the path feeds the rows: the
+        // work and the dissipation add up over it).
+        let (user, ends) = adaptive::user_step_of(&path.ends, i);
+        if ends {
+            on_solved(current, user, step);
+            on_step(user + 1, total);
+        }
         post_time += post_clock.elapsed().as_secs_f64();
-        on_step(i + 1, total);
     };
-    let history = if !stages.is_empty() {
-        // Each step is solved, and its rows made, on its stage's problem; the outcome keeps
-        // the last step's.
-        let (history, last) =
-            solve_stages(&stages, &settings, &schedule, retention, &mut observe).map_err(contact_error)?;
-        last_built = stages.into_iter().nth(last).map(|s| s.built);
-        history
-    } else if finite.iter().any(|f| *f) {
-        // Each step is solved, and its rows made, on the pairs of its own configuration; the
-        // outcome keeps the last step's.
-        let (history, last) = solve_finite_sliding(&built, &finite, &settings, &schedule, retention, &mut observe)
-            .map_err(contact_error)?;
-        last_built = Some(last);
-        history
-    } else {
-        solve_keeping(&built.problem, &settings, &schedule, retention, &mut |i, step| observe(i, step, &built))
-            .map_err(contact_error)?
-    };
+    let run = Run { built: &built, stages: &stages, finite: &finite, settings: &settings, schedule: &schedule };
+    let (mut history, last_built) = solve_run(&run, retention, &mut observe).map_err(contact_error)?;
+    if retention == Retention::All && history.steps.len() > 1 {
+        // The user's steps only (a last one that stopped early kept): the steps of the JSON.
+        let last = history.steps.len() - 1;
+        let kept = std::mem::take(&mut history.steps).into_iter().enumerate();
+        history.steps =
+            kept.filter(|(j, _)| *j == last || adaptive::user_step_of(&path.ends, *j).1).map(|(_, s)| s).collect();
+    }
     if let Some(e) = failed {
         return Err(contact_error(e));
     }
@@ -509,11 +522,14 @@ fn solve_generic_from(
         last,
         groups,
         scaled: history.scaled,
-        total_steps: total,
+        total_steps: schedule.steps().len(),
         times,
         clock,
     };
-    let report = summarise(input, rows).map_err(contact_error)?;
+    let mut report = summarise(input, rows).map_err(contact_error)?;
+    estimate_path_error(scene, &run, &fixed, &mut report);
+    keep_user_steps(&path, adaptive_note, &mut report);
+    report.time_s.total = clock.elapsed().as_secs_f64();
     let built = last_built.unwrap_or(built);
     Ok(GenericOutcome { scene: scene.clone(), built, history, report })
 }

@@ -185,6 +185,10 @@ pub struct StepResult {
     /// (0: the pairs formed at the step's start held). Absent with small sliding only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub repairings: Option<usize>,
+    /// Adaptive stepping (`[loading] adaptive`): how many steps of its path this user step took
+    /// (absent without it).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub substeps: Option<usize>,
     /// Per interface.
     pub contacts: BTreeMap<String, ContactResult>,
     /// Per fixed group: `[f1, f2]`, a component `None` (JSON `null`) where the group's own
@@ -220,6 +224,11 @@ pub struct StepResult {
     /// For status `not_held`: what the contact could not hold (absent otherwise).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub not_held: Option<NotHeldResult>,
+    /// The error the step size causes at this step, relative ([`super::path_error`]: the
+    /// contact resultants against the largest each carried, the dissipation against the work):
+    /// 0 for a path-independent run, `None` (absent from the JSON) where it was not estimated.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub path_error: Option<f64>,
 }
 
 /// A load that the friction of a contact cannot hold (status `not_held`): a body held only by
@@ -443,6 +452,7 @@ impl<'a> StepResults<'a> {
             failed_check: failed_check(problem, step),
             iterations: s.iterations,
             repairings: None,
+            substeps: None,
             contacts,
             reactions: group_reactions(built, &reactions, self.fixed_groups, self.step),
             points: self.points.iter().map(|p| (p.name.clone(), p.result(&s.displacement, &reactions))).collect(),
@@ -475,6 +485,7 @@ impl<'a> StepResults<'a> {
                 demanded: n.demanded,
                 available: n.available,
             }),
+            path_error: None,
         };
         if s.status.is_solved() {
             self.held_factors.clone_from(&step.factors);

@@ -297,7 +297,7 @@ pub struct ContactEntry {
 }
 
 /// The `[loading]` section.
-#[derive(Debug, Clone, PartialEq, Deserialize, Default)]
+#[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LoadingSection {
     /// Every pattern from 0 to 1 in this many equal steps.
@@ -309,6 +309,25 @@ pub struct LoadingSection {
     pub cycle: Option<Vec<BTreeMap<String, f64>>>,
     /// How many times `cycle` runs (1 ..= 10 000; default 1 with a `cycle`).
     pub cycles: Option<usize>,
+    /// Whether a frictional run estimates the error its step size causes (`path_error`: the run
+    /// solved again with every step halved, [`super::path_error`]); default true.
+    #[serde(default = "yes")]
+    pub path_error: bool,
+    /// Adaptive stepping: the user's steps split where the path error exceeds the tolerance
+    /// ([`super::adaptive`]); none by default.
+    #[serde(default)]
+    pub adaptive: Option<super::adaptive::AdaptiveKey>,
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl Default for LoadingSection {
+    /// No steps, schedule or cycle given; the path error estimated.
+    fn default() -> Self {
+        LoadingSection { steps: None, schedule: None, cycle: None, cycles: None, path_error: true, adaptive: None }
+    }
 }
 
 fn one() -> f64 {
@@ -434,6 +453,11 @@ impl GenericScene {
     pub fn validate(&self) -> Result<(), SceneError> {
         if self.body.is_empty() {
             return Err(self.fail("body", "no [[body]]: name at least one 2D region".into()));
+        }
+        if let Some(a) = self.loading.adaptive
+            && !(a.tolerance.is_finite() && a.tolerance > 0.0)
+        {
+            return Err(self.fail("loading.adaptive.tolerance", format!("{} must be finite and > 0", a.tolerance)));
         }
         for (i, b) in self.body.iter().enumerate() {
             if !(b.youngs_modulus.is_finite() && b.youngs_modulus > 0.0) {

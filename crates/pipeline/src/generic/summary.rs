@@ -250,6 +250,8 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
             .linear
             .resolve(scene.solver.algorithm, built.problem.num_pairs())
             .map_or(LinearSolver::Condensed.key(), LinearSolver::key),
+        path_error: None,
+        steps_taken: None,
         steps: summary_steps,
         contacts: last.contacts,
         reactions: last.reactions,

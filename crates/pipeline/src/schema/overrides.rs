@@ -118,8 +118,9 @@ pub(crate) fn apply_override(root: &mut toml::Value, assignment: &str) -> Result
             table.insert((*part).to_string(), parsed);
             return Ok(());
         }
-        node =
-            table.get_mut(*part).ok_or_else(|| err(format!("no table \"{}\" in the scene", parts[..=i].join("."))))?;
+        // A table the file leaves out (`loading.adaptive`) is made: a misspelt one is an unknown
+        // key when the scene is checked.
+        node = table.entry((*part).to_string()).or_insert_with(|| toml::Value::Table(toml::Table::new()));
     }
     Err(err("empty key".into()))
 }

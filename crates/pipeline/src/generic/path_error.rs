@@ -1,0 +1,159 @@
+//! The error that the load steps cause in a frictional run, estimated against the same run on a
+//! path of half the step (`path_error` in the JSON, per step and per run).
+//!
+//! Coulomb friction is path-dependent: each step solves the increment from its start state to
+//! its end load in one go, so the answer depends on the step size, to first order (the slip
+//! direction and the stick/slip states are taken at the step's end for the whole step). The
+//! estimate solves the whole run again with every step split in two (each pattern's factor
+//! halfway along the step's straight path; staged supports and cycles follow, a stage of steps
+//! `a..b` becoming `2a..2b`) and compares the two at the user's steps. For a first-order path
+//! the error of the user's steps is twice their difference from the halved path (Richardson):
+//!
+//! ```text
+//! e_F(i) = 2 max_c ‖f_c,i − f'_c,i‖_∞ / S_c,     f = (N, T, F1, F2)
+//!          S_c = max_j max(|(N', T')_c,j|, |(F1', F2')_c,j|)   (the largest force of the interface in the run)
+//! e_D(i) = 2 |D_i − D'_i| / max_j |W'_j|       (the largest work of the loads in the run)
+//! path_error_i = max(e_F(i), e_D(i)),   path_error = max_i path_error_i
+//! ```
+//! with `N`, `T` each interface's normal and tangential sums, `(F1, F2)` its resultant, `D` the dissipation and `W`
+//! the work up to the step, primed on the halved path. Both are measured against the largest
+//! value of their kind in the run, as an engineer reads a history: the first steps of a press
+//! fit carry a hundredth of the final force, and their relative errors would flag a run whose
+//! every result is right. The dissipation is measured against the energy the history carries
+//! (W = U + D ≥ D), not against itself: a dissipation that tends to zero as the steps shrink (a
+//! slip that is an artefact of the step) would otherwise never settle.
+//!
+//! A frictionless run is path-independent (elastic contact without friction is a convex
+//! minimisation of the energy at each load): its estimate is 0 without a second solve, as is a
+//! run solved once and scaled (proportional loads without a gap: the frictional answer is
+//! self-similar).
+
+use std::collections::BTreeMap;
+use std::ops::Range;
+
+use contact2d_contact::{ContactError, LoadSchedule, Stage};
+
+use super::results::StepResult;
+
+/// The relative path error above which a run's notes advise more steps.
+pub const NOTE_ABOVE: f64 = 0.01;
+
+/// What the runs compared need of a step: per interface (normal, tangential) resultants, the
+/// dissipation and the work up to the step.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PathPoint {
+    /// Per interface: `[Σ λ, Σ τ, F1, F2]`, the normal and tangential sums and the resultant.
+    pub forces: BTreeMap<String, [f64; 4]>,
+    /// Dissipation up to the step.
+    pub dissipated: f64,
+    /// Work of the loads up to the step.
+    pub work: f64,
+}
+
+impl PathPoint {
+    /// The point of a step's summary row.
+    pub fn of(row: &StepResult) -> PathPoint {
+        PathPoint {
+            forces: row
+                .contacts
+                .iter()
+                .map(|(k, c)| (k.clone(), [c.normal_force, c.tangential_force, c.resultant[0], c.resultant[1]]))
+                .collect(),
+            dissipated: row.dissipated,
+            work: row.work,
+        }
+    }
+}
+
+/// `schedule` with every step split in two at the middle of its straight path (the first from
+/// zero factors).
+///
+/// # Errors
+/// A schedule of more than [`contact2d_contact::loading::MAX_SCHEDULE_STEPS`] steps once halved.
+pub fn halved(schedule: &LoadSchedule) -> Result<LoadSchedule, ContactError> {
+    let mut before = vec![0.0; schedule.patterns().len()];
+    let mut steps = Vec::with_capacity(2 * schedule.steps().len());
+    for step in schedule.steps() {
+        steps.push(before.iter().zip(step).map(|(a, b)| 0.5 * (a + b)).collect());
+        steps.push(step.clone());
+        before.clone_from(step);
+    }
+    LoadSchedule::new(schedule.patterns().to_vec(), steps)
+}
+
+/// The stages of a halved schedule: the stage of steps `a..b` solves `2a..2b`.
+pub fn halved_stages(stages: &[Stage]) -> Vec<Stage> {
+    let double = |r: &Range<usize>| 2 * r.start..2 * r.end;
+    stages.iter().map(|s| Stage { steps: double(&s.steps), built: s.built.clone(), held: s.held.clone() }).collect()
+}
+
+/// Each user step's path error (module docs) from the user's points and the halved path's points
+/// at the same loads (`fine[i]` at the end of user step `i`); steps beyond the shorter of the two
+/// (a run that stopped) get none.
+pub fn step_errors(coarse: &[PathPoint], fine: &[PathPoint]) -> Vec<f64> {
+    let n = coarse.len().min(fine.len());
+    let (coarse, fine) = (&coarse[..n], &fine[..n]);
+    let mut largest: BTreeMap<&str, f64> = BTreeMap::new();
+    for (name, [normal, tangential, f1, f2]) in fine.iter().flat_map(|f| &f.forces) {
+        let scale = largest.entry(name.as_str()).or_insert(0.0);
+        *scale = scale.max(normal.hypot(*tangential)).max(f1.hypot(*f2));
+    }
+    let work = fine.iter().map(|f| f.work.abs()).fold(0.0, f64::max);
+    coarse
+        .iter()
+        .zip(fine)
+        .map(|(c, f)| {
+            let mut e: f64 = 0.0;
+            for (name, f_forces) in &f.forces {
+                let (Some(c_forces), Some(&scale)) = (c.forces.get(name), largest.get(name.as_str())) else {
+                    continue;
+                };
+                if scale > 0.0 {
+                    let change = c_forces.iter().zip(f_forces).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+                    e = e.max(2.0 * change / scale);
+                }
+            }
+            if work > 0.0 {
+                e = e.max(2.0 * (c.dissipated - f.dissipated).abs() / work);
+            }
+            e
+        })
+        .collect()
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+
+    fn point(n: f64, t: f64, d: f64, w: f64) -> PathPoint {
+        PathPoint { forces: BTreeMap::from([("c".to_string(), [n, t, 0.0, 0.0])]), dissipated: d, work: w }
+    }
+
+    #[test]
+    fn halving_splits_each_step_at_the_middle_of_its_straight_path() {
+        let s = LoadSchedule::new(vec!["a".into(), "b".into()], vec![vec![1.0, 0.0], vec![1.0, 2.0]]).unwrap();
+        let h = halved(&s).unwrap();
+        assert_eq!(h.steps(), &[vec![0.5, 0.0], vec![1.0, 0.0], vec![1.0, 1.0], vec![1.0, 2.0]]);
+    }
+
+    #[test]
+    fn identical_paths_have_no_error_and_a_difference_counts_twice() {
+        let a = vec![point(10.0, 3.0, 0.1, 5.0), point(20.0, 6.0, 0.2, 10.0)];
+        assert_eq!(step_errors(&a, &a), vec![0.0, 0.0]);
+        // Tangential 6.2 against 6.0 on a force of |(20, 6)|: 2 · 0.2 / 20.88.
+        let b = vec![point(10.0, 3.0, 0.1, 5.0), point(20.0, 6.2, 0.2, 10.0)];
+        let e = step_errors(&b, &a);
+        assert!((e[1] - 0.4 / 20.0f64.hypot(6.0)).abs() < 1e-15);
+        // Dissipation 0.3 against 0.2 with a work of 10: 2 · 0.1 / 10.
+        let c = vec![point(10.0, 3.0, 0.1, 5.0), point(20.0, 6.0, 0.3, 10.0)];
+        assert!((step_errors(&c, &a)[1] - 0.02).abs() < 1e-15);
+    }
+
+    #[test]
+    fn an_unloaded_interface_is_measured_against_the_largest_force_it_carried() {
+        let fine = vec![point(10.0, 0.0, 0.0, 1.0), point(0.0, 0.0, 0.0, 1.0)];
+        let coarse = vec![point(10.0, 0.0, 0.0, 1.0), point(0.1, 0.0, 0.0, 1.0)];
+        assert!((step_errors(&coarse, &fine)[1] - 0.02).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,193 @@
+//! The run of a scene's steps: on the one problem, stage by stage or on pairs that follow the
+//! motion ([`solve_run`]); the path the user's steps take with adaptive stepping ([`plan_path`],
+//! [`super::adaptive`]); and the step size's error of a frictional run
+//! ([`estimate_path_error`], [`super::path_error`]).
+
+use contact2d_contact::{
+    BuiltProblem, ContactError, History, LoadSchedule, Retention, SolvedStep, SolverSettings, Stage,
+    solve_finite_sliding, solve_keeping, solve_stages,
+};
+
+use super::{FixedGroup, GenericReport, GenericScene, adaptive, path_error, results};
+
+/// What a run of a scene's steps needs: its problem (the first stage's with staged supports),
+/// its stages (none without), which contacts slide finitely, the settings and the schedule.
+pub(super) struct Run<'a> {
+    pub built: &'a BuiltProblem,
+    pub stages: &'a [Stage],
+    pub finite: &'a [bool],
+    pub settings: &'a SolverSettings,
+    pub schedule: &'a LoadSchedule,
+}
+
+/// Solves a scene's steps: stage by stage with staged supports, on the pairs of each step's own
+/// configuration with finite sliding, else on the one problem; `observe(i, step, current)` is
+/// told each step with the problem it was solved on. Returns the history and, for stages or
+/// finite sliding, the problem of the last step.
+pub(super) fn solve_run(
+    run: &Run<'_>,
+    retention: Retention,
+    observe: &mut dyn FnMut(usize, &SolvedStep, &BuiltProblem),
+) -> Result<(History, Option<BuiltProblem>), ContactError> {
+    let Run { built, stages, finite, settings, schedule } = *run;
+    if !stages.is_empty() {
+        let (history, last) = solve_stages(stages, settings, schedule, retention, observe)?;
+        Ok((history, stages.get(last).map(|s| s.built.clone())))
+    } else if finite.iter().any(|f| *f) {
+        let (history, last) = solve_finite_sliding(built, finite, settings, schedule, retention, observe)?;
+        Ok((history, Some(last)))
+    } else {
+        let history =
+            solve_keeping(&built.problem, settings, schedule, retention, &mut |i, step| observe(i, step, built))?;
+        Ok((history, None))
+    }
+}
+
+/// Fills `report`'s `path_error`, per step and for the run ([`path_error`]): 0 without friction
+/// or for a run solved once and scaled; else the run solved again on the halved path and
+/// compared at the user's steps, with a note above [`path_error::NOTE_ABOVE`]. Not estimated
+/// (`null`, with a note) when the scene turns it off or the halved path does not solve.
+pub(super) fn estimate_path_error(
+    scene: &GenericScene,
+    run: &Run<'_>,
+    fixed: &[FixedGroup],
+    report: &mut GenericReport,
+) {
+    if !scene.loading.path_error {
+        return;
+    }
+    let frictional = scene.contact.iter().any(|c| c.friction > 0.0);
+    if !frictional || report.scaled {
+        report.path_error = Some(0.0);
+        report.steps.iter_mut().for_each(|s| s.path_error = Some(0.0));
+        return;
+    }
+    let fine = match halved_points(run, fixed) {
+        Ok(fine) => fine,
+        Err(e) => {
+            report.notes.push(format!("path_error: not estimated, the path of half the step did not solve: {e}"));
+            return;
+        }
+    };
+    let coarse: Vec<path_error::PathPoint> = report.steps.iter().map(path_error::PathPoint::of).collect();
+    let errors = path_error::step_errors(&coarse, &fine);
+    for (row, e) in report.steps.iter_mut().zip(&errors) {
+        row.path_error = Some(*e);
+    }
+    report.path_error = (errors.len() == report.steps.len()).then(|| errors.iter().copied().fold(0.0, f64::max));
+    if let Some(e) = report.path_error.filter(|e| *e > path_error::NOTE_ABOVE) {
+        report.notes.push(format!(
+            "path_error {:.2} %: friction makes the answer depend on the load path, and halving the steps moves the \
+             contact forces or the dissipation by about that much (relative to the largest contact force, and to \
+             the work of the loads); use more steps",
+            100.0 * e
+        ));
+    } else if report.path_error.is_none() {
+        report.notes.push("path_error: the path of half the step stopped before the last step".into());
+    }
+}
+
+/// The path of the user's steps: refined by adaptive stepping where the scene asks for it and
+/// friction makes the answer depend on the path ([`adaptive`]), else the user's own; with a note
+/// when the refinement stopped before the tolerance.
+pub(super) fn plan_path(
+    scene: &GenericScene,
+    run: &Run<'_>,
+    fixed: &[FixedGroup],
+) -> Result<(adaptive::Refined, Option<String>), ContactError> {
+    let mut path = adaptive::Refined::of(run.schedule);
+    let Some(key) = scene.loading.adaptive else { return Ok((path, None)) };
+    if !scene.contact.iter().any(|c| c.friction > 0.0) {
+        return Ok((path, None));
+    }
+    for _ in 0..adaptive::MAX_ROUNDS {
+        let stages = path.stages(run.stages);
+        let current = Run { schedule: &path.schedule, stages: &stages, ..*run };
+        let coarse = run_points(&current, fixed, &|_| true)?;
+        let errors = path_error::step_errors(&coarse, &halved_points(&current, fixed)?);
+        if errors.len() < path.schedule.steps().len() {
+            let note = "adaptive stepping stopped refining: a step of its path did not converge".to_string();
+            return Ok((path, Some(note)));
+        }
+        match adaptive::next(&path, &errors, key.tolerance)? {
+            None => return Ok((path, None)),
+            Some(next) if next.schedule.steps().len() > adaptive::MAX_STEPS => {
+                let note = format!(
+                    "adaptive stepping stopped refining at {} steps: the tolerance {:e} needs more than {} steps",
+                    path.schedule.steps().len(),
+                    key.tolerance,
+                    adaptive::MAX_STEPS
+                );
+                return Ok((path, Some(note)));
+            }
+            Some(next) => path = next,
+        }
+    }
+    let note = format!(
+        "adaptive stepping stopped refining after {} rounds at {} steps above the tolerance {:e}",
+        adaptive::MAX_ROUNDS,
+        path.schedule.steps().len(),
+        key.tolerance
+    );
+    Ok((path, Some(note)))
+}
+
+/// The step table at the user's steps only (adaptive stepping): each row the state at the end of
+/// its user step, its `substeps` the steps it took and its `path_error` the largest of theirs; a
+/// last row that ended a user step early (a step that did not converge) kept as well.
+pub(super) fn keep_user_steps(path: &adaptive::Refined, note: Option<String>, report: &mut GenericReport) {
+    if path.ends.iter().enumerate().all(|(i, e)| *e == i) {
+        return;
+    }
+    let substeps = path.substeps();
+    let rows = std::mem::take(&mut report.steps);
+    let last = rows.len().saturating_sub(1);
+    let mut worst: f64 = 0.0;
+    let mut any = false;
+    for (j, mut row) in rows.into_iter().enumerate() {
+        if let Some(e) = row.path_error {
+            worst = worst.max(e);
+            any = true;
+        }
+        let (user, ends) = adaptive::user_step_of(&path.ends, j);
+        if ends || j == last {
+            row.substeps = substeps.get(user).copied();
+            row.path_error = any.then_some(worst);
+            report.steps.push(row);
+            (worst, any) = (0.0, false);
+        }
+    }
+    report.steps_taken = Some(path.schedule.steps().len());
+    report.notes.push(format!(
+        "adaptive stepping: {} steps for the user's {} (`steps[i].substeps`), each step's path_error within the \
+         tolerance",
+        path.schedule.steps().len(),
+        path.ends.len()
+    ));
+    report.notes.extend(note);
+}
+
+/// A run's points ([`path_error::PathPoint`]) at the steps `keep` selects, up to its first step
+/// that does not converge.
+fn run_points(
+    run: &Run<'_>,
+    fixed: &[FixedGroup],
+    keep: &dyn Fn(usize) -> bool,
+) -> Result<Vec<path_error::PathPoint>, ContactError> {
+    let mut results = results::StepResults::new(run.built, fixed);
+    let (mut points, mut failed, mut stopped) = (vec![], None, false);
+    solve_run(run, Retention::Last, &mut |i, step, current| match results.push_on(current, step, false) {
+        Ok(row) if row.status != "converged" => stopped = true,
+        Ok(row) if keep(i) && !stopped => points.push(path_error::PathPoint::of(&row)),
+        Ok(_) => {}
+        Err(e) => failed = failed.take().or(Some(e)),
+    })?;
+    failed.map_or(Ok(points), Err)
+}
+
+/// The run on the halved path ([`path_error::halved`]), its points at the end of each user step.
+fn halved_points(run: &Run<'_>, fixed: &[FixedGroup]) -> Result<Vec<path_error::PathPoint>, ContactError> {
+    let schedule = path_error::halved(run.schedule)?;
+    let stages = path_error::halved_stages(run.stages);
+    run_points(&Run { schedule: &schedule, stages: &stages, ..*run }, fixed, &|i| i % 2 == 1)
+}
