@@ -26,7 +26,8 @@
 //!   the output points, and the answer is the converged path's within the tolerance's
 //!   promise — the stick length to one pair (same last sticking pair), the resultant within
 //!   1e-3 of the largest contact force (1,058 N) plus the 400 steps' own error (≤ 0.1 N);
-//! * a tolerance ≤ 0 is refused naming `loading.adaptive.tolerance`.
+//! * a tolerance ≤ 0 is refused naming `loading.adaptive.tolerance`, and adaptive stepping with
+//!   the Boussinesq algorithm's placed zone ends naming `loading.adaptive`.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use std::path::Path;
@@ -91,4 +92,8 @@ fn the_estimate_and_adaptive_stepping_against_the_converged_path() {
 fn a_tolerance_that_is_not_positive_is_refused_by_its_key() {
     let e = load_scene(Path::new(PIN_LUG), &["loading.adaptive.tolerance=0.0".into()]).unwrap_err();
     assert!(e.to_string().contains("loading.adaptive.tolerance"), "{e}");
+    // The Boussinesq algorithm's placed zone ends solve each step on its own mesh: refused.
+    let placed = Path::new("scenes/generic/roller_on_block_placed.toml");
+    let e = load_scene(placed, &["loading.adaptive.tolerance=1e-3".into()]).unwrap_err();
+    assert!(e.to_string().contains("loading.adaptive"), "{e}");
 }

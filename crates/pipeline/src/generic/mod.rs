@@ -450,8 +450,12 @@ fn solve_generic_from(
     let fixed = fixed_groups(scene);
     // Adaptive stepping: the path the user's steps take (the user's own without it).
     let user_run = Run { built: &built, stages: &stages, finite: &finite, settings: &settings, schedule: &schedule };
-    let (path, adaptive_note) = plan_path(scene, &user_run, &fixed).map_err(contact_error)?;
-    let (schedule, stages) = (path.schedule.clone(), path.stages(&stages));
+    let plan = plan_path(scene, &user_run, &fixed).map_err(contact_error)?;
+    let path = plan.path;
+    // The stages cover the path's steps (each stage's problem copied only where the path differs).
+    let refined = path.ends.len() != path.schedule.steps().len();
+    let stages = if refined { path.stages(&stages) } else { stages };
+    let schedule = path.schedule.clone();
     // Each step's summary row is made as the step is solved; of the steps before, the rows
     // keep only what the next step needs.
     let mut rows = SummaryRows::new(&built, &fixed, scene.every_profile).about(scene.moment_centre).with_points(points);
@@ -527,8 +531,8 @@ fn solve_generic_from(
         clock,
     };
     let mut report = summarise(input, rows).map_err(contact_error)?;
-    estimate_path_error(scene, &run, &fixed, &mut report);
-    keep_user_steps(&path, adaptive_note, &mut report);
+    estimate_path_error(scene, &run, &fixed, plan.errors, &mut report);
+    keep_user_steps(&path, plan.note, &mut report);
     report.time_s.total = clock.elapsed().as_secs_f64();
     let built = last_built.unwrap_or(built);
     Ok(GenericOutcome { scene: scene.clone(), built, history, report })

@@ -5,8 +5,8 @@
 //! its end load in one go, so the answer depends on the step size, to first order (the slip
 //! direction and the stick/slip states are taken at the step's end for the whole step). The
 //! estimate solves the whole run again with every step split in two (each pattern's factor
-//! halfway along the step's straight path; staged supports and cycles follow, a stage of steps
-//! `a..b` becoming `2a..2b`) and compares the two at the user's steps. For a first-order path
+//! halfway along the step's straight path, [`super::adaptive::Refined::split`]; staged supports
+//! and cycles follow, a stage of steps `a..b` becoming `2a..2b`) and compares the two at the user's steps. For a first-order path
 //! the error of the user's steps is twice their difference from the halved path (Richardson):
 //!
 //! ```text
@@ -29,9 +29,6 @@
 //! self-similar).
 
 use std::collections::BTreeMap;
-use std::ops::Range;
-
-use contact2d_contact::{ContactError, LoadSchedule, Stage};
 
 use super::results::StepResult;
 
@@ -63,28 +60,6 @@ impl PathPoint {
             work: row.work,
         }
     }
-}
-
-/// `schedule` with every step split in two at the middle of its straight path (the first from
-/// zero factors).
-///
-/// # Errors
-/// A schedule of more than [`contact2d_contact::loading::MAX_SCHEDULE_STEPS`] steps once halved.
-pub fn halved(schedule: &LoadSchedule) -> Result<LoadSchedule, ContactError> {
-    let mut before = vec![0.0; schedule.patterns().len()];
-    let mut steps = Vec::with_capacity(2 * schedule.steps().len());
-    for step in schedule.steps() {
-        steps.push(before.iter().zip(step).map(|(a, b)| 0.5 * (a + b)).collect());
-        steps.push(step.clone());
-        before.clone_from(step);
-    }
-    LoadSchedule::new(schedule.patterns().to_vec(), steps)
-}
-
-/// The stages of a halved schedule: the stage of steps `a..b` solves `2a..2b`.
-pub fn halved_stages(stages: &[Stage]) -> Vec<Stage> {
-    let double = |r: &Range<usize>| 2 * r.start..2 * r.end;
-    stages.iter().map(|s| Stage { steps: double(&s.steps), built: s.built.clone(), held: s.held.clone() }).collect()
 }
 
 /// Each user step's path error (module docs) from the user's points and the halved path's points
@@ -128,13 +103,6 @@ mod tests {
 
     fn point(n: f64, t: f64, d: f64, w: f64) -> PathPoint {
         PathPoint { forces: BTreeMap::from([("c".to_string(), [n, t, 0.0, 0.0])]), dissipated: d, work: w }
-    }
-
-    #[test]
-    fn halving_splits_each_step_at_the_middle_of_its_straight_path() {
-        let s = LoadSchedule::new(vec!["a".into(), "b".into()], vec![vec![1.0, 0.0], vec![1.0, 2.0]]).unwrap();
-        let h = halved(&s).unwrap();
-        assert_eq!(h.steps(), &[vec![0.5, 0.0], vec![1.0, 0.0], vec![1.0, 1.0], vec![1.0, 2.0]]);
     }
 
     #[test]

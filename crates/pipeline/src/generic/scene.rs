@@ -459,6 +459,17 @@ impl GenericScene {
         {
             return Err(self.fail("loading.adaptive.tolerance", format!("{} must be finite and > 0", a.tolerance)));
         }
+        if self.loading.adaptive.is_some()
+            && self.solver.place_zone_ends == Some(true)
+            && self.solver.algorithm == ContactAlgorithm::Boussinesq
+        {
+            return Err(self.fail(
+                "loading.adaptive",
+                "adaptive stepping does not apply to the Boussinesq algorithm's placed zone ends (each step is solved \
+                 on its own mesh, moved to the zone ends): give the steps, or set solver.place_zone_ends = false"
+                    .into(),
+            ));
+        }
         for (i, b) in self.body.iter().enumerate() {
             if !(b.youngs_modulus.is_finite() && b.youngs_modulus > 0.0) {
                 return Err(self.fail(

@@ -43,34 +43,52 @@ pub(super) fn solve_run(
     }
 }
 
+/// Whether some contact of the scene has friction (else its answer does not depend on the path).
+fn frictional(scene: &GenericScene) -> bool {
+    scene.contact.iter().any(|c| c.friction > 0.0)
+}
+
+/// The path the user's steps take ([`plan_path`]): the steps, a note where adaptive stepping
+/// stopped short, and the path error of each of its steps where the last round measured it.
+pub(super) struct Plan {
+    pub path: adaptive::Refined,
+    pub note: Option<String>,
+    pub errors: Option<Vec<f64>>,
+}
+
 /// Fills `report`'s `path_error`, per step and for the run ([`path_error`]): 0 without friction
-/// or for a run solved once and scaled; else the run solved again on the halved path and
-/// compared at the user's steps, with a note above [`path_error::NOTE_ABOVE`]. Not estimated
-/// (`null`, with a note) when the scene turns it off or the halved path does not solve.
+/// or for a run solved once and scaled; else `known` (the errors adaptive stepping measured on
+/// this path) or the run solved again on the halved path and compared at the user's steps, with
+/// a note above [`path_error::NOTE_ABOVE`]. Not estimated (absent, with a note) when the scene
+/// turns it off or the halved path does not solve.
 pub(super) fn estimate_path_error(
     scene: &GenericScene,
     run: &Run<'_>,
     fixed: &[FixedGroup],
+    known: Option<Vec<f64>>,
     report: &mut GenericReport,
 ) {
     if !scene.loading.path_error {
         return;
     }
-    let frictional = scene.contact.iter().any(|c| c.friction > 0.0);
-    if !frictional || report.scaled {
+    if !frictional(scene) || report.scaled {
         report.path_error = Some(0.0);
         report.steps.iter_mut().for_each(|s| s.path_error = Some(0.0));
         return;
     }
-    let fine = match halved_points(run, fixed) {
-        Ok(fine) => fine,
-        Err(e) => {
-            report.notes.push(format!("path_error: not estimated, the path of half the step did not solve: {e}"));
-            return;
-        }
+    let errors = match known {
+        Some(errors) => errors,
+        None => match halved_points(run, fixed) {
+            Ok(fine) => {
+                let coarse: Vec<path_error::PathPoint> = report.steps.iter().map(path_error::PathPoint::of).collect();
+                path_error::step_errors(&coarse, &fine)
+            }
+            Err(e) => {
+                report.notes.push(format!("path_error: not estimated, the path of half the step did not solve: {e}"));
+                return;
+            }
+        },
     };
-    let coarse: Vec<path_error::PathPoint> = report.steps.iter().map(path_error::PathPoint::of).collect();
-    let errors = path_error::step_errors(&coarse, &fine);
     for (row, e) in report.steps.iter_mut().zip(&errors) {
         row.path_error = Some(*e);
     }
@@ -90,27 +108,22 @@ pub(super) fn estimate_path_error(
 /// The path of the user's steps: refined by adaptive stepping where the scene asks for it and
 /// friction makes the answer depend on the path ([`adaptive`]), else the user's own; with a note
 /// when the refinement stopped before the tolerance.
-pub(super) fn plan_path(
-    scene: &GenericScene,
-    run: &Run<'_>,
-    fixed: &[FixedGroup],
-) -> Result<(adaptive::Refined, Option<String>), ContactError> {
+pub(super) fn plan_path(scene: &GenericScene, run: &Run<'_>, fixed: &[FixedGroup]) -> Result<Plan, ContactError> {
     let mut path = adaptive::Refined::of(run.schedule);
-    let Some(key) = scene.loading.adaptive else { return Ok((path, None)) };
-    if !scene.contact.iter().any(|c| c.friction > 0.0) {
-        return Ok((path, None));
-    }
+    let stop = |path, note: String, errors| Ok(Plan { path, note: Some(note), errors });
+    let Some(key) = scene.loading.adaptive.filter(|_| frictional(scene)) else {
+        return Ok(Plan { path, note: None, errors: None });
+    };
     for _ in 0..adaptive::MAX_ROUNDS {
         let stages = path.stages(run.stages);
         let current = Run { schedule: &path.schedule, stages: &stages, ..*run };
         let coarse = run_points(&current, fixed, &|_| true)?;
         let errors = path_error::step_errors(&coarse, &halved_points(&current, fixed)?);
         if errors.len() < path.schedule.steps().len() {
-            let note = "adaptive stepping stopped refining: a step of its path did not converge".to_string();
-            return Ok((path, Some(note)));
+            return stop(path, "adaptive stepping stopped refining: a step of its path did not converge".into(), None);
         }
         match adaptive::next(&path, &errors, key.tolerance)? {
-            None => return Ok((path, None)),
+            None => return Ok(Plan { path, note: None, errors: Some(errors) }),
             Some(next) if next.schedule.steps().len() > adaptive::MAX_STEPS => {
                 let note = format!(
                     "adaptive stepping stopped refining at {} steps: the tolerance {:e} needs more than {} steps",
@@ -118,7 +131,7 @@ pub(super) fn plan_path(
                     key.tolerance,
                     adaptive::MAX_STEPS
                 );
-                return Ok((path, Some(note)));
+                return stop(path, note, Some(errors));
             }
             Some(next) => path = next,
         }
@@ -129,7 +142,7 @@ pub(super) fn plan_path(
         path.schedule.steps().len(),
         key.tolerance
     );
-    Ok((path, Some(note)))
+    stop(path, note, None)
 }
 
 /// The step table at the user's steps only (adaptive stepping): each row the state at the end of
@@ -185,9 +198,10 @@ fn run_points(
     failed.map_or(Ok(points), Err)
 }
 
-/// The run on the halved path ([`path_error::halved`]), its points at the end of each user step.
+/// The run on the halved path (every step split at its middle, [`adaptive::Refined::split`]),
+/// its points at the end of each of the run's steps.
 fn halved_points(run: &Run<'_>, fixed: &[FixedGroup]) -> Result<Vec<path_error::PathPoint>, ContactError> {
-    let schedule = path_error::halved(run.schedule)?;
-    let stages = path_error::halved_stages(run.stages);
-    run_points(&Run { schedule: &schedule, stages: &stages, ..*run }, fixed, &|i| i % 2 == 1)
+    let halved = adaptive::Refined::of(run.schedule).split(&vec![true; run.schedule.steps().len()])?;
+    let stages = halved.stages(run.stages);
+    run_points(&Run { schedule: &halved.schedule, stages: &stages, ..*run }, fixed, &|i| i % 2 == 1)
 }
