@@ -6,9 +6,14 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
+step() { echo "== [test.sh: $((SECONDS / 60)) min $((SECONDS % 60)) s] $1"; }
+step "cargo test --workspace --release"
 cargo test --workspace --release
+step "the CLI binary, Python's packages, the wheel"
 # The CLI binary the Python tests compare with.
 cargo build --release --bin contact2d
 python3 -m pip install --quiet --disable-pip-version-check maturin numpy pandas pytest meshio 'dask[distributed]' nbclient nbformat ipykernel matplotlib
 CARGO_TARGET_DIR="$PWD/target" python3 -m pip install --quiet --disable-pip-version-check ./python
-python3 -m pytest python/tests -q
+step "pytest"
+python3 -m pytest python/tests -q --durations=15
+step "done"
