@@ -22,7 +22,7 @@
 //! * the estimate of 4 fixed steps is the error they make against the converged path within a
 //!   factor 3 either way (an estimate, by one halving, of a first-order error that is not yet
 //!   clean: the stick/slip states change by whole pairs);
-//! * adaptive stepping at tolerance 1e-3 from 1 and from 4 user steps: the user's steps are
+//! * adaptive stepping at tolerance 1e-3 from 1, 4 and 40 user steps: the user's steps are
 //!   the output points, and the answer is the converged path's within the tolerance's
 //!   promise — the stick length to one pair (same last sticking pair), the resultant within
 //!   1e-3 of the largest contact force (1,058 N) plus the 400 steps' own error (≤ 0.1 N);
@@ -68,8 +68,8 @@ fn the_estimate_and_adaptive_stepping_against_the_converged_path() {
     assert!(estimate > actual / 3.0 && estimate < 3.0 * actual, "estimate {estimate:e}, actual {actual:e}");
     assert_eq!(four.steps.len(), 4);
 
-    // Adaptive from 1 and 4 user steps.
-    for user in ["1", "4"] {
+    // Adaptive from 1, 4 and 40 user steps.
+    for user in ["1", "4", "40"] {
         let r = run(PIN_LUG, &[&format!("loading.steps={user}"), "loading.adaptive.tolerance=1e-3"]);
         assert_eq!(r.status, "converged");
         let n: usize = user.parse().unwrap();

@@ -4,9 +4,12 @@
 //!
 //! ```text
 //! P_0 = the user's steps
-//! round r: solve P_r and its halved path; e_j = path error of step j of P_r
-//!          every step with e_j > tol is split at the middle of its straight path → P_{r+1}
-//! stop when max_j e_j ≤ tol, or at MAX_ROUNDS rounds / MAX_STEPS steps (a note says so)
+//! round r: solve P_r and its halved path; e_j = path error of step j of P_r,
+//!          c_j = what step j adds to it (the change of the two paths' difference over the step)
+//! stop when max_j e_j ≤ tol (or at MAX_ROUNDS rounds / MAX_STEPS steps: a note says so);
+//! else every step with e_j > tol or c_j > tol / n (n steps in P_r) is split at the middle of
+//!          its straight path → P_{r+1}
+//! answer: P_r with every step halved (the finer of the two paths compared)
 //! ```
 //! A step is never merged across a user's step (those are the output points). Where the estimate
 //! is zero nothing is split: a frictionless run is path-independent and solved at the user's steps
@@ -91,15 +94,25 @@ pub fn user_step_of(ends: &[usize], j: usize) -> (usize, bool) {
     (i, ends.get(i) == Some(&j))
 }
 
-/// The next path: every step whose error exceeds `tolerance` split; `None` when none does.
+/// The next path: `None` when no step's path error exceeds `tolerance`; else split every step
+/// whose error exceeds it and every step that adds more than `tolerance / n` to the error
+/// (`contributions`, [`super::path_error::step_contributions`]; `n` steps). A step's error is at
+/// most the sum of the contributions up to it: the second rule splits the steps where the error
+/// arises, the first those where it shows (the stick/slip state of a step's end).
 ///
 /// # Errors
 /// As [`Refined::split`].
-pub fn next(path: &Refined, errors: &[f64], tolerance: f64) -> Result<Option<Refined>, ContactError> {
-    let split: Vec<bool> = errors.iter().map(|e| *e > tolerance).collect();
-    if !split.iter().any(|s| *s) {
+pub fn next(
+    path: &Refined,
+    errors: &[f64],
+    contributions: &[f64],
+    tolerance: f64,
+) -> Result<Option<Refined>, ContactError> {
+    if errors.iter().all(|e| *e <= tolerance) {
         return Ok(None);
     }
+    let share = tolerance / contributions.len().max(1) as f64;
+    let split: Vec<bool> = errors.iter().zip(contributions).map(|(e, c)| *e > tolerance || *c > share).collect();
     path.split(&split).map(Some)
 }
 
@@ -127,8 +140,9 @@ mod tests {
 
     #[test]
     fn nothing_is_split_below_the_tolerance() {
-        assert_eq!(next(&path(), &[1e-4, 0.0, 5e-4], 1e-3).unwrap(), None);
-        let p = next(&path(), &[1e-4, 2e-3, 5e-4], 1e-3).unwrap().unwrap();
-        assert_eq!(p.schedule.steps().len(), 4);
+        assert_eq!(next(&path(), &[1e-4, 0.0, 5e-4], &[1e-4, 1e-4, 5e-4], 1e-3).unwrap(), None);
+        // The error shows at the last step (split) but arises in the first (split too).
+        let p = next(&path(), &[5e-4, 5e-4, 2e-3], &[1.5e-3, 0.0, 5e-4], 1e-3).unwrap().unwrap();
+        assert_eq!(p.schedule.steps(), &[vec![0.5], vec![1.0], vec![2.0], vec![3.0], vec![4.0]]);
     }
 }

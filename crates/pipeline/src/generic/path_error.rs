@@ -66,6 +66,19 @@ impl PathPoint {
 /// at the same loads (`fine[i]` at the end of user step `i`); steps beyond the shorter of the two
 /// (a run that stopped) get none.
 pub fn step_errors(coarse: &[PathPoint], fine: &[PathPoint]) -> Vec<f64> {
+    measured(coarse, fine, false)
+}
+
+/// What each step adds to the path error: the same measure (module docs) of the change of the
+/// difference `d_i = f_i − f'_i` over the step, `2 ‖d_i − d_(i−1)‖ / S` (`d_(−1) = 0`). The path
+/// error of a step is at most the sum of these up to it, so the steps that add the most are the
+/// ones to refine (adaptive stepping), wherever their error shows.
+pub fn step_contributions(coarse: &[PathPoint], fine: &[PathPoint]) -> Vec<f64> {
+    measured(coarse, fine, true)
+}
+
+/// [`step_errors`] (`over_step` false) or [`step_contributions`] (true).
+fn measured(coarse: &[PathPoint], fine: &[PathPoint], over_step: bool) -> Vec<f64> {
     let n = coarse.len().min(fine.len());
     let (coarse, fine) = (&coarse[..n], &fine[..n]);
     let mut largest: BTreeMap<&str, f64> = BTreeMap::new();
@@ -74,22 +87,30 @@ pub fn step_errors(coarse: &[PathPoint], fine: &[PathPoint]) -> Vec<f64> {
         *scale = scale.max(normal.hypot(*tangential)).max(f1.hypot(*f2));
     }
     let work = fine.iter().map(|f| f.work.abs()).fold(0.0, f64::max);
-    coarse
-        .iter()
-        .zip(fine)
-        .map(|(c, f)| {
+    let difference = |i: usize, name: &str| -> Option<[f64; 4]> {
+        let (c, f) = (coarse[i].forces.get(name)?, fine[i].forces.get(name)?);
+        Some([c[0] - f[0], c[1] - f[1], c[2] - f[2], c[3] - f[3]])
+    };
+    let dissipation = |i: usize| coarse[i].dissipated - fine[i].dissipated;
+    (0..n)
+        .map(|i| {
             let mut e: f64 = 0.0;
-            for (name, f_forces) in &f.forces {
-                let (Some(c_forces), Some(&scale)) = (c.forces.get(name), largest.get(name.as_str())) else {
+            for name in fine[i].forces.keys() {
+                let (Some(d), Some(&scale)) = (difference(i, name), largest.get(name.as_str())) else {
                     continue;
                 };
+                let d0 = match over_step && i > 0 {
+                    true => difference(i - 1, name).unwrap_or([0.0; 4]),
+                    false => [0.0; 4],
+                };
                 if scale > 0.0 {
-                    let change = c_forces.iter().zip(f_forces).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+                    let change = d.iter().zip(d0).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
                     e = e.max(2.0 * change / scale);
                 }
             }
             if work > 0.0 {
-                e = e.max(2.0 * (c.dissipated - f.dissipated).abs() / work);
+                let d0 = if over_step && i > 0 { dissipation(i - 1) } else { 0.0 };
+                e = e.max(2.0 * (dissipation(i) - d0).abs() / work);
             }
             e
         })
@@ -123,5 +144,16 @@ mod tests {
         let fine = vec![point(10.0, 0.0, 0.0, 1.0), point(0.0, 0.0, 0.0, 1.0)];
         let coarse = vec![point(10.0, 0.0, 0.0, 1.0), point(0.1, 0.0, 0.0, 1.0)];
         assert!((step_errors(&coarse, &fine)[1] - 0.02).abs() < 1e-15);
+    }
+
+    #[test]
+    fn a_step_contributes_the_change_of_the_difference_over_it() {
+        // Differences 0.1 then 0.1 again in the normal force: the first step adds 2 · 0.1 / 20,
+        // the second nothing, while both steps' path errors are 2 · 0.1 / 20.
+        let fine = vec![point(10.0, 0.0, 0.0, 1.0), point(20.0, 0.0, 0.0, 1.0)];
+        let coarse = vec![point(10.1, 0.0, 0.0, 1.0), point(20.1, 0.0, 0.0, 1.0)];
+        let added = step_contributions(&coarse, &fine);
+        assert!((added[0] - 0.01).abs() < 1e-15 && added[1].abs() < 1e-15);
+        assert!(step_errors(&coarse, &fine).iter().all(|e| (e - 0.01).abs() < 1e-15));
     }
 }

@@ -118,12 +118,14 @@ pub(super) fn plan_path(scene: &GenericScene, run: &Run<'_>, fixed: &[FixedGroup
         let stages = path.stages(run.stages);
         let current = Run { schedule: &path.schedule, stages: &stages, ..*run };
         let coarse = run_points(&current, fixed, &|_| true)?;
-        let errors = path_error::step_errors(&coarse, &halved_points(&current, fixed)?);
+        let fine = halved_points(&current, fixed)?;
+        let errors = path_error::step_errors(&coarse, &fine);
         if errors.len() < path.schedule.steps().len() {
             return stop(path, "adaptive stepping stopped refining: a step of its path did not converge".into(), None);
         }
-        match adaptive::next(&path, &errors, key.tolerance)? {
-            None => return Ok(Plan { path, note: None, errors: Some(errors) }),
+        let contributions = path_error::step_contributions(&coarse, &fine);
+        match adaptive::next(&path, &errors, &contributions, key.tolerance)? {
+            None => return answered_finer(&path, None, errors),
             Some(next) if next.schedule.steps().len() > adaptive::MAX_STEPS => {
                 let note = format!(
                     "adaptive stepping stopped refining at {} steps: the tolerance {:e} needs more than {} steps",
@@ -131,7 +133,7 @@ pub(super) fn plan_path(scene: &GenericScene, run: &Run<'_>, fixed: &[FixedGroup
                     key.tolerance,
                     adaptive::MAX_STEPS
                 );
-                return stop(path, note, Some(errors));
+                return answered_finer(&path, Some(note), errors);
             }
             Some(next) => path = next,
         }
@@ -143,6 +145,16 @@ pub(super) fn plan_path(scene: &GenericScene, run: &Run<'_>, fixed: &[FixedGroup
         key.tolerance
     );
     stop(path, note, None)
+}
+
+/// The plan that answers on `path` with every step halved: the finer of the two paths whose
+/// difference gave `errors` (local extrapolation, as step doubling takes its two half steps). Each
+/// half step carries its step's error: under first-order convergence the finer path's own error is
+/// about half of it, so the reported error bounds it.
+fn answered_finer(path: &adaptive::Refined, note: Option<String>, errors: Vec<f64>) -> Result<Plan, ContactError> {
+    let finer = path.split(&vec![true; path.schedule.steps().len()])?;
+    let errors = errors.iter().flat_map(|e| [*e, *e]).collect();
+    Ok(Plan { path: finer, note, errors: Some(errors) })
 }
 
 /// The step table at the user's steps only (adaptive stepping): each row the state at the end of
@@ -172,8 +184,8 @@ pub(super) fn keep_user_steps(path: &adaptive::Refined, note: Option<String>, re
     }
     report.steps_taken = Some(path.schedule.steps().len());
     report.notes.push(format!(
-        "adaptive stepping: {} steps for the user's {} (`steps[i].substeps`), each step's path_error within the \
-         tolerance",
+        "adaptive stepping: {} steps for the user's {} (`steps[i].substeps`): the path whose path_error is within \
+         the tolerance, every step of it halved",
         path.schedule.steps().len(),
         path.ends.len()
     ));
