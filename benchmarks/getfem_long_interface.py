@@ -23,7 +23,7 @@ pressed top's reaction, K u summed over its vertical DOFs), the contact length (
 x of the multiplier's nodes with a non-zero normal value) and wall times of the phases.
 
 Usage: /usr/bin/python3 benchmarks/getfem_long_interface.py mesh.msh [mu]   (mu = 0.3 by default;
-       the reference values of tests/against_getfem.rs come from mu = 0, 0.1 and 0.3)
+       the reference values of tests/behaviour/against_getfem.rs come from mu = 0, 0.1 and 0.3)
 
 Measured: docs/benchmarks.md, "GetFEM side by side". Not used, and why: GetFEM's nodal contact
 brick (add_nodal_contact_between_nonmatching_meshes_brick) on one mesh started from a singular

@@ -2,7 +2,7 @@
 the same numbers as the CLI (one code path), and the adaptive answer of the pin in the lug from
 one user step within its tolerance's promise of the converged path (400 equal steps): the
 resultant within 1e-3 of the largest contact force plus the 400 steps' own error (0.1 N), as
-tests/verify_path_error.rs states."""
+tests/verification/verify_path_error.rs states."""
 
 from __future__ import annotations
 

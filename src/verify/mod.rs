@@ -8,7 +8,7 @@
 //! absolute tolerance);  PASS ⇔ e ≤ tolerance
 //! ```
 //!
-//! The tests in `tests/verify_*.rs` call these same functions and assert that every check
+//! The tests in `tests/verification/verify_*.rs` call these same functions and assert that every check
 //! passes, so the table `contact2d verify` prints and `docs/verification.md` shows is the one the
 //! tests check. Each case documents its source, its closed form and why its tolerance is what it
 //! is.

@@ -24,7 +24,7 @@
 //!
 //! The active sets and the Boussinesq iteration end at round-off (residuals ~1e-16); Clarabel
 //! ends at its interior-point tolerance, which leaves residuals up to 1.3e-6 on sound answers
-//! (`tests/verify_boussinesq_agrees.rs`) and 9e-3 to 1.3e-2 on the wrong ones of issue 15
+//! (`tests/verification/verify_boussinesq_agrees.rs`) and 9e-3 to 1.3e-2 on the wrong ones of issue 15
 //! (clearances 1e3 and 1e6, P 1.7 % and 100-fold off). 1e-4 lies in the geometric middle, two
 //! orders from either.
 

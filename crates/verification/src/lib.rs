@@ -1,7 +1,7 @@
 //! Verification of the plane-elasticity layer against closed forms and published values.
 //!
 //! The functions here build a model, solve it and measure it; they return numbers and never
-//! assert or print. The verification tests (`tests/verify_*.rs`) assert on them and
+//! assert or print. The verification tests (`tests/verification/verify_*.rs`) assert on them and
 //! `examples/verification_tables.rs` turns the same numbers into the tables of
 //! `docs/verification.md`, so what the documentation shows is what the tests check.
 //!

@@ -167,7 +167,7 @@ mod tests {
 
     /// The L1 solve's contact half-width lies within 10 % of the closed form's a (the coarse
     /// mesh resolves a to about one element of the contact zone; L3 is within 1 %, see
-    /// tests/verify_nafems_hertz.rs); a bad force is a typed error.
+    /// tests/verification/verify_nafems_hertz.rs); a bad force is a typed error.
     #[test]
     fn coarse_mesh_half_width_near_the_closed_form() {
         let view = solve_hertz(&HertzParams { force: 35_000.0, level: "L1".into() }).unwrap();

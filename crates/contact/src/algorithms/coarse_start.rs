@@ -4,12 +4,12 @@
 //! From every pair in contact and sticking, the active set moves a contact zone's edge by about
 //! one pair per iteration where the zone must open far: the tension of the bonded start
 //! concentrates at the edge of the bonded part, so each solve opens the next pair only. A
-//! frictionless press through a tilted gap (Q4 blocks, `tests/sparse_path.rs`) took 11, 21, 39
+//! frictionless press through a tilted gap (Q4 blocks, `tests/integration/sparse_path.rs`) took 11, 21, 39
 //! and 75 iterations at 126, 251, 501 and 1,001 pairs, and stopped at the limit of 100 at 2,001
 //! pairs, a refined mesh failing where a coarse one converges. The same walk moves stick–slip
 //! fronts: pressed and slid by 0.2 of the press with μ = 0.3, the same blocks took 20, 40, 61
 //! and 93 iterations (condensed path) and the sparse path stopped at the limit from 501 pairs.
-//! It moves them from a guess as well: a block held only by contact (`tests/sparse_path.rs`),
+//! It moves them from a guess as well: a block held only by contact (`tests/integration/sparse_path.rs`),
 //! slid after its press, starts each step from the last one's states, and each Newton step on
 //! its rigid motion (`floating.rs`) starts the next solve from the states before it; at 1,001
 //! pairs a slide step walked its stick–slip fronts by a pair every other iteration and stopped at

@@ -18,11 +18,11 @@
 //! pairs flipping at each of 38 iterations, pressed and slid with μ = 0.3; on a block held only
 //! by contact, 996 of 1,001 pairs flipping while a few others changed, so that the whole state
 //! never repeated). Only a pair's own cycle is broken so: applied at every reversal, the rule
-//! itself cycled the plain iteration on the floating pad of `tests/stick_continuation.rs`. A
+//! itself cycled the plain iteration on the floating pad of `tests/behaviour/stick_continuation.rs`. A
 //! state that settles satisfies the same conditions either way.
 //!
 //! Longer cycles pass through stick without reversing: on a block held only by contact at 1,001
-//! pairs (`tests/sparse_path.rs`), eleven pairs slipping the wrong way stuck, six of them slipped
+//! pairs (`tests/integration/sparse_path.rs`), eleven pairs slipping the wrong way stuck, six of them slipped
 //! again, and the state came back every seven iterations until the limit. An update back to a
 //! visited state then changes one pair only, the lowest-numbered whose change leads somewhere
 //! new; the next update is a whole one again. It borrows the idea of Murty's least-index method

@@ -16,7 +16,7 @@
 //! pairs (the same constants up to round-off, so the same iterates) and over 8 pairs evenly
 //! spread beyond (an estimate of the same mean; `c` sets the path of the iteration, not its
 //! fixed point). A state that repeats
-//! is the solution on either path, and the answers agree to round-off (`tests/sparse_path.rs`).
+//! is the solution on either path, and the answers agree to round-off (`tests/integration/sparse_path.rs`).
 
 use web_time::Instant;
 

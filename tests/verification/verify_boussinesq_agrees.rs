@@ -19,7 +19,7 @@
 //! only to its accuracy on degenerate pairs: its objective tolerance 1e-10 on data of scale
 //! s = 2 (the largest gap) bounds displacement errors by s √1e-10 = 2e-5, about 7e-5 of the
 //! displacements here; asserted at 1e-4 relative (the 1e-6 holds at non-degenerate
-//! loads: tests/verify_solodovnikov_gap_friction.rs).
+//! loads: tests/verification/verify_solodovnikov_gap_friction.rs).
 //! Zones identical except at l* itself, where the Boussinesq condition puts λ = 0 and gap = 0
 //! (a pair exactly at the contact end is in either state).
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]

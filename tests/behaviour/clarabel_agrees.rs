@@ -22,7 +22,7 @@
 //! active set on the development machine; the whole test about 30 s (release).
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod common;
+use crate::common;
 
 use contact2d::generic::{GenericError, GenericReport, load_scene, solve_generic};
 

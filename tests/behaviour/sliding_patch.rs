@@ -22,7 +22,7 @@
 //! the per-step energy balance (1e-10 measured: sums over ~400 DOFs of values of order one).
 //! Against a rigid flat the block's rows do not depend on where its nodes land on the base's
 //! segments, so the non-matching mesh gives the same numbers (measured: the same, no jump as
-//! nodes cross segment ends); the elastic-base case is crates/contact/tests/finite_sliding.rs.
+//! nodes cross segment ends); the elastic-base case is crates/contact/tests/integration/finite_sliding.rs.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use std::path::Path;

@@ -16,8 +16,7 @@ use contact2d_contact::{ContactStatus, Interface, PairState, solve_frictionless_
 use contact2d_mesh::CellKind;
 use proptest::prelude::*;
 
-#[path = "fixtures/two_blocks.rs"]
-mod fixture;
+use crate::fixture;
 use fixture::two_blocks;
 
 proptest! {

@@ -16,7 +16,7 @@ const PATH: &str = "scenes/mutated.toml";
 fn scenes() -> &'static [String] {
     static SCENES: OnceLock<Vec<String>> = OnceLock::new();
     SCENES.get_or_init(|| {
-        // The flagship's scenes (scenes/generic/ holds the generic ones: tests/generic_scenes.rs).
+        // The flagship's scenes (scenes/generic/ holds the generic ones: tests/behaviour/generic_scenes.rs).
         let mut paths: Vec<_> =
             std::fs::read_dir("scenes").unwrap().map(|e| e.unwrap().path()).filter(|p| p.is_file()).collect();
         paths.sort();

@@ -31,7 +31,7 @@
 //!   (it is part of it), on every bundled generic scene.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod common;
+use crate::common;
 use common::bundled_scenes;
 
 use std::path::Path;

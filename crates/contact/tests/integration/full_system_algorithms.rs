@@ -23,8 +23,7 @@ use contact2d_contact::{
 };
 use contact2d_mesh::CellKind;
 
-#[path = "fixtures/two_blocks.rs"]
-mod fixture;
+use crate::fixture;
 use fixture::{two_blocks, two_blocks_sliding};
 
 /// `max |a − b|` over the normal and tangential forces, relative to the largest force of `b`.

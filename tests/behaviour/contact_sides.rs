@@ -147,7 +147,7 @@ fn declared_self_contact_across_a_block_is_open() {
     // The upper block's top (y = 2) faces its own bottom (y = 1) through the block: every pair
     // is open, its gap the height 1 (round-off 1e-12), and carries no force, so the joint keeps
     // its values: Σλ = P = 1000 (equilibrium of the floating block) and |Στ| = μ P = 300
-    // (Coulomb), to the floating tolerance 1e-8 as in tests/generic_scenes.rs.
+    // (Coulomb), to the floating tolerance 1e-8 as in tests/behaviour/generic_scenes.rs.
     let path = "scenes/generic/two_blocks_press_slide.toml";
     for pairing in ["node_to_segment", "segment_to_segment"] {
         let extra = format!("{SELF_CONTACT}self_contact = true\npairing = \"{pairing}\"\n");

@@ -42,7 +42,7 @@
 //! floating block's equilibrium is iterated to 1e-10 of the force scale.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-mod common;
+use crate::common;
 use common::bundled_scenes;
 
 use std::path::Path;

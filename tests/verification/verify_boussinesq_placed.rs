@@ -19,7 +19,7 @@
 //! so the active set agrees to round-off (1e-9 relative asserted). A placed solution is
 //! degenerate by construction at its two placed pairs (λ = gap = 0 at l*, |τ| = μλ with no slip
 //! at b*), which the active set may class either way, so states are compared everywhere else;
-//! Clarabel resolves such degenerate pairs only to about s √tol (tests/verify_boussinesq_agrees.rs
+//! Clarabel resolves such degenerate pairs only to about s √tol (tests/verification/verify_boussinesq_agrees.rs
 //! derives 7e-5 of the displacements), asserted at 1e-4. Published values (spec §7): forces and
 //! energies within 1 %, l within 0.005 on the hole-edge angle; b within 0.01 for Table 2 (its
 //! published b depends on the load steps, spec §7 caution) and 0.005 for the no-gap row.

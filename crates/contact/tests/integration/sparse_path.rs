@@ -30,8 +30,7 @@ use contact2d_fem::Component;
 use contact2d_mesh::generate::{append_prefixed, rectangle};
 use contact2d_mesh::{CellKind, Mesh};
 
-#[path = "fixtures/two_blocks.rs"]
-mod fixture;
+use crate::fixture;
 use fixture::{two_blocks, two_blocks_sliding};
 
 /// Solves `schedule` on `problem` with the active set on both paths.

@@ -122,7 +122,7 @@ fn the_pairing_used_is_recorded_and_is_what_ran() {
 /// The recorded linear path is the one that ran: the pin in the lug (a few dozen pairs) takes the
 /// condensed path, and forcing the sparse one is recorded and gives the same resultant to 1e-9 of
 /// its size (both paths end in the same contact states and solve them to round-off,
-/// `crates/contact/tests/sparse_path.rs` checks 1e-10 per field; 1e-9 leaves room for the
+/// `crates/contact/tests/integration/sparse_path.rs` checks 1e-10 per field; 1e-9 leaves room for the
 /// floating pin's proximal iteration, stopped at its default 1e-10).
 #[test]
 fn the_linear_path_used_is_recorded_and_is_what_ran() {

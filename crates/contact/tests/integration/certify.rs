@@ -19,8 +19,7 @@ use contact2d_contact::{
 };
 use contact2d_mesh::CellKind;
 
-#[path = "fixtures/two_blocks.rs"]
-mod fixture;
+use crate::fixture;
 use fixture::two_blocks;
 
 #[test]

@@ -28,7 +28,7 @@
 //! and with friction the same tangential force.
 //!
 //! Tolerances: 1e-9 of the load for the balances (a direct solve's round-off, as in
-//! `tests/corners_and_quadratic_edges.rs`); 1e-8 relative for the symmetry (the mirrored
+//! `tests/behaviour/corners_and_quadratic_edges.rs`); 1e-8 relative for the symmetry (the mirrored
 //! meshes number their nodes differently, so round-off differs between the two sides).
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 

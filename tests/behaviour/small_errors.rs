@@ -13,7 +13,7 @@
 //! shared nodes   two bodies sharing mesh nodes: a note naming both and the node count
 //! interference   an initial interference deeper than the elements: a note naming the contact
 //! ```
-//! (The cleanup that removes only what the folder's record lists is in tests/output_folders.rs,
+//! (The cleanup that removes only what the folder's record lists is in tests/behaviour/output_folders.rs,
 //! `a_shorter_run_removes_the_stale_files_and_keeps_the_users`.)
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 

@@ -18,7 +18,7 @@
 //! Independent truths (closed forms, no stored output of ours):
 //! * equilibrium of the slider (held in y by contact alone): the contact's resultant along y
 //!   equals F at every step. Tolerance 1e-8 F: the floating body's iteration stops at a spring
-//!   force of 1e-10 of the force scale (the bound `crates/contact/tests/finite_sliding.rs` keeps).
+//!   force of 1e-10 of the force scale (the bound `crates/contact/tests/integration/finite_sliding.rs` keeps).
 //! * Coulomb in gross sliding: every pair in contact slips, Σ|τ| = μ Σλ, to 1e-6 F (the active
 //!   set's cone is exact to round-off; the bound of the crate's sliding patch test).
 //! * the contact length: the slider's whole bottom, 1 (the slider stays on the base; its trailing
