@@ -1,7 +1,11 @@
 //! Line charts (PNG or SVG, headless) with the bundled font: the one drawing API of the project.
 //!
 //! ```text
-//! line_chart(path, axes, series)   path ".png" → bitmap (1024 × 768), ".svg" → vector
+//! line_chart(path, axes, series)   path ".png" → bitmap (1024 × 768), ".svg" → vector; the
+//!                                  legend inside the plot, in the corner that hides least
+//! line_chart_legend_beside(…)      the same with the legend in a column right of the plot, so
+//!                                  that it covers no point (legend_beside_box)
+//! log axes                         ticks labelled by log_tick_label: 1e-5, 0.001, 2e-4, 100
 //! ```
 //! Axis ranges cover every finite point of every series (positive ones only on a log axis), with a
 //! 5 % margin on linear axes. Non-finite points are skipped, so a series may carry gaps as NaN.
@@ -14,6 +18,7 @@ use std::sync::OnceLock;
 use plotters::coord::Shift;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::OutputError;
 
@@ -121,6 +126,35 @@ pub fn register_bundled_font() -> Result<(), OutputError> {
 /// line_chart(&dir.join("square.svg"), &axes, &[s]).unwrap();
 /// ```
 pub fn line_chart(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), OutputError> {
+    chart_with_legend(path, axes, series, false)
+}
+
+/// [`line_chart`] with the legend in a column right of the plot area ([`legend_beside_box`]),
+/// where it covers no point: for charts whose points fill every corner (work-precision plots).
+///
+/// # Errors
+/// As [`line_chart`].
+pub fn line_chart_legend_beside(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), OutputError> {
+    chart_with_legend(path, axes, series, true)
+}
+
+/// The legend's font size, pixels, and the height of one entry.
+const LEGEND_FONT: u32 = 16;
+const LEGEND_ROW: i32 = 22;
+
+/// The box (x0, y0, x1, y1) of the legend drawn beside the plot for `labels` (their widths in
+/// pixels), in figure pixels: a column at the right edge as wide as the widest label plus the
+/// 40-pixel sample line, at most 40 % of the figure (longer labels are cut with "…"); the plot
+/// takes the rest of the width.
+pub fn legend_beside_box(label_widths: &[u32]) -> (i32, i32, i32, i32) {
+    let (w, h) = (FIGURE_SIZE.0 as i32, FIGURE_SIZE.1 as i32);
+    let widest = label_widths.iter().copied().max().unwrap_or(0) as i32;
+    let width = (widest + 56).min(w * 2 / 5);
+    let height = (LEGEND_ROW * label_widths.len() as i32 + 12).min(h - 80);
+    (w - width - 10, 60, w - 10, 60 + height)
+}
+
+fn chart_with_legend(path: &Path, axes: &Axes, series: &[Series], beside: bool) -> Result<(), OutputError> {
     let format = ImageFormat::from_path(path)?;
     // Names from the scene (titles, legends) may hold control characters, which XML forbids.
     let axes = &Axes {
@@ -149,11 +183,11 @@ pub fn line_chart(path: &Path, axes: &Axes, series: &[Series]) -> Result<(), Out
     let result = match format {
         ImageFormat::Png => {
             let root = BitMapBackend::new(path, FIGURE_SIZE).into_drawing_area();
-            draw_with_scales(&root, axes, series, x_range, y_range)
+            draw_with_scales(&root, axes, series, beside, x_range, y_range)
         }
         ImageFormat::Svg => {
             let root = SVGBackend::new(path, FIGURE_SIZE).into_drawing_area();
-            draw_with_scales(&root, axes, series, x_range, y_range)
+            draw_with_scales(&root, axes, series, beside, x_range, y_range)
         }
     };
     result.map_err(|reason| OutputError::draw(path, reason))
@@ -221,10 +255,12 @@ fn draw_with_scales<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     axes: &Axes,
     series: &[Series],
+    beside: bool,
     (x0, x1): (f64, f64),
     (y0, y1): (f64, f64),
 ) -> Result<(), String> {
-    let corner = legend_corner(series, [(x0, x1, axes.log_x), (y0, y1, axes.log_y)]);
+    // Corner 4: the legend beside the plot.
+    let corner = if beside { 4 } else { legend_corner(series, [(x0, x1, axes.log_x), (y0, y1, axes.log_y)]) };
     match (axes.log_x, axes.log_y) {
         (false, false) => draw_chart(root, axes, series, corner, x0..x1, y0..y1),
         (true, false) => draw_chart(root, axes, series, corner, (x0..x1).log_scale(), y0..y1),
@@ -279,22 +315,36 @@ where
 {
     let err = |e: &dyn std::fmt::Display| e.to_string();
     root.fill(&WHITE).map_err(|e| err(&e))?;
-    let mut chart = ChartBuilder::on(root)
+    let labels: Vec<String> = series.iter().filter(|s| !s.label.is_empty()).map(|s| s.label.clone()).collect();
+    let font: TextStyle = ("sans-serif", LEGEND_FONT).into();
+    let width_of = |t: &str| root.estimate_text_size(t, &font).map_or(0, |(w, _)| w);
+    let legend_box = legend_beside_box(&labels.iter().map(|l| width_of(l)).collect::<Vec<_>>());
+    let plot_area =
+        if corner == 4 && !labels.is_empty() { root.split_horizontally(legend_box.0 - 10).0 } else { root.clone() };
+    // Log axes get round tick labels (the backend's own print 9999999998e-5 for 1e-5).
+    let (x_log, y_log) = (axes.log_x, axes.log_y);
+    let log_format = |v: &f64| log_tick_label(*v);
+    let mut chart = ChartBuilder::on(&plot_area)
         .caption(&axes.title, ("sans-serif", 26))
         .margin(18)
+        .margin_right(28)
         .x_label_area_size(56)
-        .y_label_area_size(84)
+        .y_label_area_size(96)
         .build_cartesian_2d(x_spec, y_spec)
         .map_err(|e| err(&e))?;
-    chart
-        .configure_mesh()
-        .x_desc(axes.x_label.as_str())
+    let mut mesh = chart.configure_mesh();
+    mesh.x_desc(axes.x_label.as_str())
         .y_desc(axes.y_label.as_str())
         .label_style(("sans-serif", 16))
         .axis_desc_style(("sans-serif", 18))
-        .light_line_style(RGBColor(235, 235, 235))
-        .draw()
-        .map_err(|e| err(&e))?;
+        .light_line_style(RGBColor(235, 235, 235));
+    if x_log {
+        mesh.x_label_formatter(&log_format);
+    }
+    if y_log {
+        mesh.y_label_formatter(&log_format);
+    }
+    mesh.draw().map_err(|e| err(&e))?;
     let mut any_label = false;
     for (k, s) in series.iter().enumerate() {
         let colour = PALETTE[k % PALETTE.len()];
@@ -320,7 +370,9 @@ where
                 .map_err(|e| err(&e))?;
         }
     }
-    if any_label {
+    if any_label && corner == 4 {
+        draw_legend_beside(root, series, legend_box, &width_of).map_err(|e| err(&e))?;
+    } else if any_label {
         chart
             .configure_series_labels()
             .background_style(WHITE.mix(0.85))
@@ -336,6 +388,64 @@ where
             .map_err(|e| err(&e))?;
     }
     root.present().map_err(|e| err(&e))
+}
+
+/// Draws the legend in `bounds` (from [`legend_beside_box`]): a framed column, per labelled
+/// series a sample line (with a marker where the series has them) and its label, cut with "…"
+/// to the box.
+fn draw_legend_beside<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    series: &[Series],
+    (x0, y0, x1, y1): (i32, i32, i32, i32),
+    width_of: &dyn Fn(&str) -> u32,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    root.draw(&Rectangle::new([(x0, y0), (x1, y1)], WHITE.filled()))?;
+    root.draw(&Rectangle::new([(x0, y0), (x1, y1)], BLACK.stroke_width(1)))?;
+    let room = (x1 - x0 - 52).max(0) as u32;
+    let mut y = y0 + 6 + LEGEND_ROW / 2;
+    for (k, s) in series.iter().enumerate() {
+        if s.label.is_empty() || y > y1 - LEGEND_ROW / 2 {
+            continue;
+        }
+        let colour = PALETTE[k % PALETTE.len()];
+        root.draw(&PathElement::new(vec![(x0 + 8, y), (x0 + 40, y)], colour.stroke_width(2)))?;
+        if s.markers {
+            root.draw(&Circle::new((x0 + 24, y), 3, colour.filled()))?;
+        }
+        let (mut label, mut chars) = (s.label.clone(), s.label.chars().collect::<Vec<_>>());
+        while width_of(&label) > room && !chars.is_empty() {
+            chars.pop();
+            label = chars.iter().collect::<String>() + "…";
+        }
+        let style = ("sans-serif", LEGEND_FONT).into_font().color(&BLACK).pos(Pos::new(HPos::Left, VPos::Center));
+        root.draw(&Text::new(label, (x0 + 48, y), style))?;
+        y += LEGEND_ROW;
+    }
+    Ok(())
+}
+
+/// The label of a tick on a log axis: the value to three significant digits, as plain decimals
+/// from 0.001 to 99999 and as `<mantissa>e<exponent>` outside (1e-5, 2.5e-7, 1e6); trailing
+/// zeros dropped. The backend's tick values carry round-off (9.999999998e-6), which this removes.
+pub fn log_tick_label(v: f64) -> String {
+    if !v.is_finite() || v == 0.0 {
+        return format!("{v}");
+    }
+    let rounded: f64 = format!("{v:.2e}").parse().unwrap_or(v);
+    let exponent = rounded.abs().log10().floor() as i32;
+    if (-3..=4).contains(&exponent) {
+        let decimals = (2 - exponent).max(0) as usize;
+        trim_zeros(&format!("{rounded:.decimals$}"))
+    } else {
+        let text = format!("{rounded:.2e}");
+        let (mantissa, exp) = text.split_once('e').unwrap_or((&text, "0"));
+        format!("{}e{exp}", trim_zeros(mantissa))
+    }
+}
+
+/// `text` without the trailing zeros of its decimals (and without a trailing point).
+fn trim_zeros(text: &str) -> String {
+    if text.contains('.') { text.trim_end_matches('0').trim_end_matches('.').to_string() } else { text.to_string() }
 }
 
 /// The maximal runs of consecutive finite points (a NaN breaks the line).
@@ -446,6 +556,130 @@ mod tests {
         for points in [vec![(0.0, 1e-149), (1.0, 3e-149)], vec![(0.0, -1e140), (1.0, 1e140)]] {
             let s = Series { label: "s".into(), points, markers: true };
             line_chart(&dir.join("ok.svg"), &axes, &[s]).unwrap();
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn log_ticks_are_round_numbers() {
+        use plotters::coord::ranged1d::Ranged;
+        // The issue's case: the backend's key points on [9.99e-6, 1.2e-3] carry round-off
+        // (9.999999998e-6 printed "9999999998e-5"); each label must read back to its value
+        // within that round-off (1e-9 relative) and have at most three significant digits.
+        for (lo, hi) in [(9.99e-6, 1.2e-3), (0.03, 700.0), (2e-9, 3e-8)] {
+            // With line_chart's margin.
+            let (lo, hi) = axis_range([lo, hi].into_iter(), true);
+            let coord: LogCoord<f64> = (lo..hi).log_scale().into();
+            let ticks = coord.key_points(12);
+            assert!(!ticks.is_empty(), "[{lo}, {hi}]");
+            for v in ticks {
+                let label = log_tick_label(v);
+                let back: f64 = label.parse().unwrap();
+                assert!((back / v - 1.0).abs() < 5e-3, "{v} labelled {label}");
+                let digits: String = label.split('e').next().unwrap().chars().filter(char::is_ascii_digit).collect();
+                assert!(digits.trim_matches('0').len() <= 3, "{v} labelled {label}");
+            }
+        }
+        // Worked values (the expected texts are the definition: three significant digits,
+        // plain from 0.001 to 99999, exponent form outside).
+        let cases = [(9.999999998e-6, "1e-5"), (1e-4, "1e-4"), (0.0010000000002, "0.001"), (2.5e-7, "2.5e-7")];
+        for (v, text) in cases.into_iter().chain([(120.0, "120"), (0.0199999, "0.02"), (1e6, "1e6")]) {
+            assert_eq!(log_tick_label(v), text);
+        }
+    }
+
+    /// The (x, y, text, anchor, font size) of every `<text>` element and the (cx, cy, r) of every `<circle>`
+    /// of an SVG written by this module (attributes in double quotes, as plotters writes them).
+    fn svg_items(svg: &str) -> (Vec<(f64, f64, String, String, f64)>, Vec<(f64, f64, f64)>) {
+        let attr = |tag: &str, name: &str| -> Option<f64> {
+            let start = tag.find(&format!(" {name}=\""))? + name.len() + 3;
+            tag[start..].split('"').next()?.parse().ok()
+        };
+        let (mut texts, mut circles) = (vec![], vec![]);
+        for piece in svg.split('<').skip(1) {
+            let (tag, rest) = piece.split_once('>').unwrap_or((piece, ""));
+            if tag.starts_with("text ") {
+                let anchor = if tag.contains("text-anchor=\"end\"") {
+                    "end"
+                } else if tag.contains("text-anchor=\"middle\"") {
+                    "middle"
+                } else {
+                    "start"
+                };
+                let rotated = tag.contains("rotate(");
+                let kind = if rotated { format!("{anchor} rotated") } else { anchor.to_string() };
+                let size = attr(tag, "font-size").unwrap_or(26.0);
+                texts.push((attr(tag, "x").unwrap(), attr(tag, "y").unwrap(), rest.trim().to_string(), kind, size));
+            } else if tag.starts_with("circle ") {
+                circles.push((attr(tag, "cx").unwrap(), attr(tag, "cy").unwrap(), attr(tag, "r").unwrap()));
+            }
+        }
+        (texts, circles)
+    }
+
+    #[test]
+    fn a_legend_beside_covers_no_point_and_every_text_is_on_the_canvas() {
+        // Twelve series filling the plot's corners on log axes (a work-precision figure: error
+        // from 9.99e-6 to 1.2e-3 against time), with long labels.
+        let dir = temp_dir("beside");
+        let axes = Axes {
+            title: "work-precision: contacts.bore.max_pressure".into(),
+            x_label: "whole-run wall time (s, median)".into(),
+            y_label: "relative error of contacts.bore.max_pressure".into(),
+            log_x: true,
+            log_y: true,
+        };
+        let series: Vec<Series> = (0..12)
+            .map(|k| Series {
+                label: format!("augmented_lagrangian × segment_to_segment {k}"),
+                points: (0..3)
+                    .map(|l| {
+                        (0.05 * 3f64.powi(l) * (1.0 + k as f64), 1.2e-3 * 0.11f64.powi(l) / (1.0 + 0.02 * k as f64))
+                    })
+                    .chain([(9.99e-6 / 1.0001, 9.99e-6)])
+                    .collect(),
+                markers: true,
+            })
+            .collect();
+        let path = dir.join("wp.svg");
+        line_chart_legend_beside(&path, &axes, &series).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        let (texts, circles) = svg_items(&svg);
+        let (w, h) = (FIGURE_SIZE.0 as f64, FIGURE_SIZE.1 as f64);
+        // Text extents: DejaVu Sans averages under 0.62 em per character; the largest font
+        // drawn is 26 px (the title), so a label of n characters spans at most 0.62 · size · n.
+        for (x, y, text, kind, size) in &texts {
+            let width = 0.62 * size * text.chars().count() as f64;
+            let (x0, x1) = match kind.split(' ').next().unwrap() {
+                "end" => (x - width, *x),
+                "middle" => (x - width / 2.0, x + width / 2.0),
+                _ => (*x, x + width),
+            };
+            assert!((0.0..=w).contains(x) && (0.0..=h).contains(y), "{text:?} at ({x}, {y})");
+            if !kind.contains("rotated") && !text.contains("augmented") && !text.contains("work-precision") {
+                // Tick labels and axis names, whose width this bound does not overestimate
+                // into a false alarm: wholly on the canvas.
+                assert!(x0 >= 0.0 && x1 <= w, "{text:?} spans [{x0}, {x1}]");
+            }
+        }
+        // No tick label shows the backend's round-off.
+        assert!(texts.iter().all(|t| !t.2.contains("9999")), "{texts:?}");
+        // The legend box as drawn (legend_beside_box of the labels' widths): its sample
+        // markers sit at x0 + 24; every other marker is a data point and lies outside the box.
+        let probe = dir.join("probe.svg");
+        let (bx0, by0, bx1, by1) = {
+            let font: TextStyle = ("sans-serif", LEGEND_FONT).into();
+            let root = SVGBackend::new(&probe, FIGURE_SIZE).into_drawing_area();
+            let widths: Vec<u32> = series.iter().map(|s| root.estimate_text_size(&s.label, &font).unwrap().0).collect();
+            legend_beside_box(&widths)
+        };
+        let (legend, data): (Vec<_>, Vec<_>) = circles.iter().partition(|c| c.0 == f64::from(bx0 + 24));
+        // 12 series × 4 points, and one sample marker per legend entry.
+        assert_eq!((data.len(), legend.len()), (48, 12), "{circles:?}");
+        assert!(texts.iter().filter(|t| t.2.starts_with("augmented")).all(|t| t.0 > f64::from(bx0)));
+        for (cx, cy, r) in data {
+            let outside = cx + r < bx0 as f64 || cx - r > bx1 as f64 || cy + r < by0 as f64 || cy - r > by1 as f64;
+            assert!(outside, "marker ({cx}, {cy}) under the legend box ({bx0}, {by0})–({bx1}, {by1})");
         }
         std::fs::remove_dir_all(&dir).unwrap();
     }
