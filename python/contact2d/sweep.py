@@ -56,6 +56,34 @@ def quantity(summary: dict[str, Any], path: str) -> float | None:
     return found if found is not None or "paper" not in summary else at(summary["paper"])
 
 
+def last_held_factor(summary: dict[str, Any]) -> float | None:
+    """The load factor a run last held (the column `last_held_factor`, as `contact2d sweep`'s,
+    src/sweep/capacity.rs): the factor of the pattern whose factor changes most in the last step
+    row (ties: the first name) — its final factor for `converged` (1.0 without pattern factors),
+    `not_held.last_held_factors` for `not_held`, the last converged step's for another status
+    (0 when the first step failed); `None` for a case that failed to start."""
+    steps = summary.get("steps") or []
+    last = steps[-1].get("factors") if steps else None
+    status = summary.get("status")
+    if not last:
+        return 1.0 if status == "converged" else None
+    before = (steps[-2].get("factors") or {}) if len(steps) > 1 else {}
+    pattern, change = None, -1.0
+    for name in sorted(last):
+        d = abs(float(last[name]) - float(before.get(name, 0.0)))
+        if d > change:
+            pattern, change = name, d
+    if status == "converged" or steps[-1].get("status") == "converged":
+        return float(last[pattern])
+    if status == "not_held":
+        held = (summary.get("not_held") or {}).get("last_held_factors", {}).get(pattern)
+        return None if held is None else float(held)
+    if len(steps) == 1:
+        return 0.0
+    previous = steps[-2]
+    return float(previous["factors"][pattern]) if previous.get("status") == "converged" else None
+
+
 def run_case(
     payload: tuple[str, str, bytes, str],
     keys: Sequence[str],
@@ -64,7 +92,8 @@ def run_case(
     threads: int | None = None,
 ) -> dict[str, Any]:
     """One case on a worker: the scene text and mesh bytes written to a temporary folder, the
-    varied keys set, solved on `threads` threads (`solve`'s argument); the record holds the varied values, status, columns, iterations and
+    varied keys set, solved on `threads` threads (`solve`'s argument); the record holds the varied values, status,
+    last_held_factor, columns, iterations and
     error (a failed case is a record with status `error`)."""
     text, mesh_name, mesh_bytes, mesh_key = payload
     record: dict[str, Any] = dict(zip(keys, values, strict=True))
@@ -77,9 +106,12 @@ def run_case(
                 scene = scene.set(key, value)
             summary = solve(scene, threads=threads).json
         except _core.Contact2dError as e:
-            record.update({"status": "error", **{c: None for c in columns}, "iterations": None, "error": str(e)})
+            record.update(
+                {"status": "error", "last_held_factor": None, **{c: None for c in columns}, "iterations": None, "error": str(e)}
+            )
             return record
-    record.update({"status": summary["status"], **{c: quantity(summary, c) for c in columns}})
+    record.update({"status": summary["status"], "last_held_factor": last_held_factor(summary)})
+    record.update({c: quantity(summary, c) for c in columns})
     record.update({"iterations": summary["iterations"], "error": ""})
     return record
 
@@ -121,7 +153,7 @@ def sweep(
 ) -> pd.DataFrame:
     """Solve `scene` over the Cartesian product of `vary`'s values ({`--set` path: values}; the
     last key varies fastest, as in `contact2d sweep`) on Dask and return one row per case:
-    the varied values, `status`, the columns (default: those of `contact2d sweep`; any dotted
+    the varied values, `status`, `last_held_factor`, the columns (default: those of `contact2d sweep`; any dotted
     path of the summary), `iterations`, `error` (a failed case is a row with status `error`).
 
     `client=None` starts a `dask.distributed.LocalCluster` on this machine's cores for the call;
@@ -145,7 +177,7 @@ def sweep(
     mesh = Path(scene.mesh_path)
     payload = (scene.to_toml(), mesh.name, mesh.read_bytes(), "plate_insert.mesh" if scene.is_preset else "mesh")
     cols = list(columns) if columns is not None else default_columns(scene)
-    frame_columns = [*keys, "status", *cols, "iterations", "error"]
+    frame_columns = [*keys, "status", "last_held_factor", *cols, "iterations", "error"]
     if out is not None and Path(out).suffix.lower() != ".csv":
         raise ValueError(f"out: {str(out)!r}: rows are written as CSV; give a path ending in .csv")
     cluster = None

@@ -32,7 +32,9 @@ def test_local_cluster_sweep_equals_cli_sweep(tmp_path: Path) -> None:
     )
     assert len(frame) == len(cli_rows) == 6
     columns = ["contacts.bore.normal_force", "contacts.bore.contact_length"]
-    assert list(frame.columns) == ["contact.bore.friction", "load.pin_back.force", "status", *columns, "iterations", "error"]
+    assert list(frame.columns) == [
+        "contact.bore.friction", "load.pin_back.force", "status", "last_held_factor", *columns, "iterations", "error",
+    ]  # fmt: skip
     for (_, row), expected in zip(frame.iterrows(), cli_rows, strict=True):
         assert row["contact.bore.friction"] == expected["contact.bore.friction"]
         assert row["load.pin_back.force"] == expected["load.pin_back.force"]
@@ -40,7 +42,7 @@ def test_local_cluster_sweep_equals_cli_sweep(tmp_path: Path) -> None:
         if expected["status"] == "error":
             assert row["error"] and expected["error"]
             continue
-        for c in columns:
+        for c in [*columns, "last_held_factor"]:
             assert row[c] == float(expected[c]), (c, row[c], expected[c])
         assert row["iterations"] == int(expected["iterations"])
     assert (frame["status"] == "error").sum() == 2
@@ -107,3 +109,27 @@ def test_rows_file_must_be_csv(tmp_path: Path) -> None:
     scene = contact2d.Scene.load(ROOT / "scenes" / "generic" / "pin_lug.toml")
     with pytest.raises(ValueError, match=r"\.csv"):
         contact2d.sweep(scene, {"contact.bore.friction": [0.0]}, out=tmp_path / "rows.parquet")
+
+
+def test_last_held_factor_matches_the_cli_on_a_capacity_sweep(tmp_path: Path) -> None:
+    """The block on the incline pushed past Coulomb's threshold λ* = (tan α + μ)/(1 − μ tan α)
+    in steps of 0.1: the Python column equals the CLI's, and brackets λ* (λ* − 0.1 < factor ≤ λ*)."""
+    path = ROOT / "scenes" / "generic" / "incline_push.toml"
+    pushes = ",".join(f"{{weight=1.0,push={i / 10:.1f}}}" for i in range(1, 9))
+    schedule = f"[{{weight=1.0}},{pushes}]"
+    done = run_cli(
+        "sweep", str(path), "--vary", "contact.incline.friction=0.25,0.45", "--set", f"loading.schedule={schedule}",
+        "--set", "loading.path_error=false", "--out", str(tmp_path / "cli"), "--quiet",
+    )  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    with (tmp_path / "cli" / "sweep.csv").open() as f:
+        cli_rows = list(csv.DictReader(f))
+    steps = [{"weight": 1.0}, *({"weight": 1.0, "push": i / 10} for i in range(1, 9))]
+    scene = contact2d.Scene.load(path).set("loading.schedule", steps).set("loading.path_error", False)
+    frame = contact2d.sweep(scene, vary={"contact.incline.friction": ["0.25", "0.45"]})
+    for (_, row), expected in zip(frame.iterrows(), cli_rows, strict=True):
+        mu = float(expected["contact.incline.friction"])
+        threshold = (0.1 + mu) / (1 - 0.1 * mu)
+        assert row["last_held_factor"] == float(expected["last_held_factor"])
+        # The steps are exact decimals of the input; λ* (0.359, 0.576) is not on a step.
+        assert threshold - 0.1 < row["last_held_factor"] <= threshold, (mu, row["last_held_factor"])

@@ -7,7 +7,8 @@
 //! --vary plate_insert.friction=0,0.1,0.3 --vary plate_insert.stiffness_ratio=0.5,1,2
 //!   → 9 runs: (0, 0.5), (0, 1), (0, 2), (0.1, 0.5), ...   (the last key varies fastest)
 //! --vary contact.bore.friction=0,0.2 --plot contacts.bore.contact_length
-//! columns:  the scene's own (generic: each interface's normal force and contact length; the
+//! columns:  status, last_held_factor (the load factor last held: capacity::last_held_factor),
+//!           the scene's own (generic: each interface's normal force and contact length; the
 //!           paper's case: l, b, P, Phi_E1, Phi_E2, Phi_f, W, sigma_star, K, insert_hoop_max)
 //!           and every plotted path
 //! ```
@@ -24,8 +25,10 @@ use rayon::prelude::*;
 use crate::output::OutputError;
 use crate::scene::Scene;
 
+mod capacity;
 mod shard;
 mod writers;
+pub use capacity::last_held_factor;
 pub use shard::Shard;
 pub use writers::{csv_header, csv_row, markdown, write_sweep};
 

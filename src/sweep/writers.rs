@@ -1,4 +1,5 @@
-//! What a sweep writes: sweep.csv (a row per run: the varied values, the status, the columns,
+//! What a sweep writes: sweep.csv (a row per run: the varied values, the status, the load
+//! factor last held ([`super::last_held_factor`]), the columns,
 //! the iterations and the error of a failed run), sweep.md (the same as a table) and one figure
 //! per plotted quantity against the first varied key, one line per combination of the others.
 
@@ -10,10 +11,10 @@ use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::{FIGURE_EXTENSIONS, OutputDir, OutputError};
 use crate::subject::quantity;
 
-/// The CSV header: varied keys, status, quantities, iterations, error.
+/// The CSV header: varied keys, status, last_held_factor, quantities, iterations, error.
 pub fn csv_header(variations: &[Variation], quantities: &[String]) -> String {
     let mut h: Vec<String> = variations.iter().map(|v| v.key.clone()).collect();
-    h.push("status".into());
+    h.extend(["status".into(), super::capacity::COLUMN.into()]);
     h.extend(quantities.iter().cloned());
     h.extend(["iterations".into(), "error".into()]);
     h.iter().map(|c| quote(c)).collect::<Vec<_>>().join(",") + "\n"
@@ -24,18 +25,20 @@ pub fn csv_row(row: &SweepRow, quantities: &[String]) -> String {
     row_cells(row, quantities).iter().map(|x| quote(x)).collect::<Vec<_>>().join(",") + "\n"
 }
 
-/// The cells of a row: the varied values, the status, the quantities, the iterations, the error.
+/// The cells of a row: the varied values, the status, the load factor last held, the quantities, the iterations, the error.
 fn row_cells(row: &SweepRow, quantities: &[String]) -> Vec<String> {
     let mut c: Vec<String> = row.values.clone();
     match &row.result {
         Ok(v) => {
             c.push(v["status"].as_str().unwrap_or("").into());
+            c.push(super::last_held_factor(v).map_or(String::new(), |x| format!("{x:?}")));
             c.extend(quantities.iter().map(|q| quantity(v, q).map_or(String::new(), |x| format!("{x:?}"))));
             c.push(v["iterations"].to_string());
             c.push(String::new());
         }
         Err(e) => {
             c.push("error".into());
+            c.push(String::new());
             c.extend(quantities.iter().map(|_| String::new()));
             c.push(String::new());
             c.push(e.clone());
@@ -52,7 +55,7 @@ fn quote(s: &str) -> String {
 /// value or an error message with commas stays in its cell.
 pub fn markdown(variations: &[Variation], rows: &[SweepRow], quantities: &[String]) -> String {
     let mut header: Vec<String> = variations.iter().map(|v| v.key.clone()).collect();
-    header.push("status".into());
+    header.extend(["status".into(), super::capacity::COLUMN.into()]);
     header.extend(quantities.iter().cloned());
     header.extend(["iterations".into(), "error".into()]);
     let line = |cells: &[String]| {
