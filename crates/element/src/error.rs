@@ -42,6 +42,12 @@ pub enum ElementError {
         /// Which rule was asked for.
         what: String,
     },
+    /// An out-of-plane thickness that is not positive and finite.
+    #[error("thickness must be positive and finite, got {thickness}")]
+    InvalidThickness {
+        /// The thickness given.
+        thickness: f64,
+    },
     /// A formulation the element kind does not support (B-bar on Tri3).
     #[error("formulation {formulation} is not available for {element}")]
     UnsupportedFormulation {

@@ -8,13 +8,14 @@
 //!       [ ∂N_a/∂y   ∂N_a/∂x ]
 //! ```
 //!
-//! `t` is the thickness (1 in the paper).
+//! `t det J` is the volume weight of the body's [`Kinematics`] (`t` the thickness, 1 in the paper).
 
 use nalgebra::{DMatrix, Matrix3};
 
 use crate::error::ElementError;
 use crate::formulation::{DilatationProjection, Formulation, deviatoric_split};
 use crate::isoparametric::map_point;
+use crate::kinematics::Kinematics;
 use crate::material::Material;
 use crate::quadrature::GaussRule;
 use crate::shape::ElementType;
@@ -26,10 +27,11 @@ use crate::shape::ElementType;
 ///
 /// # Examples
 /// ```
-/// use contact2d_element::{element_stiffness, ElementType, GaussRule, Material, PlaneCondition};
+/// use contact2d_element::{element_stiffness, ElementType, GaussRule, Kinematics, Material, PlaneCondition};
 /// let m = Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap();
+/// let plate = Kinematics::plane(PlaneCondition::Stress, 1.0).unwrap();
 /// let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
-/// let k = element_stiffness(ElementType::Quad4, &square, &m, 1.0, &GaussRule::quad(2).unwrap()).unwrap();
+/// let k = element_stiffness(ElementType::Quad4, &square, &m, &plate, &GaussRule::quad(2).unwrap()).unwrap();
 /// assert_eq!(k.nrows(), 8);
 /// assert!((k.clone() - k.transpose()).abs().max() < 1e-14);
 /// ```
@@ -37,10 +39,10 @@ pub fn element_stiffness(
     element: ElementType,
     coords: &[[f64; 2]],
     material: &Material,
-    thickness: f64,
+    kinematics: &Kinematics,
     rule: &GaussRule,
 ) -> Result<DMatrix<f64>, ElementError> {
-    element_stiffness_with(element, coords, material, thickness, rule, Formulation::Standard)
+    element_stiffness_with(element, coords, material, kinematics, rule, Formulation::Standard)
 }
 
 /// The element stiffness matrix in the given [`Formulation`]:
@@ -57,27 +59,28 @@ pub fn element_stiffness(
 ///
 /// # Examples
 /// ```
-/// use contact2d_element::{element_stiffness_with, ElementType, Formulation, GaussRule, Material, PlaneCondition};
+/// use contact2d_element::{element_stiffness_with, ElementType, Formulation, GaussRule, Kinematics, Material, PlaneCondition};
 /// let rubber = Material::new(1.0, 0.4999, PlaneCondition::Strain).unwrap();
+/// let long = Kinematics::plane(PlaneCondition::Strain, 1.0).unwrap();
 /// let q9 = ElementType::Quad9;
-/// let k = element_stiffness_with(q9, q9.reference_nodes(), &rubber, 1.0, &GaussRule::stiffness_rule(q9), Formulation::BBar).unwrap();
+/// let k = element_stiffness_with(q9, q9.reference_nodes(), &rubber, &long, &GaussRule::stiffness_rule(q9), Formulation::BBar).unwrap();
 /// assert!((k.clone() - k.transpose()).abs().max() < 1e-9 * k.abs().max());
 /// ```
 pub fn element_stiffness_with(
     element: ElementType,
     coords: &[[f64; 2]],
     material: &Material,
-    thickness: f64,
+    kinematics: &Kinematics,
     rule: &GaussRule,
     formulation: Formulation,
 ) -> Result<DMatrix<f64>, ElementError> {
     match formulation {
-        Formulation::Standard => integrate_btdb(element, coords, &material.elasticity_matrix(), thickness, rule),
+        Formulation::Standard => integrate_btdb(element, coords, &material.elasticity_matrix(), kinematics, rule),
         Formulation::BBar => {
             let projection = DilatationProjection::new(element, coords, rule)?;
             let (d_dev, kappa) = deviatoric_split(material);
-            let mut k = integrate_btdb(element, coords, &d_dev, thickness, rule)?;
-            k += projection.volumetric_stiffness(kappa, thickness);
+            let mut k = integrate_btdb(element, coords, &d_dev, kinematics, rule)?;
+            k += projection.volumetric_stiffness(kappa, kinematics.uniform_weight());
             // Gᵀ M⁻¹ G is symmetric up to round-off; make K_e exactly symmetric.
             let n = k.nrows();
             for a in 0..n {
@@ -92,19 +95,19 @@ pub fn element_stiffness_with(
     }
 }
 
-/// `Σ_g B_gᵀ d B_g t det J_g w_g` for any symmetric 3×3 `d`.
+/// `Σ_g B_gᵀ d B_g t det J_g w_g` for any symmetric 3×3 `d` (`t` the kinematics' volume weight).
 fn integrate_btdb(
     element: ElementType,
     coords: &[[f64; 2]],
     d: &Matrix3<f64>,
-    thickness: f64,
+    kinematics: &Kinematics,
     rule: &GaussRule,
 ) -> Result<DMatrix<f64>, ElementError> {
     let n = element.num_nodes();
     let mut k = DMatrix::zeros(2 * n, 2 * n);
     for (xi, w) in rule.points.iter().zip(&rule.weights) {
         let p = map_point(element, coords, *xi)?;
-        let f = w * p.det_j * thickness;
+        let f = w * p.det_j * kinematics.volume_weight(p.x);
         for a in 0..n {
             let [ax, ay] = p.dn_dx[a];
             // D B_a: the 3×2 block, columns for u_ax and u_ay.
@@ -180,7 +183,7 @@ mod tests {
             let t = ElementType::ALL[ti];
             let coords = distorted(t, &jitter);
             let m = Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap();
-            let k = element_stiffness(t, &coords, &m, 1.0, &GaussRule::stiffness_rule(t)).unwrap();
+            let k = element_stiffness(t, &coords, &m, &Kinematics::plane(m.plane(), 1.0).unwrap(), &GaussRule::stiffness_rule(t)).unwrap();
             prop_assert!((k.clone() - k.transpose()).abs().max() < 1e-13);
             let ev = symmetric_eigenvalues(&k);
             let largest = ev[ev.len() - 1];
@@ -194,7 +197,7 @@ mod tests {
             let t = ElementType::ALL[ti];
             let coords = distorted(t, &jitter);
             let m = Material::new(5.0, 0.2, PlaneCondition::Strain).unwrap();
-            let k = element_stiffness(t, &coords, &m, 1.0, &GaussRule::stiffness_rule(t)).unwrap();
+            let k = element_stiffness(t, &coords, &m, &Kinematics::plane(m.plane(), 1.0).unwrap(), &GaussRule::stiffness_rule(t)).unwrap();
             let u = DMatrix::from_iterator(2 * coords.len(), 1, coords.iter().flat_map(|x| [0.3 - 0.1 * x[1], -0.2 + 0.1 * x[0]]));
             prop_assert!((&k * u).abs().max() < 1e-12 * k.abs().max());
         }
@@ -214,7 +217,7 @@ mod tests {
             prop_assume!(t != ElementType::Tri3);
             let coords = distorted(t, &jitter);
             let m = Material::new(1.0, nu, PlaneCondition::Strain).unwrap();
-            let k = element_stiffness_with(t, &coords, &m, 1.0, &GaussRule::stiffness_rule(t), Formulation::BBar).unwrap();
+            let k = element_stiffness_with(t, &coords, &m, &Kinematics::plane(m.plane(), 1.0).unwrap(), &GaussRule::stiffness_rule(t), Formulation::BBar).unwrap();
             prop_assert!((k.clone() - k.transpose()).abs().max() == 0.0);
             let u = DMatrix::from_iterator(2 * coords.len(), 1, coords.iter().flat_map(|x| [0.3 - 0.1 * x[1], -0.2 + 0.1 * x[0]]));
             prop_assert!((&k * u).abs().max() < 1e-12 * k.abs().max());
@@ -235,7 +238,15 @@ mod tests {
             let coords = distorted(t, &[0.3, -0.7, 0.5, 0.1, -0.2, 0.9, -0.4]);
             let m = Material::new(2.0, 0.45, PlaneCondition::Strain).unwrap();
             let rule = GaussRule::stiffness_rule(t);
-            let k = element_stiffness_with(t, &coords, &m, 0.7, &rule, Formulation::BBar).unwrap();
+            let k = element_stiffness_with(
+                t,
+                &coords,
+                &m,
+                &Kinematics::plane(m.plane(), 0.7).unwrap(),
+                &rule,
+                Formulation::BBar,
+            )
+            .unwrap();
             let proj = crate::formulation::DilatationProjection::new(t, &coords, &rule).unwrap();
             let n = t.num_nodes();
             let mut reference = DMatrix::zeros(2 * n, 2 * n);
@@ -269,11 +280,27 @@ mod tests {
         let m = Material::new(1.0, 0.3, PlaneCondition::Strain).unwrap();
         let rule = GaussRule::triangle(1).unwrap();
         assert!(matches!(
-            element_stiffness_with(ElementType::Tri3, &tri, &m, 1.0, &rule, Formulation::BBar),
+            element_stiffness_with(
+                ElementType::Tri3,
+                &tri,
+                &m,
+                &Kinematics::plane(m.plane(), 1.0).unwrap(),
+                &rule,
+                Formulation::BBar
+            ),
             Err(ElementError::UnsupportedFormulation { .. })
         ));
-        let a = element_stiffness(ElementType::Tri3, &tri, &m, 1.0, &rule).unwrap();
-        let b = element_stiffness_with(ElementType::Tri3, &tri, &m, 1.0, &rule, Formulation::Standard).unwrap();
+        let a =
+            element_stiffness(ElementType::Tri3, &tri, &m, &Kinematics::plane(m.plane(), 1.0).unwrap(), &rule).unwrap();
+        let b = element_stiffness_with(
+            ElementType::Tri3,
+            &tri,
+            &m,
+            &Kinematics::plane(m.plane(), 1.0).unwrap(),
+            &rule,
+            Formulation::Standard,
+        )
+        .unwrap();
         assert_eq!(a, b);
     }
 

@@ -18,7 +18,7 @@
 use std::hint::black_box;
 use std::time::Duration;
 
-use contact2d_element::{ElementType, GaussRule, Material, PlaneCondition, element_stiffness};
+use contact2d_element::{ElementType, GaussRule, Kinematics, Material, PlaneCondition, element_stiffness};
 use contact2d_fem::{CholeskySolver, Component, EdgeLoad, Model, assemble};
 use contact2d_mesh::{CellKind, generate};
 use criterion::measurement::WallTime;
@@ -50,13 +50,14 @@ fn few_samples(group: &mut BenchmarkGroup<'_, WallTime>) {
 fn element_stiffness_bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("element_stiffness");
     let material = Material::new(1000.0, 0.3, PlaneCondition::Stress).unwrap();
+    let kinematics = Kinematics::plane(PlaneCondition::Stress, 1.0).unwrap();
     for (name, element) in [("Q4", ElementType::Quad4), ("Q9", ElementType::Quad9), ("T6", ElementType::Tri6)] {
         // A sheared, stretched copy of the reference element (a general affine map).
         let coords: Vec<[f64; 2]> =
             element.reference_nodes().iter().map(|&[x, y]| [1.3 * x + 0.2 * y + 2.0, -0.1 * x + 0.9 * y]).collect();
         let rule = GaussRule::stiffness_rule(element);
         group.bench_function(name, |b| {
-            b.iter(|| element_stiffness(element, black_box(&coords), &material, 1.0, &rule).unwrap())
+            b.iter(|| element_stiffness(element, black_box(&coords), &material, &kinematics, &rule).unwrap())
         });
     }
     group.finish();

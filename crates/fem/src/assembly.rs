@@ -13,7 +13,7 @@
 //! the Cholesky factorisation reads that side. `K_fc` and `K_cc` are kept so that the right-hand side and the
 //! reactions can be formed for any prescribed values without assembling again.
 
-use contact2d_element::{EdgeType, GaussRule, body_force_load, edge_traction_load, element_stiffness_with};
+use contact2d_element::{EdgeType, GaussRule, body_force_load, edge_traction_load};
 use std::collections::HashMap;
 
 use contact2d_mesh::{CellKind, NodeId};
@@ -247,14 +247,9 @@ pub(crate) fn cell_kinds(model: &Model, dofs: &DofMap, b: usize, i: usize) -> Ve
     model.bodies[b].cell_dofs(i).map(|d| dofs.kind(d)).collect()
 }
 
-/// The stiffness matrix of cell `i` of body `b` (its body's material, thickness, formulation).
+/// The stiffness matrix of cell `i` of body `b` ([`crate::model::Body::cell_stiffness`]).
 pub(crate) fn element_matrix(model: &Model, b: usize, i: usize) -> Result<DMatrix<f64>, FemError> {
-    let body = &model.bodies[b];
-    let element = body.elements[i];
-    let coords = body.cell_coords(&model.mesh, i);
-    let rule = GaussRule::stiffness_rule(element);
-    element_stiffness_with(element, &coords, &body.material, body.thickness, &rule, body.formulation)
-        .map_err(|source| FemError::Element { body: body.name.clone(), cell: body.cell_tags[i], source })
+    model.bodies[b].cell_stiffness(&model.mesh, i)
 }
 
 /// The `K_fc` and `K_cc` entries of a cell's matrix `k` as triplets, column by column.
@@ -300,7 +295,7 @@ pub fn assemble_edge_loads(model: &Model, loads: &[EdgeLoad]) -> Result<Vec<f64>
                 })?;
                 let body = &model.bodies[body];
                 let sign = outward_sign(&body.cell_coords(&model.mesh, owner), &coords);
-                let fe = edge_traction_load(edge, &coords, body.thickness, 3, |_, n| {
+                let fe = edge_traction_load(edge, &coords, &body.kinematics, 3, |_, n| {
                     [traction[0] - sign * pressure * n[0], traction[1] - sign * pressure * n[1]]
                 })
                 .map_err(|source| FemError::Element { body: group.clone(), cell: *tag, source })?;
@@ -339,7 +334,7 @@ pub fn assemble_body_forces(model: &Model, forces: &[(String, [f64; 2])]) -> Res
         for i in 0..body.num_cells() {
             let element = body.elements[i];
             let rule = GaussRule::stiffness_rule(element);
-            let fe = body_force_load(element, &body.cell_coords(&model.mesh, i), body.thickness, *b, &rule)
+            let fe = body_force_load(element, &body.cell_coords(&model.mesh, i), &body.kinematics, *b, &rule)
                 .map_err(|source| FemError::Element { body: body.name.clone(), cell: body.cell_tags[i], source })?;
             for (a, node) in body.cell_nodes(i).iter().enumerate() {
                 f[2 * node.0] += fe[2 * a];

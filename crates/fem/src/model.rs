@@ -4,8 +4,11 @@
 //! Bodies must not share nodes with each other unless they are meant to be bonded; contact
 //! between bodies is added by the contact crate on top of this model.
 
-use contact2d_element::{ElementError, ElementType, Formulation, GaussRule, Material, map_point};
+use contact2d_element::{
+    ElementError, ElementType, Formulation, GaussRule, Kinematics, Material, element_stiffness_with, map_point,
+};
 use contact2d_mesh::{CellKind, Mesh, NodeId};
+use nalgebra::DMatrix;
 
 use crate::dof::{Component, Dof, DofMap};
 use crate::error::FemError;
@@ -21,8 +24,9 @@ pub struct Body {
     pub name: String,
     /// Material.
     pub material: Material,
-    /// Out-of-plane thickness.
-    pub thickness: f64,
+    /// The body's kinematics (plane stress or plane strain, from the material's plane condition,
+    /// with the out-of-plane thickness): every integral over the body takes its weight from it.
+    pub kinematics: Kinematics,
     /// Standard or B-bar (locking-free for nearly incompressible plane strain); used by the
     /// assembly, the strain energy and the stress recovery alike. Change it with
     /// [`Model::set_formulation`], which checks that every cell supports it.
@@ -56,6 +60,27 @@ impl Body {
     /// Global DOFs of cell `i` in element order `[u_0x, u_0y, u_1x, ...]`.
     pub fn cell_dofs(&self, i: usize) -> impl Iterator<Item = Dof> + '_ {
         self.cell_nodes(i).iter().flat_map(|n| [Dof::of(n.0, Component::X), Dof::of(n.0, Component::Y)])
+    }
+
+    /// The stiffness matrix of cell `i` (`2n × 2n`, element order): the one place the element
+    /// stiffness is called, with the body's material, [`Kinematics`] and [`Formulation`] and the
+    /// element's stiffness rule; the assembly, the sparsity-pattern fill and the strain energy all
+    /// ask it.
+    ///
+    /// # Errors
+    /// [`FemError::Element`] naming the body and the cell's tag (not expected once the body was
+    /// validated by [`Model::add_body_with`]).
+    pub fn cell_stiffness(&self, mesh: &Mesh, i: usize) -> Result<DMatrix<f64>, FemError> {
+        let element = self.elements[i];
+        element_stiffness_with(
+            element,
+            &self.cell_coords(mesh, i),
+            &self.material,
+            &self.kinematics,
+            &GaussRule::stiffness_rule(element),
+            self.formulation,
+        )
+        .map_err(|source| FemError::Element { body: self.name.clone(), cell: self.cell_tags[i], source })
     }
 }
 
@@ -167,11 +192,9 @@ impl Model {
         thickness: f64,
         formulation: Formulation,
     ) -> Result<BodyId, FemError> {
-        if !(thickness.is_finite() && thickness > 0.0) {
-            return Err(FemError::InvalidInput(format!(
-                "body \"{region}\": thickness must be positive, got {thickness}"
-            )));
-        }
+        let kinematics = Kinematics::plane(material.plane(), thickness).map_err(|_| {
+            FemError::InvalidInput(format!("body \"{region}\": thickness must be positive, got {thickness}"))
+        })?;
         let group = self.mesh.group(region)?;
         if group.dim != 2 {
             return Err(FemError::InvalidRegion {
@@ -183,7 +206,7 @@ impl Model {
         let mut body = Body {
             name: region.to_string(),
             material,
-            thickness,
+            kinematics,
             formulation,
             elements: vec![],
             nodes: vec![],

@@ -11,7 +11,6 @@
 //! ```
 //! The node graph comes from the cells, so a model with the same topology has the same pattern.
 
-use contact2d_element::{GaussRule, element_stiffness_with};
 use faer::sparse::SymbolicSparseColMat;
 use rayon::prelude::*;
 
@@ -101,21 +100,7 @@ pub(crate) fn assemble_free_free(model: &Model, dofs: &DofMap, graph: &NodeGraph
         let (first, last, base) = (bounds[w], bounds[w + 1], col_ptr[bounds[w]]);
         for &c in &block_cells[w] {
             let (b, i) = cells[c];
-            let body = &model.bodies[b];
-            let element = body.elements[i];
-            let k_e = element_stiffness_with(
-                element,
-                &body.cell_coords(&model.mesh, i),
-                &body.material,
-                body.thickness,
-                &GaussRule::stiffness_rule(element),
-                body.formulation,
-            )
-            .map_err(|source| FemError::Element {
-                body: body.name.clone(),
-                cell: body.cell_tags[i],
-                source,
-            })?;
+            let k_e = model.bodies[b].cell_stiffness(&model.mesh, i)?;
             let idx = cell_dofs(b, i);
             for (a, col) in idx.iter().enumerate() {
                 let Some(col) = *col else { continue };

@@ -4,7 +4,6 @@
 //! u = [u_f; u_c],   r_c = K_cf u_f + K_cc u_c - f_c,   Φ_E(body) = Σ_e ½ u_eᵀ K_e u_e
 //! ```
 
-use contact2d_element::{GaussRule, element_stiffness_with};
 use rayon::prelude::*;
 
 use crate::assembly::{LinearSystem, assemble};
@@ -75,16 +74,7 @@ pub fn strain_energy(model: &Model, body: BodyId, u: &[f64]) -> Result<f64, FemE
     (0..b.num_cells())
         .into_par_iter()
         .map(|i| {
-            let element = b.elements[i];
-            let k = element_stiffness_with(
-                element,
-                &b.cell_coords(&model.mesh, i),
-                &b.material,
-                b.thickness,
-                &GaussRule::stiffness_rule(element),
-                b.formulation,
-            )
-            .map_err(|source| FemError::Element { body: b.name.clone(), cell: b.cell_tags[i], source })?;
+            let k = b.cell_stiffness(&model.mesh, i)?;
             let ue = nalgebra::DVector::from_iterator(k.nrows(), b.cell_dofs(i).map(|d| u[d.0]));
             Ok(0.5 * ue.dot(&(&k * &ue)))
         })

@@ -95,7 +95,7 @@ pub fn error_norms(
                 eh[2] += gy * ux + gx * uy;
             }
             let (ux, ex) = (exact.displacement(p.x), exact.strain(p.x));
-            let f = w * p.det_j * b.thickness;
+            let f = w * p.det_j * b.kinematics.volume_weight(p.x);
             sums[0] += f * ((uh[0] - ux[0]).powi(2) + (uh[1] - ux[1]).powi(2));
             sums[1] += f * (ux[0] * ux[0] + ux[1] * ux[1]);
             sums[2] += f * energy([eh[0] - ex[0], eh[1] - ex[1], eh[2] - ex[2]]);

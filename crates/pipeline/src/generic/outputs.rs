@@ -297,7 +297,7 @@ pub fn built_step_view<'a>(built: &'a BuiltProblem, solution: &'a ContactSolutio
     let problem = &built.problem;
     let mut node_contact = vec![None; problem.model.mesh.num_nodes()];
     for iface in &built.interfaces {
-        let thickness = problem.model.body(&iface.master_region).map_or(1.0, |(_, b)| b.thickness);
+        let thickness = problem.model.body(&iface.master_region).map_or(1.0, |(_, b)| b.kinematics.thickness());
         for k in iface.pairs.clone() {
             let pair = &problem.pairs[k];
             let area = pair.weight * thickness;
