@@ -13,7 +13,11 @@ step "the CLI binary, Python's packages, the wheel"
 # The CLI binary the Python tests compare with.
 cargo build --release --bin contact2d
 python3 -m pip install --quiet --disable-pip-version-check maturin numpy pandas pytest meshio 'dask[distributed]' nbclient nbformat ipykernel matplotlib
-CARGO_TARGET_DIR="$PWD/target" python3 -m pip install --quiet --disable-pip-version-check ./python
+# The wheel: `cargo build --locked` (python/pyproject.toml, `locked = true`), into the workspace's
+# target directory with the workspace's debug setting, so that the dependencies compiled by the
+# tests above are reused (python/Cargo.toml's release profile has no debug info).
+CARGO_TARGET_DIR="$PWD/target" CARGO_PROFILE_RELEASE_DEBUG=line-tables-only \
+    python3 -m pip install --quiet --disable-pip-version-check ./python
 step "pytest"
 python3 -m pytest python/tests -q --durations=15
 step "done"

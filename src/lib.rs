@@ -23,20 +23,24 @@ pub use contact2d_element as element;
 pub use contact2d_fem as fem;
 pub use contact2d_mesh as mesh;
 pub use contact2d_pipeline as pipeline;
-#[cfg(feature = "native")]
+#[cfg(feature = "studies")]
 pub use contact2d_pipeline::subject;
 pub use contact2d_pipeline::{generic, input_file, mesh_summary, output, plate_insert, run, scene, schema};
 
-#[cfg(feature = "native")]
+// Features: `studies` (compare, sweep, verify and the writers they need: what the Python binding
+// uses) and `cli` (the command line on top: clap, progress bars, bench, stress). See Cargo.toml.
+#[cfg(feature = "cli")]
 pub mod bench;
-#[cfg(feature = "native")]
+#[cfg(feature = "studies")]
 pub mod compare;
 pub mod doc_sections;
-#[cfg(feature = "native")]
+#[cfg(feature = "studies")]
+pub mod reference;
+#[cfg(feature = "cli")]
 pub mod stress;
-#[cfg(feature = "native")]
+#[cfg(feature = "studies")]
 pub mod sweep;
-#[cfg(feature = "native")]
+#[cfg(feature = "studies")]
 pub mod verify;
 
 // The README's library example is compiled and run as a doctest.

@@ -17,7 +17,6 @@
 //! solve is cheaper than linear) exceeds `--max-seconds`; repeats stop once the combination has
 //! used `--max-seconds` (at least one run is always made).
 
-pub mod reference;
 pub mod report;
 
 use std::path::{Path, PathBuf};
@@ -32,7 +31,8 @@ use contact2d_contact::ContactAlgorithm;
 use crate::plate_insert::PlateInsertScene;
 use crate::scene::SceneError;
 
-pub use reference::{Quantity, Reference, ReferenceMethod, richardson};
+// The references are shared with verify (pin_lug), which the `studies` feature builds without bench.
+pub use crate::reference::{self, Quantity, Reference, ReferenceMethod, richardson};
 
 /// Errors of the benchmark command.
 #[derive(Debug, thiserror::Error)]

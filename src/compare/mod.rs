@@ -55,28 +55,29 @@ use crate::subject::RunFailure;
 const PUBLISHED: &str = "published:";
 
 /// Command-line flags of `contact2d compare`.
-#[derive(Debug, Clone, clap::Args)]
+#[derive(Debug, Clone)]
+#[cfg_attr(feature = "cli", derive(clap::Args))]
 pub struct CompareArgs {
     /// The scene (TOML): a generic scene, or one of the paper's case (`[plate_insert]`).
     pub scene: PathBuf,
     /// A mesh level (repeat for several, coarse to fine; default: the scene's own mesh).
-    #[arg(long = "mesh")]
+    #[cfg_attr(feature = "cli", arg(long = "mesh"))]
     pub meshes: Vec<PathBuf>,
     /// Runs per combination; the median time is reported.
-    #[arg(long, default_value_t = 3)]
+    #[cfg_attr(feature = "cli", arg(long, default_value_t = 3))]
     pub repeat: usize,
     /// A closed-form reference, `dotted.json.path=value` (repeatable).
-    #[arg(long = "reference")]
+    #[cfg_attr(feature = "cli", arg(long = "reference"))]
     pub references: Vec<String>,
     /// Scene overrides applied to every run (`--set key=value`, repeatable).
-    #[arg(long = "set")]
+    #[cfg_attr(feature = "cli", arg(long = "set"))]
     pub sets: Vec<String>,
     /// Output directory.
-    #[arg(long, default_value = "compare-out")]
+    #[cfg_attr(feature = "cli", arg(long, default_value = "compare-out"))]
     pub out: PathBuf,
     /// Wall-clock limit per combination in seconds (all its repeats together), checked before
     /// each load step: a combination past it is listed as `timed_out` and the next one starts.
-    #[arg(long = "time-limit", default_value_t = DEFAULT_TIME_LIMIT_S)]
+    #[cfg_attr(feature = "cli", arg(long = "time-limit", default_value_t = DEFAULT_TIME_LIMIT_S))]
     pub time_limit: f64,
 }
 

@@ -197,24 +197,25 @@ pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, Ver
 }
 
 /// Command-line flags of `contact2d verify`.
-#[derive(Debug, Clone, clap::Args)]
+#[derive(Debug, Clone)]
+#[cfg_attr(feature = "cli", derive(clap::Args))]
 pub struct VerifyArgs {
     /// `fast` (coarse and middle meshes, what CI runs) or `full` (every bundled level).
-    #[arg(long, default_value = "fast", value_parser = ["fast", "full"])]
+    #[cfg_attr(feature = "cli", arg(long, default_value = "fast", value_parser = ["fast", "full"]))]
     pub level: String,
     /// Cases to run, comma separated (default: all of contact_patch, hertz, cattaneo_mindlin,
     /// mindlin_deresiewicz, hills_nowell, interference_fit, incline, pin_lug, flagship, sliding_patch,
     /// press_fit, moving_roller).
-    #[arg(long, value_delimiter = ',')]
+    #[cfg_attr(feature = "cli", arg(long, value_delimiter = ','))]
     pub cases: Vec<String>,
     /// The repository root (where `scenes/` and `meshes/` are).
-    #[arg(long, default_value = ".")]
+    #[cfg_attr(feature = "cli", arg(long, default_value = "."))]
     pub root: PathBuf,
     /// Write the figures and the markdown tables (`verification.md`) into this directory.
-    #[arg(long, value_name = "DIR")]
+    #[cfg_attr(feature = "cli", arg(long, value_name = "DIR"))]
     pub out: Option<PathBuf>,
     /// Print the markdown tables instead of the text table.
-    #[arg(long)]
+    #[cfg_attr(feature = "cli", arg(long))]
     pub markdown: bool,
 }
 
@@ -223,6 +224,7 @@ pub struct VerifyArgs {
 ///
 /// # Errors
 /// A case that cannot be run, or an output that cannot be written.
+#[cfg(feature = "cli")]
 pub fn run_command(args: &VerifyArgs) -> anyhow::Result<(String, bool)> {
     let level = if args.level == "full" { Level::Full } else { Level::Fast };
     let names: Vec<String> =

@@ -25,9 +25,9 @@ use contact2d_fem::{StressRecovery, nodal_stresses};
 use super::{
     CaseReport, Check, Figure, Level, Measurement, Tolerance, VerifyError, gallery_scene, mesh_override, scene_path,
 };
-use crate::bench::reference::{Reference, ReferenceMethod, richardson};
 use crate::generic::{GenericOutcome, solve_generic};
 use crate::output::chart::{Axes, Series};
+use crate::reference::{Reference, ReferenceMethod, richardson};
 
 const HOLE_RADIUS: f64 = 10.0;
 const PUSH: f64 = 1000.0;
