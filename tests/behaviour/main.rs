@@ -41,3 +41,4 @@ mod status_at_rest;
 mod stick_continuation;
 mod stress_subset;
 mod sweep;
+mod sweep_capacity;
