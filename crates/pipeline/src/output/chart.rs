@@ -588,9 +588,12 @@ mod tests {
         }
     }
 
-    /// The (x, y, text, anchor, font size) of every `<text>` element and the (cx, cy, r) of every `<circle>`
-    /// of an SVG written by this module (attributes in double quotes, as plotters writes them).
-    fn svg_items(svg: &str) -> (Vec<(f64, f64, String, String, f64)>, Vec<(f64, f64, f64)>) {
+    /// A `<text>` element of an SVG: x, y, text, anchor, font size.
+    type SvgText = (f64, f64, String, String, f64);
+
+    /// The [`SvgText`] of every `<text>` element and the (cx, cy, r) of every `<circle>` of an SVG
+    /// written by this module (attributes in double quotes, as plotters writes them).
+    fn svg_items(svg: &str) -> (Vec<SvgText>, Vec<(f64, f64, f64)>) {
         let attr = |tag: &str, name: &str| -> Option<f64> {
             let start = tag.find(&format!(" {name}=\""))? + name.len() + 3;
             tag[start..].split('"').next()?.parse().ok()
