@@ -9,13 +9,17 @@ cd "$(dirname "$0")"
 step() { echo "== [test.sh: $((SECONDS / 60)) min $((SECONDS % 60)) s] $1"; }
 step "cargo test --workspace --release"
 cargo test --workspace --release
-step "the CLI binary, Python's packages, the wheel"
-# The CLI binary the Python tests compare with.
-cargo build --release --bin contact2d
+step "Python's packages, the wheel"
+# The CLI binary the Python tests compare with is target/release/contact2d, built by `cargo test`
+# for the integration tests (CARGO_BIN_EXE_contact2d). A separate `cargo build --bin` would
+# resolve the features without the dev-dependencies and compile the libraries again (2 min 56 s
+# in the 2026-11-29 clean-clone CI).
 python3 -m pip install --quiet --disable-pip-version-check maturin numpy pandas pytest meshio 'dask[distributed]' nbclient nbformat ipykernel matplotlib
 # The wheel: `cargo build --locked` (python/pyproject.toml, `locked = true`), into the workspace's
-# target directory with the workspace's debug setting, so that the dependencies compiled by the
-# tests above are reused (python/Cargo.toml's release profile has no debug info).
+# target directory with the workspace's debug setting (python/Cargo.toml's release profile has no
+# debug info), so that what the tests above compiled with the same features is reused; today some
+# dependencies' features differ and faer, nalgebra and clarabel compile again (docs/benchmarks.md,
+# "Installing the Python package").
 CARGO_TARGET_DIR="$PWD/target" CARGO_PROFILE_RELEASE_DEBUG=line-tables-only \
     python3 -m pip install --quiet --disable-pip-version-check ./python
 step "pytest"
