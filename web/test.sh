@@ -13,7 +13,12 @@ if [ ! -f web/pkg/contact2d_web_bg.wasm ]; then
 fi
 
 echo "== native reference numbers -> web/out/reference.json"
-timeout 1200 cargo run --quiet --release -p contact2d-web --bin web_reference > web/out/reference.json
+# Built with the whole workspace's package selection, whose features are those `cargo test
+# --workspace --release` (../test.sh) compiled (.ci/feature-sets), so nothing but this binary is
+# compiled again (`cargo run -p contact2d-web` would resolve the features of this crate alone and
+# compile the pipeline and faer once more).
+timeout 1200 cargo build --quiet --release --workspace --bins
+timeout 1200 "${CARGO_TARGET_DIR:-target}/release/web_reference" > web/out/reference.json
 
 echo "== node: the WebAssembly module returns the native numbers"
 timeout 600 node web/tests/wasm_matches_native.mjs web/out/reference.json

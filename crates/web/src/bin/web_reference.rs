@@ -11,7 +11,8 @@
 //! `web/tests/wasm_matches_native.mjs` solves the same params in the module (meshes compiled
 //! in, parsed from bytes) and requires every number to agree to 1e-12 relative.
 //!
-//! Usage: `cargo run --release -p contact2d-web --bin web_reference > web/out/reference.json`
+//! Usage: `cargo build --release --workspace --bins && target/release/web_reference > web/out/reference.json`
+//! (what `web/test.sh` runs: the workspace's features, so that the test build is reused).
 
 use std::path::{Path, PathBuf};
 
