@@ -39,6 +39,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use crate::error::ContactError;
+use crate::holding::{PairColumns, friction_demand};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::solution::{ContactSolution, ContactStatus, PairState, StepStart};
@@ -90,7 +91,7 @@ impl RigidModes {
     }
 
     /// `R α` over the free DOFs.
-    fn displacement(&self, alpha: &[f64]) -> Vec<f64> {
+    pub(crate) fn displacement(&self, alpha: &[f64]) -> Vec<f64> {
         let mut out = vec![0.0; self.columns.first().map_or(0, Vec::len)];
         for (column, a) in self.columns.iter().zip(alpha) {
             if *a != 0.0 {
@@ -122,7 +123,7 @@ impl RigidModes {
     }
 
     /// The modal load `Rᵀ f` of a free-DOF load `f`.
-    fn modal_load(&self, load: &[f64]) -> Vec<f64> {
+    pub(crate) fn modal_load(&self, load: &[f64]) -> Vec<f64> {
         self.columns.iter().map(|c| c.iter().zip(load).map(|(a, b)| a * b).sum()).collect()
     }
 
@@ -160,21 +161,21 @@ pub(crate) struct FloatingStep<'a> {
     pub predict: bool,
 }
 
-/// A step whose load a body held only by contact cannot take ([`ContactStatus::NotHeld`]): along
-/// the free rigid motion `d` (unit, in the body's rigid modes `R`) that no pair resists, the load
-/// friction has to carry exceeds what it can.
+/// A step whose load a body held only by contact cannot take ([`ContactStatus::NotHeld`]): the
+/// pairs' forces cannot balance the load in the pieces' rigid modes at any state of the contact
+/// (the statics of `holding.rs`), so the load friction has to carry exceeds what it can:
 ///
 /// ```text
-/// demanded  = | dᵀ Rᵀ (f + B_Nᵀ λ) |            the load along d not taken by normal forces
-/// available = Σ_i μ_i λ_i | (B_T R d)_i |       every closed pair at the cone along d
-/// ratio     = demanded / available  (> 1)
+/// ratio     = k_min: the least k with λ ≥ 0, |τ_i| ≤ k μ_i λ_i, Rᵀ(f + B_Nᵀλ + B_Tᵀτ) = 0
+/// available = Σ_i μ_i λ_i at that distribution of the normal forces
+/// demanded  = ratio · available
 /// ```
 ///
-/// For a block pressed by N on a flat base and pushed sideways by F: `ratio = F / (μ N)`. The
-/// forces are those of the state where the free motion is found: the pins still hold the pieces
-/// against the load friction cannot carry, and the λ they leave differ from the sliding
-/// equilibrium's by the pins' share (a few per cent on the incline of
-/// `scenes/generic/incline_push.toml`), so `ratio` is an estimate; that it exceeds 1 is not.
+/// For a block pressed by N on a flat base and pushed sideways by F: `ratio = F / (μ N)`,
+/// `available = μ N`, `demanded = F`. Where the programme does not decide but the iteration
+/// found a free rigid motion `d` that the closed pairs only slide along, the estimate of that
+/// state is kept: `demanded = |dᵀRᵀ(f + B_Nᵀλ)|`, `available = Σ μ_i λ_i |(B_T R d)_i|` (the
+/// pins still hold part of the load there: a few per cent off).
 #[derive(Debug, Clone, PartialEq)]
 pub struct NotHeld {
     /// The body that slides away.
@@ -296,6 +297,16 @@ pub(crate) fn solve_floating_step(
     let Some(mut answer) = last else {
         return Err(ContactError::InvalidInput("a floating step without a leg".into()));
     };
+    // A step that did not end on a load no state of the contact holds ends `not_held`, by the
+    // statics of the pieces (`holding.rs`): near the threshold the free motion may not show
+    // before the iteration limit. Where the iteration found the free motion itself, the statics
+    // give the exact demand (its own is measured in a state the pins still hold).
+    if matches!(answer.solution.status, ContactStatus::MaxIterations | ContactStatus::NotHeld)
+        && let Some(report) = not_held_by_statics(loaded, modes, step, alpha)?
+    {
+        answer.solution.status = ContactStatus::NotHeld;
+        answer.not_held = Some(report);
+    }
     answer.solution.dissipation = dissipation;
     // The step's slip increment is the friction slip of its legs (landing travel excluded).
     answer.solution.slip_increment = friction_slip;
@@ -615,6 +626,42 @@ fn sliding_away(
     }
     let body = moving_body(problem, modes, direction)?;
     Some(NotHeld { body, step, pairs, demanded: demanded.abs(), available })
+}
+
+/// The [`NotHeld`] report of a step whose load the pairs cannot balance in the pieces' rigid
+/// modes at any state of the contact ([`crate::holding::friction_demand`]), `None` where they can.
+/// Leaves `loaded` with the step's load and the pins' anchor at `alpha`, as the iteration does.
+fn not_held_by_statics(
+    loaded: &mut ContactProblem,
+    modes: &RigidModes,
+    step: &FloatingStep,
+    alpha: &[f64],
+) -> Result<Option<NotHeld>, ContactError> {
+    loaded.apply_load(step.factors, None)?;
+    let load = modes.modal_load(&loaded.pattern_rhs);
+    loaded.apply_load(step.factors, Some(&modes.anchor_load(alpha)))?;
+    let zeros = vec![0.0; loaded.system.dofs.num_constrained()];
+    let unit =
+        |j: usize| modes.displacement(&(0..modes.len()).map(|i| f64::from(u8::from(i == j))).collect::<Vec<_>>());
+    let columns: Vec<Vec<f64>> = (0..modes.len()).map(unit).collect();
+    let pairs: Vec<PairColumns> = (loaded.normal_rows.iter().zip(&loaded.tangent_rows).enumerate())
+        .map(|(k, (normal, tangent))| {
+            let frictional = loaded.tangential.get(k).copied().unwrap_or(false);
+            PairColumns {
+                normal: columns.iter().map(|c| normal.dot(c, &zeros)).collect(),
+                tangent: columns.iter().map(|c| if frictional { tangent.dot(c, &zeros) } else { 0.0 }).collect(),
+                friction: if frictional { loaded.friction.get(k).copied().unwrap_or(0.0) } else { 0.0 },
+            }
+        })
+        .collect();
+    let Some(demand) = friction_demand(&load, &pairs) else {
+        return Ok(None);
+    };
+    let Some(body) = moving_body(loaded, modes, &demand.direction) else {
+        return Ok(None);
+    };
+    let demanded = demand.ratio * demand.available;
+    Ok(Some(NotHeld { body, step: step.step, pairs: demand.pairs, demanded, available: demand.available }))
 }
 
 /// The name of the body that moves most along `direction`.

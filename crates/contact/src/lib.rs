@@ -31,6 +31,7 @@ pub mod finite_sliding;
 mod floating;
 mod force_span;
 pub mod history;
+mod holding;
 pub mod interface;
 mod kkt;
 pub mod linear;
