@@ -104,6 +104,13 @@ function setError(message) {
   page.error = message;
   $("error").hidden = !message;
   $("error").textContent = message ? `not solved: ${message}` : "";
+  // A failed solve leaves nothing of the previous one on screen (no stale numbers or banner).
+  if (message) {
+    clearFigures("Nothing to show: the last set-up was not solved (the reason is under the controls).");
+    $("banner").hidden = true;
+    $("pair-counts").textContent = "";
+    $("profile-caption").textContent = "";
+  }
 }
 
 function solveNow() {
@@ -252,9 +259,11 @@ function draw(view, values, shows, custom = null) {
     mesh: (v, focus) => {
       const { counts, beta } = drawMesh($("mesh"), v, Number(values.mag), focus);
       const slip = (counts["slip+"] || 0) + (counts["slip-"] || 0);
-      $("pair-counts").textContent = `— ${counts.stick || 0} stick, ${slip} slip, ${counts.contact || 0} contact, ` +
+      $("pair-counts").textContent = `— ${counts.stick || 0} stick, ${slip} slip (${counts["slip+"] || 0} +, ` +
+        `${counts["slip-"] || 0} −), ${counts.contact || 0} contact, ` +
         `${counts.free || 0} free pairs; β = ${beta.toPrecision(3)}`;
-      Object.assign($("mesh").dataset, { stick: counts.stick || 0, slip, free: counts.free || 0 });
+      Object.assign($("mesh").dataset, { stick: counts.stick || 0, slip, free: counts.free || 0,
+        slipPlus: counts["slip+"] || 0, slipMinus: counts["slip-"] || 0 });
     },
     chart: (spec, caption) => { chart($("profile"), spec); $("profile-caption").textContent = caption; },
     output: (id, value, text) => { const o = $(id); if (o) { o.textContent = text; o.dataset.value = String(value); } },
@@ -313,8 +322,10 @@ function drawHistory(values) {
 // ---------------------------------------------------------------------------------------------
 // Scenes, presets, URL, reset, export, projector, files.
 
-function showScene(name, values) {
+function showScene(name, values, push = false) {
   cancelHistory();
+  // A tab chosen on the page is a new history entry (Back returns to the last tab).
+  if (push && name !== state.scene) history.pushState(null, "", urlOf(name, values));
   state.scene = name;
   state.values = values;
   document.querySelectorAll("#scenes button").forEach((b) => b.classList.toggle("active", b.dataset.scene === name));
@@ -380,7 +391,7 @@ function build() {
     const b = document.createElement("button");
     b.dataset.scene = name;
     b.textContent = scene.title;
-    b.addEventListener("click", () => showScene(name, defaultsFor(name)));
+    b.addEventListener("click", () => showScene(name, defaultsFor(name), true));
     nav.append(b);
     const block = document.createElement("div");
     block.dataset.for = name;
@@ -411,7 +422,16 @@ function build() {
   });
   $("history").addEventListener("click", runHistory);
   $("cycle").addEventListener("click", runCycle);
-  $("reset").addEventListener("click", () => { $("url-notes").hidden = true; showScene(state.scene, defaults(state.scene)); });
+  // Reset: the scene's defaults, in the same display mode (projector stays on or off).
+  $("reset").addEventListener("click", () => {
+    $("url-notes").hidden = true;
+    showScene(state.scene, { ...defaults(state.scene), projector: state.values.projector });
+  });
+  // Back / Forward: the set-up of that history entry (its tab and controls).
+  window.addEventListener("popstate", () => {
+    const { scene, values } = readUrl(location.search, SCENES, COMMON, "flagship");
+    showScene(scene, values);
+  });
   $("export-png").addEventListener("click", exportPng);
   $("export-csv").addEventListener("click", exportCsv);
   $("user-input").addEventListener("change", (e) => takeFiles(e.target.files));

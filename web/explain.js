@@ -2,12 +2,14 @@
 // page, the materials and dimensions, and the caveats a lecturer should know. Plain HTML strings.
 
 const COULOMB = `<h3>Coulomb's law at each pair</h3>
-<p>p ≥ 0 is the contact pressure, q the shear (tangential traction), μ the friction coefficient.
+<p>p ≥ 0 is the contact pressure (positive in compression, and so plotted), q the shear (tangential traction), μ the friction coefficient.
 Where the bodies touch, <b>|q| ≤ μ p</b>:</p>
 <ul>
 <li><span class="key stick">stick</span>: |q| &lt; μ p, no relative sliding;</li>
-<li><span class="key slip">slip +</span> <span class="key slipm">slip −</span>: |q| = μ p, the surfaces slide
-(in the + or − tangential direction of the pair), q opposes the sliding;</li>
+<li><span class="key slip">slip +x</span> <span class="key slipm">slip −x</span>: |q| = μ p, the surfaces slide,
+q opposes the sliding. The sign is the global direction in which the surface carrying the dots (the pair's
+master side) slides over the other body: red towards +x, orange towards −x (+y / −y where the surface is
+steeper than 45°). Pushing a block towards +x shows “slip +x”.</li>
 <li><span class="key free">free</span> (separation): a gap is open, p = q = 0;</li>
 <li><span class="key contact">contact</span>: touching without friction (μ = 0): q = 0, nothing can stick.</li>
 </ul>`;

@@ -59,13 +59,14 @@ const flagship = {
     const frictionless = Number(v.mu) === 0;
     ui.chart({
       series: [
-        { x: hole.eta, y: hole.p, colour: "#d62728", label: "p (hole edge)" },
+        // The solver's normal stress is < 0 in compression; the contact pressure p = −σ_nn ≥ 0.
+        { x: hole.eta, y: hole.p.map((v) => (v === null ? null : -v)), colour: "#d62728", label: "p (hole edge)" },
         { x: hole.eta, y: hole.q, colour: "#1f77b4", label: "q (hole edge)" },
         { x: hole.eta, y: hole.hoop, colour: "#2ca02c", label: "hoop stress σφφ" },
       ],
       markers: [{ x: s.l, label: "l (contact end)" }, { x: frictionless || s.b === s.l ? null : s.b, label: "b (stick end)" }],
       xlabel: "η = 1 − φ/π", ylabel: "stress / E1", xrange: [0, 1],
-    }, "Along the hole edge: contact pressure p (< 0 in compression), shear q, hoop stress σφφ; " +
+    }, "Along the hole edge: contact pressure p (> 0 in compression), shear q, hoop stress σφφ; " +
       "l = contact end, b = stick end (on η).");
     ui.table([
       ["contact end l", "l", s.l],
