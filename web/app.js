@@ -245,6 +245,7 @@ function clearFigures(message) {
     c.getContext("2d").clearRect(0, 0, c.width, c.height);
   }
   $("summary").tBodies[0].innerHTML = "";
+  $("keynums").replaceChildren();
   $("table-caption").textContent = message;
 }
 
@@ -296,6 +297,16 @@ function draw(view, values, shows, custom = null) {
       $("published-label").textContent = note;
       $("table-caption").textContent = shows.text;
       $("summary").dataset.shows = shows.kind;
+      // The key numbers in large type over the figure (projector mode): the scene's `keys`,
+      // else the table's first three rows.
+      const keys = SCENES[shows.scene].keys;
+      const chosen = keys ? keys.map((k) => rows.find((r) => r[1] === k)).filter(Boolean) : rows.slice(0, 3);
+      $("keynums").replaceChildren(...chosen.map(([name, key, live]) => {
+        const d = document.createElement("div");
+        d.dataset.key = key;
+        d.textContent = `${name.split(",")[0]} = ${String(fmt(live)).split(":")[0]}`;
+        return d;
+      }));
     },
   };
   $("banner").hidden = true;
@@ -390,7 +401,12 @@ function build() {
   for (const [name, scene] of Object.entries(SCENES)) {
     const b = document.createElement("button");
     b.dataset.scene = name;
-    b.textContent = scene.title;
+    // The full title, and a short one for one row of tabs in projector mode.
+    const long = document.createElement("span"), short = document.createElement("span");
+    long.className = "long"; long.textContent = scene.title;
+    short.className = "short"; short.textContent = scene.short || scene.title;
+    b.append(long, short);
+    b.title = scene.title;
     b.addEventListener("click", () => showScene(name, defaultsFor(name), true));
     nav.append(b);
     const block = document.createElement("div");
@@ -415,8 +431,14 @@ function build() {
     }
   }
   $("mag").addEventListener("input", () => { state.values.mag = readControl(COMMON[0]); showValues(); schedule(); });
+  $("explain-toggle").addEventListener("click", () => { $("explain").open = !$("explain").open; });
+  $("explain").addEventListener("toggle", () => {
+    $("explain-toggle").textContent = $("explain").open ? "Close the explanation" : "Explain";
+  });
   $("projector").addEventListener("input", () => {
     state.values.projector = readControl(COMMON[1]);
+    // Projector mode: the explanation is a toggle over the figure, closed to begin with.
+    $("explain").open = state.values.projector !== "1";
     showValues();
     schedule();
   });
@@ -457,6 +479,7 @@ async function main() {
     $("url-notes").textContent = `The link's parameters were not all usable: ${notes.join("; ")}.`;
   }
   page.urlNotes = notes;
+  if (values.projector === "1") $("explain").open = false;
   $("timing").textContent = "solver loaded";
   showScene(scene, values);
 }

@@ -71,6 +71,8 @@ const frictionSlider = (value) => ({ key: "mu", id: "g-mu", label: "friction μ"
 
 const pinLug = {
   title: "Pin in a lug",
+  short: "Pin in a lug",
+  keys: ["normal_force", "tangential_force", "max_pressure"],
   controls: [
     frictionSlider(0.2),
     { key: "force", id: "g-force", label: "pin force on the half model, N/mm", kind: "range", min: 250, max: 2000,
@@ -92,6 +94,8 @@ const lame = (delta) => 2e5 * delta * (1000 ** 2 - 500 ** 2) / (2 * 500 * 1000 *
 
 const interferenceFit = {
   title: "Interference fit",
+  short: "Interference fit",
+  keys: ["p_lame", "max_pressure", "status"],
   controls: [
     { key: "delta", id: "g-delta", label: "radial interference δ, mm", kind: "range", min: 0.05, max: 1.2, step: 0.05,
       value: 0.65, show: (v) => Number(v).toFixed(2) },
@@ -117,6 +121,8 @@ export const lowerThreshold = (mu) => (TAN_ALPHA - mu) / (1 + mu * TAN_ALPHA);
 
 const inclinePush = {
   title: "Block on an incline",
+  short: "Incline",
+  keys: ["threshold", "tangential_force", "status"],
   controls: [
     frictionSlider(0.3),
     { key: "push", id: "g-push", label: "push F/G (horizontal force over weight)", kind: "range", min: 0, max: 0.7,
@@ -150,6 +156,8 @@ const inclinePush = {
 
 const twoBlocks = {
   title: "Two blocks: press, then slide",
+  short: "Two blocks",
+  keys: ["mu_p", "tangential_force", "status"],
   controls: [
     frictionSlider(0.3),
     { key: "slide", id: "g-slide", label: "slide of the top, × 0.01 mm", kind: "range", min: 0, max: 1.5, step: 0.05,
@@ -172,6 +180,7 @@ const twoBlocks = {
 /** A user's scene: the files chosen or dropped on the page, solved with the CLI's limits. */
 const userScene = {
   title: "Your scene (.toml + .msh)",
+  short: "Your scene",
   controls: [],
   user: true,
   describe: () => "your scene as written in its file",

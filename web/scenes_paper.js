@@ -32,6 +32,8 @@ export const flagshipSteps = (p) => (p.steps ?? (p.eps > 0 && p.friction > 0 ? 3
 
 const flagship = {
   title: "Plate with an insert (Solodovnikov 1998)",
+  short: "Plate + insert",
+  keys: ["l", "b", "P"],
   controls: [
     { key: "mu", id: "mu", label: "friction μ", kind: "range", min: 0, max: 0.6, step: 0.05, value: 0,
       show: (v) => Number(v).toFixed(2) },
@@ -82,6 +84,8 @@ const flagship = {
 
 const hertz = {
   title: "Hertz: roller on a block (NAFEMS)",
+  short: "Hertz",
+  keys: ["a", "a_hertz", "p_max"],
   controls: [
     { key: "force", id: "force", label: "force F (N per mm of thickness, whole roller)", kind: "range", min: 2500,
       max: 70000, step: 2500, value: 35000, show: (v) => Number(v).toLocaleString("en") },
@@ -119,6 +123,8 @@ const CM_PRESS_MM = 0.0142, CM_SHEAR_MM = 0.01;
 
 const cattaneoMindlin = {
   title: "Cattaneo–Mindlin: partial slip",
+  short: "Cattaneo–Mindlin",
+  keys: ["ratio", "c_over_a", "c_over_a_closed"],
   controls: [
     { key: "press", id: "cm-press", label: "press: the roller's top pushed down by", kind: "range", min: 0.5,
       max: 1.5, step: 0.05, value: 1,

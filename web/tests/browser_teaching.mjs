@@ -102,6 +102,72 @@ try {
       }
     });
 
+    await section(`${tag} layout`, async () => {
+      // Geometry read from the laid-out page (getBoundingClientRect), not from the page's code.
+      const rect = (sel) => page.$eval(sel, (e) => { const r = e.getBoundingClientRect(); return { l: r.left, r: r.right, t: r.top, b: r.bottom }; });
+      const H = viewport.height, W = viewport.width;
+      const inView = (r) => r.t >= -0.5 && r.l >= -0.5 && r.b <= H + 0.5 && r.r <= W + 0.5;
+      if (W >= 1024) {
+        // Projector mode: the mesh, its profile and the key numbers on one screen, unscrolled;
+        // the tabs in one row. Before: the profile ran to y ≈ 990 px, tabs in three rows at 1024.
+        for (const scene of ["flagship", "cattaneo_mindlin", "incline_push"]) {
+          await open(page, `?scene=${scene}&projector=1`);
+          const [mesh, profile, keys] = [await rect("#mesh"), await rect("#profile"), await rect("#keynums")];
+          const keyFont = await page.$eval("#keynums", (e) => ({ n: e.children.length, px: parseFloat(getComputedStyle(e).fontSize) }));
+          const scrolled = await page.evaluate(() => window.scrollY);
+          check(scrolled === 0 && inView(mesh) && inView(profile) && inView(keys) && keyFont.n >= 2 && keyFont.px >= 24,
+            `${tag} projector ${scene}: mesh ${JSON.stringify(mesh)}, profile bottom ${profile.b.toFixed(0)}, ` +
+            `${keyFont.n} key numbers at ${keyFont.px} px, all within ${W}×${H}`);
+          const tabs = await page.$$eval("#scenes button", (bs) => ({ tops: new Set(bs.map((b) => Math.round(b.getBoundingClientRect().top))).size,
+            right: Math.max(...bs.map((b) => b.getBoundingClientRect().right)) }));
+          check(tabs.tops === 1 && tabs.right <= W, `${tag} projector: the tabs in one row, the last ending at ${tabs.right.toFixed(0)} ≤ ${W}`);
+        }
+        await page.screenshot({ path: join(out, `teaching_projector_${W}.png`) });
+        // The explanation: a toggle over the figure.
+        await page.click("#explain-toggle");
+        const ex = await rect("#explain"), mesh = await rect("#mesh");
+        const overFigure = ex.l < mesh.r && mesh.l < ex.r && ex.t < mesh.b && mesh.t < ex.b;
+        check(await page.$eval("#explain", (d) => d.open) && inView(ex) && overFigure,
+          `${tag} projector: "Explain" opens the explanation over the figure (${JSON.stringify(ex)})`);
+        await page.click("#explain-toggle");
+        check(!(await page.$eval("#explain", (d) => d.open)), `${tag} projector: "Explain" closes it again`);
+      }
+      // A banner moves nothing: Cattaneo–Mindlin pushed into full sliding (shear 0.9 > 0.615) in
+      // one move. Before: the banner pushed everything down 57 px.
+      for (const projector of W >= 1024 ? ["0", "1"] : ["0"]) {
+        await open(page, `?scene=cattaneo_mindlin&projector=${projector}&shear=0.3`);
+        if (W < 1024) await page.$eval("#cm-shear", (e) => e.scrollIntoView({ block: "end" }));
+        const before = { slider: await rect("#cm-shear"), mesh: await rect("#mesh") };
+        const n = await updates(page);
+        await page.$eval("#cm-shear", (e) => { e.value = "0.9"; e.dispatchEvent(new Event("input", { bubbles: true })); });
+        await updated(page, n);
+        await idle(page);
+        const after = { slider: await rect("#cm-shear"), mesh: await rect("#mesh"), banner: await text(page, "#banner") };
+        const moved = Math.max(Math.abs(after.slider.t - before.slider.t), Math.abs(after.mesh.t - before.mesh.t));
+        check(after.banner.includes("Full sliding") && moved < 0.5,
+          `${tag} projector=${projector}: the full-sliding banner shows and moves nothing (slider ${(after.slider.t - before.slider.t).toFixed(1)} px, ` +
+          `mesh ${(after.mesh.t - before.mesh.t).toFixed(1)} px)`);
+      }
+      if (W < 900) {
+        // A phone: the mesh stays on screen while a slider far below it is used (sticky figure).
+        await open(page, "");
+        // Scrolled down by 400 px: the controls under the figure come up to the middle.
+        await page.evaluate(() => window.scrollTo(0, 400));
+        await sleep(200);
+        const n = await updates(page);
+        await page.focus("#mag");
+        await page.keyboard.press("ArrowRight");
+        await updated(page, n);
+        const [mesh, slider] = [await rect("#mesh"), await rect("#mag")];
+        const scrolled = await page.evaluate(() => window.scrollY);
+        const figure = await rect("#mesh-figure");
+        check(scrolled > 0 && inView(mesh) && inView(slider) && slider.t >= figure.b - 0.5,
+          `${tag}: scrolled ${scrolled.toFixed(0)} px to the slider, the mesh still at ${mesh.t.toFixed(0)}…${mesh.b.toFixed(0)}, ` +
+          `the slider at ${slider.t.toFixed(0)} (below the figure's ${figure.b.toFixed(0)})`);
+        await page.screenshot({ path: join(out, "teaching_phone_sticky.png") });
+      }
+    });
+
     await section(`${tag} the incline's limits`, async () => {
       // Statics of a rigid block on tan α = 0.1 pushed horizontally by F (issue 42): it slides
       // down below F/G = (tan α − μ)/(1 + μ tan α) and up above (tan α + μ)/(1 − μ tan α).
