@@ -88,15 +88,22 @@ export function drawMesh(canvas, view, magnification, focus = null) {
   const bodyColour = ["#555", "#8a6d3b", "#333", "#6b4c9a"];
   // 1.5 CSS px: thinner lines vanish on a projector.
   ctx.lineWidth = 1.5;
-  for (let e = 0; e < m.edges.length / 3; e++) {
-    const [a, mid, b] = [m.edges[3 * e], m.edges[3 * e + 1], m.edges[3 * e + 2]];
-    const pa = at(X[2 * a], X[2 * a + 1]), pm = at(X[2 * mid], X[2 * mid + 1]), pb = at(X[2 * b], X[2 * b + 1]);
-    ctx.strokeStyle = bodyColour[m.edge_body[e] % bodyColour.length];
+  // One path (one stroke) per body colour: a stroke per edge made large meshes slow to draw on
+  // the page's thread.
+  for (let colour = 0; colour < bodyColour.length; colour++) {
+    ctx.strokeStyle = bodyColour[colour];
     ctx.beginPath();
-    ctx.moveTo(...pa);
-    // The quadratic through a, m, b at ξ = −1, 0, 1 has the Bézier control point 2m − (a + b)/2.
-    ctx.quadraticCurveTo(2 * pm[0] - 0.5 * (pa[0] + pb[0]), 2 * pm[1] - 0.5 * (pa[1] + pb[1]), ...pb);
-    ctx.stroke();
+    let any = false;
+    for (let e = 0; e < m.edges.length / 3; e++) {
+      if (m.edge_body[e] % bodyColour.length !== colour) continue;
+      any = true;
+      const [a, mid, b] = [m.edges[3 * e], m.edges[3 * e + 1], m.edges[3 * e + 2]];
+      const pa = at(X[2 * a], X[2 * a + 1]), pm = at(X[2 * mid], X[2 * mid + 1]), pb = at(X[2 * b], X[2 * b + 1]);
+      ctx.moveTo(...pa);
+      // The quadratic through a, m, b at ξ = −1, 0, 1 has the Bézier control point 2m − (a + b)/2.
+      ctx.quadraticCurveTo(2 * pm[0] - 0.5 * (pa[0] + pb[0]), 2 * pm[1] - 0.5 * (pa[1] + pb[1]), ...pb);
+    }
+    if (any) ctx.stroke();
   }
   const counts = {};
   view.pairs.master.forEach((node, k) => {

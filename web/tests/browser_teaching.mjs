@@ -168,6 +168,34 @@ try {
       }
     });
 
+    await section(`${tag} solves off the main thread`, async () => {
+      // Three solves of the flagship on N = 32 with clearance (3 load steps, about 0.12 s each
+      // in WebAssembly): no long task (the browser's own PerformanceObserver) and no frame gap
+      // (requestAnimationFrame) over 100 ms on the page's thread. Before: each solve blocked it.
+      await open(page, "?N=32&eps=0.05&mu=0.3");
+      await page.evaluate(() => {
+        window.__long = []; window.__gaps = [];
+        new PerformanceObserver((l) => window.__long.push(...l.getEntries().map((e) => e.duration))).observe({ type: "longtask" });
+        let last = performance.now();
+        const frame = (t) => { window.__gaps.push(t - last); last = t; window.__frame = requestAnimationFrame(frame); };
+        window.__frame = requestAnimationFrame(frame);
+      });
+      await sleep(200);
+      for (const k of ["ArrowRight", "ArrowLeft", "ArrowRight"]) {
+        const n = await updates(page);
+        await page.focus("#mu");
+        await page.keyboard.press(k);
+        await updated(page, n);
+        await idle(page);
+      }
+      const m = await page.evaluate(() => { cancelAnimationFrame(window.__frame);
+        return { long: Math.max(0, ...window.__long), gap: Math.max(...window.__gaps), frames: window.__gaps.length,
+          solve: window.contact2dPage.timings.at(-1).solve_ms, draws: window.contact2dPage.timings.slice(-3).map((t) => Math.round(t.draw_ms)), longs: window.__long.map(Math.round) }; });
+      check(m.long < 100 && m.gap < 100 && m.frames > 5,
+        `${tag}: during 3 solves (last ${m.solve.toFixed(0)} ms) the longest main-thread task ${m.long.toFixed(0)} ms, ` +
+        `longest frame gap ${m.gap.toFixed(0)} ms (< 100 ms; ${m.frames} frames; draws ${m.draws}, long tasks ${m.longs})`);
+    });
+
     await section(`${tag} the incline's limits`, async () => {
       // Statics of a rigid block on tan α = 0.1 pushed horizontally by F (issue 42): it slides
       // down below F/G = (tan α − μ)/(1 + μ tan α) and up above (tan α + μ)/(1 − μ tan α).
@@ -198,6 +226,46 @@ try {
   }
 
   const page = await newPage(browser, errors);
+  await section("cancel, queued solves", async () => {
+    // A long solve (a user's scene: the Cattaneo–Mindlin scene on its 1.7 MB mesh L2, seconds
+    // in WebAssembly) shows its elapsed time and Cancel; Cancel stops it (the worker is
+    // restarted) and the next slider move solves as usual.
+    await open(page, "?scene=user");
+    await (await page.$("#user-input")).uploadFile(join(web, "../scenes/generic/cattaneo_mindlin.toml"),
+      join(web, "../meshes/generic/cattaneo_mindlin_L2.msh"));
+    await page.waitForSelector("#busy:not([hidden])", { timeout: 20000 });
+    const busy = await text(page, "#busy");
+    await page.click("#cancel");
+    await idle(page);
+    const after = await page.evaluate(() => ({ error: window.contact2dPage.error, busy: document.getElementById("busy").hidden,
+      run: window.contact2dPage.run }));
+    check(busy.includes("solving") && after.error.includes("cancelled") && after.busy && after.run === "idle",
+      `Cancel: "${busy.trim().slice(0, 30)}" → "${after.error}", busy hidden ${after.busy}`);
+    // The same page (its restarted worker): the Cattaneo–Mindlin tab, then a slider move.
+    let n = await updates(page);
+    await page.click('[data-scene="cattaneo_mindlin"]');
+    await updated(page, n);
+    await idle(page);
+    n = await updates(page);
+    await page.focus("#cm-shear");
+    await page.keyboard.press("ArrowRight");
+    await updated(page, n);
+    await idle(page);
+    const status = await cellValue(page, "status");
+    check(status === "converged" && !(await page.evaluate(() => window.contact2dPage.error)),
+      `after Cancel the restarted solver solves the next move (status ${status})`);
+    // Five slider moves in a row during solves: at most one solve runs and one waits, and the
+    // last one shown is the last value (μ = 0.3 + 5 × 0.05).
+    await open(page, "?N=32&eps=0.05&mu=0.3");
+    const started = await page.evaluate(() => window.contact2dPage.solvesStarted);
+    await page.focus("#mu");
+    for (let i = 0; i < 5; i++) { await page.keyboard.press("ArrowRight"); await sleep(30); }
+    await page.waitForFunction(() => window.contact2dPage.run === "idle" && document.getElementById("table-caption").textContent.includes("μ = 0.55"),
+      { timeout: 30000 });
+    const solves = (await page.evaluate(() => window.contact2dPage.solvesStarted)) - started;
+    check(solves <= 3, `5 moves of μ, ${solves} solves (a newer value replaces a queued one); μ = 0.55 shown`);
+  });
+
   await section("scene keys in the URL", async () => {
     // Before: ?scene=__proto__ stopped the page starting (a prototype key taken for a scene).
     for (const key of ["__proto__", "constructor", "nosuch"]) {
