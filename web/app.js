@@ -27,7 +27,7 @@ const HISTORY_STEPS = 10;
 
 // The page's state for tests and for people who open the console.
 const page = { ready: null, view: null, timings: [], updates: 0, error: null, run: "idle", shows: null, history: [],
-  solvesStarted: 0 };
+  solvesStarted: 0, solveWindows: [] };
 window.contact2dPage = page;
 
 const state = { scene: "flagship", values: {}, view: null, generation: 0, frame: 0, history: [], userFiles: null };
@@ -111,7 +111,11 @@ function solveInWorker(request) {
   return new Promise((resolve, reject) => {
     solver.pending.set(id, { resolve, reject });
     solver.worker.postMessage({ ...request, id });
-  }).finally(() => { clearInterval(busy); if (!solver.pending.size) $("busy").hidden = true; });
+  }).finally(() => {
+    clearInterval(busy);
+    if (!solver.pending.size) $("busy").hidden = true;
+    page.solveWindows.push([t0, performance.now()]);
+  });
 }
 
 /** Cancel: the worker is terminated (its solve cannot be interrupted) and a new one started. */

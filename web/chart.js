@@ -208,6 +208,15 @@ export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange }) 
   ctx.beginPath(); ctx.rect(L, T, W - L - R, H - T - B); ctx.clip();
   series.forEach((s) => {
     ctx.strokeStyle = ctx.fillStyle = s.colour; ctx.lineWidth = 2;
+    if (s.fill && s.x.length > 2) {
+      // A closed polygon filled (the hysteresis loop's area).
+      ctx.fillStyle = s.fill;
+      ctx.beginPath();
+      s.x.forEach((x, i) => (i ? ctx.lineTo(px(x), py(s.y[i])) : ctx.moveTo(px(x), py(s.y[i]))));
+      ctx.closePath();
+      ctx.fill();
+      ctx.fillStyle = s.colour;
+    }
     if (s.points) {
       s.x.forEach((x, i) => { if (s.y[i] !== null) { ctx.beginPath(); ctx.arc(px(x), py(s.y[i]), 3.5, 0, 2 * Math.PI); ctx.fill(); } });
     } else {

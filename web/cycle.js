@@ -66,7 +66,9 @@ export function drawCycleStep(view, k, ui, loopCanvas, chart) {
   const delta = view.cycle_shear.map((s) => s * SHEAR_MM);
   chart(loopCanvas, {
     series: [
-      { x: delta.slice(1, k + 1), y: Q.slice(1, k + 1), colour: "#6b4c9a", label: "Q(δ), computed" },
+      { x: delta.slice(0, 2), y: Q.slice(0, 2), colour: "#999", label: "first loading 0 → +A (one step)" },
+      { x: delta.slice(1, k + 1), y: Q.slice(1, k + 1), colour: "#6b4c9a", label: "Q(δ), computed",
+        fill: "rgba(107, 76, 154, 0.25)" },
       { x: [delta[k]], y: [Q[k]], colour: "#d62728", label: "now", points: true },
     ],
     xlabel: "δ: sideways displacement of the roller's top, mm", ylabel: "Q, N/mm",

@@ -94,7 +94,10 @@ export const EXPLAIN = {
   (ten steps each way, the press held). After each reversal the shear must change by 2μp before a pair slips
   the other way, so reverse slip (orange) grows in from both edges while the middle sticks, and Q(δ) traces a
   hysteresis loop: by Masing's rule its unloading branch is the loading curve doubled and reflected, so
-  Q(−A) = −Q(+A) and the loop closes at +A. Its area is the energy friction dissipates per cycle.</p>
+  Q(−A) = −Q(+A) and the loop closes at +A. Its area (shaded) is the energy friction dissipates per cycle.
+  Below A = 0.615 (partial slip throughout) the loop is thin, 1–3 % of its box; the default A = 0.75 reaches
+  full sliding at the ends of the stroke (gross slip) and the loop opens wide. The first loading 0 → +A is one
+  load step (drawn grey).</p>
   <h3>Caveats</h3><ul><li>When Q reaches μP no pair sticks: the page says “full sliding”; moving further only adds slip.</li>
   <li>L0 places the stick ends to about one cell (a/4): c/a runs 0.03–0.09 below the closed form.</li></ul>`,
 
