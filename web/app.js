@@ -10,11 +10,11 @@
 // drawing in chart.js, the explanation panel in explain.js.
 import init, { bundled_json } from "./pkg/contact2d_web.js";
 import { PAPER_SCENES, PRESETS, flagshipParams, flagshipSteps } from "./scenes_paper.js";
-import { GENERIC_SCENES, readUserFiles, solveUser } from "./scenes_generic.js";
+import { GENERIC_SCENES, readUserFiles } from "./scenes_generic.js";
 import { chart, chartCsv, drawMesh, setFontPx } from "./chart.js";
 import { readUrl, urlOf } from "./url.js";
 import { EXPLAIN } from "./explain.js";
-import { drawCycleStep, solveCycle } from "./cycle.js";
+import { drawCycleStep } from "./cycle.js";
 
 const $ = (id) => document.getElementById(id);
 const SCENES = { ...PAPER_SCENES, ...GENERIC_SCENES };
@@ -26,7 +26,8 @@ const COMMON = [
 const HISTORY_STEPS = 10;
 
 // The page's state for tests and for people who open the console.
-const page = { ready: null, view: null, timings: [], updates: 0, error: null, run: "idle", shows: null, history: [] };
+const page = { ready: null, view: null, timings: [], updates: 0, error: null, run: "idle", shows: null, history: [],
+  solvesStarted: 0, solveWindows: [] };
 window.contact2dPage = page;
 
 const state = { scene: "flagship", values: {}, view: null, generation: 0, frame: 0, history: [], userFiles: null };
@@ -77,6 +78,58 @@ function showValues() {
 }
 
 // ---------------------------------------------------------------------------------------------
+// The solver's thread (worker.js): requests answered in order; cancel = terminate and restart.
+
+class Cancelled extends Error {}
+const solver = { worker: null, pending: new Map(), next: 0 };
+
+function startWorker() {
+  solver.worker = new Worker(new URL("./worker.js", import.meta.url), { type: "module" });
+  solver.worker.onmessage = ({ data }) => {
+    const p = solver.pending.get(data.id);
+    if (!p) return;
+    solver.pending.delete(data.id);
+    if (data.error) p.reject(new Error(data.error)); else p.resolve(data);
+  };
+  solver.worker.onerror = (e) => {
+    for (const p of solver.pending.values()) p.reject(new Error(`the solver's thread failed: ${e.message || e}`));
+    solver.pending.clear();
+  };
+}
+
+/** Sends one request to the worker; resolves to {view, ms}. While it runs longer than 0.3 s the
+ * page shows the elapsed time and a Cancel button. */
+function solveInWorker(request) {
+  page.solvesStarted += 1;
+  const id = ++solver.next, t0 = performance.now();
+  const busy = setInterval(() => {
+    const s = (performance.now() - t0) / 1000;
+    if (s < 0.3) return;
+    $("busy").hidden = false;
+    $("busy-time").textContent = `solving… ${s.toFixed(1)} s`;
+  }, 100);
+  return new Promise((resolve, reject) => {
+    solver.pending.set(id, { resolve, reject });
+    solver.worker.postMessage({ ...request, id });
+  }).finally(() => {
+    clearInterval(busy);
+    if (!solver.pending.size) $("busy").hidden = true;
+    page.solveWindows.push([t0, performance.now()]);
+  });
+}
+
+/** Cancel: the worker is terminated (its solve cannot be interrupted) and a new one started. */
+function cancelSolve() {
+  solver.worker.terminate();
+  const waiting = [...solver.pending.values()];
+  solver.pending.clear();
+  startWorker();
+  state.queued = false;
+  cancelHistory();
+  for (const p of waiting) p.reject(new Cancelled("cancelled"));
+}
+
+// ---------------------------------------------------------------------------------------------
 // The run state machine.
 
 const HISTORY_LABEL = "Loading history: step w from 0 and draw l(w), b(w)";
@@ -90,10 +143,13 @@ function cancelHistory() {
   $("cycle").textContent = CYCLE_LABEL;
 }
 
-/** Any input: cancel a history, schedule one solve for the next frame (coalescing inputs). */
+/** Any input: cancel a history, schedule one solve for the next frame (coalescing inputs). While
+ * a solve runs, one more is queued: it reads the controls when it starts, so a newer slider
+ * value replaces a queued one. */
 function schedule() {
   cancelHistory();
   state.history = [];
+  if (page.run === "solving") { state.queued = true; return; }
   if (!state.frame) {
     page.run = "scheduled";
     state.frame = requestAnimationFrame(() => { state.frame = 0; solveNow(); });
@@ -104,15 +160,23 @@ function setError(message) {
   page.error = message;
   $("error").hidden = !message;
   $("error").textContent = message ? `not solved: ${message}` : "";
+  // A failed solve leaves nothing of the previous one on screen (no stale numbers or banner).
+  if (message) {
+    clearFigures("Nothing to show: the last set-up was not solved (the reason is under the controls).");
+    $("banner").hidden = true;
+    $("pair-counts").textContent = "";
+    $("profile-caption").textContent = "";
+  }
 }
 
-function solveNow() {
+async function solveNow() {
   page.run = "solving";
-  const scene = SCENES[state.scene];
+  const sceneName = state.scene;
+  const scene = SCENES[sceneName];
   const values = { ...state.values };
   try {
     const t0 = performance.now();
-    let view;
+    let answer;
     if (scene.user) {
       if (!state.userFiles) {
         setError("");
@@ -120,10 +184,13 @@ function solveNow() {
         page.updates += 1;
         return;
       }
-      view = solveUser(state.userFiles);
+      answer = await solveInWorker({ kind: "user", files: state.userFiles });
     } else {
-      view = scene.solve(values);
+      answer = await solveInWorker({ kind: "scene", scene: sceneName, values });
     }
+    // A tab switched meanwhile: this answer is for a scene no longer shown (the queued solve follows).
+    if (sceneName !== state.scene) return;
+    const view = answer.view;
     const t1 = performance.now();
     // The published case of the controls' set-up (a history's steps keep showing it).
     state.published = view.published || null;
@@ -133,12 +200,13 @@ function solveNow() {
     const t2 = performance.now();
     record(view, { scene: state.scene, solve_ms: t1 - t0, draw_ms: t2 - t1, total_ms: t2 - t0 });
     $("timing").textContent = `last update ${(t2 - t0).toFixed(1)} ms: solve in WebAssembly ` +
-      `${(t1 - t0).toFixed(1)} ms (mesh ${view.mesh_file}), drawing ${(t2 - t1).toFixed(1)} ms`;
+      `${answer.ms.toFixed(1)} ms (mesh ${view.mesh_file}), drawing ${(t2 - t1).toFixed(1)} ms`;
   } catch (e) {
-    setError(String(e.message || e));
+    setError(e instanceof Cancelled ? "cancelled (the controls' set-up was not solved)" : String(e.message || e));
     page.updates += 1;
   } finally {
     page.run = "idle";
+    if (state.queued) { state.queued = false; schedule(); }
   }
 }
 
@@ -155,7 +223,8 @@ function record(view, timing) {
 // runs; any input, preset or tab switch stops it too.
 async function runHistory() {
   if (page.run === "history") { cancelHistory(); return; }
-  if (state.frame) { cancelAnimationFrame(state.frame); state.frame = 0; solveNow(); }
+  if (page.run === "solving") return;
+  if (state.frame) { cancelAnimationFrame(state.frame); state.frame = 0; await solveNow(); }
   const generation = ++state.generation;
   page.run = "history";
   $("history").textContent = "Stop the loading history";
@@ -169,7 +238,7 @@ async function runHistory() {
     const steps = base.eps > 0 && base.friction > 0 ? k : undefined;
     try {
       const t0 = performance.now();
-      const view = SCENES.flagship.solve({ ...values, load }, steps);
+      const { view } = await solveInWorker({ kind: "scene", scene: "flagship", values: { ...values, load }, steps });
       const t1 = performance.now();
       if (generation !== state.generation) return;
       state.history.push({ w: Number(load), l: view.summary.paper.l, b: view.summary.paper.b });
@@ -182,7 +251,9 @@ async function runHistory() {
       record(view, { scene: "history", solve_ms: t1 - t0, total_ms: performance.now() - t0 });
       $("timing").textContent = `history step ${k}/${HISTORY_STEPS} (w = ${load}): ${(t1 - t0).toFixed(1)} ms`;
     } catch (e) {
-      if (generation === state.generation) setError(`history step ${k}: ${e.message || e}`);
+      if (generation === state.generation || e instanceof Cancelled) {
+        setError(e instanceof Cancelled ? `history cancelled at step ${k}` : `history step ${k}: ${e.message || e}`);
+      }
       break;
     }
     await new Promise((r) => setTimeout(r, 120));
@@ -198,7 +269,8 @@ async function runHistory() {
 // 150 ms; stopped like a history.
 async function runCycle() {
   if (page.run === "cycle") { cancelHistory(); return; }
-  if (state.frame) { cancelAnimationFrame(state.frame); state.frame = 0; solveNow(); }
+  if (page.run === "solving") return;
+  if (state.frame) { cancelAnimationFrame(state.frame); state.frame = 0; await solveNow(); }
   const generation = ++state.generation;
   page.run = "cycle";
   $("cycle").textContent = "Stop the cycle";
@@ -206,13 +278,16 @@ async function runCycle() {
   let view;
   try {
     const t0 = performance.now();
-    view = solveCycle(values);
+    view = (await solveInWorker({ kind: "cycle", values })).view;
+    if (generation !== state.generation) return;
     record(view, { scene: "cycle", solve_ms: performance.now() - t0, total_ms: performance.now() - t0 });
     $("timing").textContent = `cycle of ${view.summary.steps.length} load steps solved in ` +
       `${(performance.now() - t0).toFixed(1)} ms (mesh ${view.mesh_file})`;
   } catch (e) {
-    setError(`cycle: ${e.message || e}`);
-    cancelHistory();
+    if (generation === state.generation || e instanceof Cancelled) {
+      setError(e instanceof Cancelled ? "cycle cancelled" : `cycle: ${e.message || e}`);
+      cancelHistory();
+    }
     return;
   }
   page.cycle = view;
@@ -238,6 +313,7 @@ function clearFigures(message) {
     c.getContext("2d").clearRect(0, 0, c.width, c.height);
   }
   $("summary").tBodies[0].innerHTML = "";
+  $("keynums").replaceChildren();
   $("table-caption").textContent = message;
 }
 
@@ -252,9 +328,11 @@ function draw(view, values, shows, custom = null) {
     mesh: (v, focus) => {
       const { counts, beta } = drawMesh($("mesh"), v, Number(values.mag), focus);
       const slip = (counts["slip+"] || 0) + (counts["slip-"] || 0);
-      $("pair-counts").textContent = `— ${counts.stick || 0} stick, ${slip} slip, ${counts.contact || 0} contact, ` +
+      $("pair-counts").textContent = `— ${counts.stick || 0} stick, ${slip} slip (${counts["slip+"] || 0} +, ` +
+        `${counts["slip-"] || 0} −), ${counts.contact || 0} contact, ` +
         `${counts.free || 0} free pairs; β = ${beta.toPrecision(3)}`;
-      Object.assign($("mesh").dataset, { stick: counts.stick || 0, slip, free: counts.free || 0 });
+      Object.assign($("mesh").dataset, { stick: counts.stick || 0, slip, free: counts.free || 0,
+        slipPlus: counts["slip+"] || 0, slipMinus: counts["slip-"] || 0 });
     },
     chart: (spec, caption) => { chart($("profile"), spec); $("profile-caption").textContent = caption; },
     output: (id, value, text) => { const o = $(id); if (o) { o.textContent = text; o.dataset.value = String(value); } },
@@ -287,6 +365,16 @@ function draw(view, values, shows, custom = null) {
       $("published-label").textContent = note;
       $("table-caption").textContent = shows.text;
       $("summary").dataset.shows = shows.kind;
+      // The key numbers in large type over the figure (projector mode): the scene's `keys`,
+      // else the table's first three rows.
+      const keys = SCENES[shows.scene].keys;
+      const chosen = keys ? keys.map((k) => rows.find((r) => r[1] === k)).filter(Boolean) : rows.slice(0, 3);
+      $("keynums").replaceChildren(...chosen.map(([name, key, live]) => {
+        const d = document.createElement("div");
+        d.dataset.key = key;
+        d.textContent = `${name.split(",")[0]} = ${String(fmt(live)).split(":")[0]}`;
+        return d;
+      }));
     },
   };
   $("banner").hidden = true;
@@ -313,8 +401,10 @@ function drawHistory(values) {
 // ---------------------------------------------------------------------------------------------
 // Scenes, presets, URL, reset, export, projector, files.
 
-function showScene(name, values) {
+function showScene(name, values, push = false) {
   cancelHistory();
+  // A tab chosen on the page is a new history entry (Back returns to the last tab).
+  if (push && name !== state.scene) history.pushState(null, "", urlOf(name, values));
   state.scene = name;
   state.values = values;
   document.querySelectorAll("#scenes button").forEach((b) => b.classList.toggle("active", b.dataset.scene === name));
@@ -379,8 +469,13 @@ function build() {
   for (const [name, scene] of Object.entries(SCENES)) {
     const b = document.createElement("button");
     b.dataset.scene = name;
-    b.textContent = scene.title;
-    b.addEventListener("click", () => showScene(name, defaultsFor(name)));
+    // The full title, and a short one for one row of tabs in projector mode.
+    const long = document.createElement("span"), short = document.createElement("span");
+    long.className = "long"; long.textContent = scene.title;
+    short.className = "short"; short.textContent = scene.short || scene.title;
+    b.append(long, short);
+    b.title = scene.title;
+    b.addEventListener("click", () => showScene(name, defaultsFor(name), true));
     nav.append(b);
     const block = document.createElement("div");
     block.dataset.for = name;
@@ -404,14 +499,30 @@ function build() {
     }
   }
   $("mag").addEventListener("input", () => { state.values.mag = readControl(COMMON[0]); showValues(); schedule(); });
+  $("explain-toggle").addEventListener("click", () => { $("explain").open = !$("explain").open; });
+  $("explain").addEventListener("toggle", () => {
+    $("explain-toggle").textContent = $("explain").open ? "Close the explanation" : "Explain";
+  });
   $("projector").addEventListener("input", () => {
     state.values.projector = readControl(COMMON[1]);
+    // Projector mode: the explanation is a toggle over the figure, closed to begin with.
+    $("explain").open = state.values.projector !== "1";
     showValues();
     schedule();
   });
   $("history").addEventListener("click", runHistory);
+  $("cancel").addEventListener("click", cancelSolve);
   $("cycle").addEventListener("click", runCycle);
-  $("reset").addEventListener("click", () => { $("url-notes").hidden = true; showScene(state.scene, defaults(state.scene)); });
+  // Reset: the scene's defaults, in the same display mode (projector stays on or off).
+  $("reset").addEventListener("click", () => {
+    $("url-notes").hidden = true;
+    showScene(state.scene, { ...defaults(state.scene), projector: state.values.projector });
+  });
+  // Back / Forward: the set-up of that history entry (its tab and controls).
+  window.addEventListener("popstate", () => {
+    const { scene, values } = readUrl(location.search, SCENES, COMMON, "flagship");
+    showScene(scene, values);
+  });
   $("export-png").addEventListener("click", exportPng);
   $("export-csv").addEventListener("click", exportCsv);
   $("user-input").addEventListener("change", (e) => takeFiles(e.target.files));
@@ -428,6 +539,7 @@ function defaultsFor(name) {
 
 async function main() {
   await init();
+  startWorker();
   const bundled = JSON.parse(bundled_json());
   $("user-limits").textContent = `limits: scene ≤ ${bundled.max_scene_bytes} bytes, mesh ≤ ${bundled.max_mesh_bytes} bytes`;
   build();
@@ -437,6 +549,7 @@ async function main() {
     $("url-notes").textContent = `The link's parameters were not all usable: ${notes.join("; ")}.`;
   }
   page.urlNotes = notes;
+  if (values.projector === "1") $("explain").open = false;
   $("timing").textContent = "solver loaded";
   showScene(scene, values);
 }

@@ -6,9 +6,22 @@
 // lines are sharp on high-density screens. FONT_PX is the chart text size (≥ 14 CSS px; larger
 // in projector mode).
 
-// Slip in the two tangential directions in two colours: after a reversal (the Mindlin–Deresiewicz
-// cycle) the slip the other way is seen growing from the edges.
+// Slip in the two global directions in two colours: "slip+" (red) is sliding towards +x (+y on a
+// surface steeper than 45°), "slip-" (orange) towards −x (−y); after a reversal (the
+// Mindlin–Deresiewicz cycle) the slip the other way is seen growing from the edges.
 export const COLOURS = { stick: "#1f77b4", "slip+": "#d62728", "slip-": "#ff7f0e", contact: "#2ca02c", free: "#969696" };
+
+/** A pair's state named in the global frame. The solver's `slip+` is the master node sliding
+ * along the pair's tangent `+t` relative to the slave surface (`slip-` along −t); the page names
+ * it by the global axis nearest to t (x unless the surface is steeper than 45°) and the sign of
+ * the motion along it: returns {key: "slip+" | "slip-" (towards + / − of that axis), name:
+ * "slip +x" ...}. Other states are returned as they are. */
+export function globalSlip(state, tangent) {
+  if (!state.startsWith("slip") || !tangent) return { key: state, name: state };
+  const axis = Math.abs(tangent[0]) >= Math.abs(tangent[1]) ? 0 : 1;
+  const sign = (state === "slip+" ? 1 : -1) * Math.sign(tangent[axis] || 1);
+  return { key: sign > 0 ? "slip+" : "slip-", name: `slip ${sign > 0 ? "+" : "−"}${axis ? "y" : "x"}` };
+}
 
 let fontPx = 16;
 /** Sets the chart text size in CSS px (16 normally, 22 in projector mode). */
@@ -73,20 +86,28 @@ export function drawMesh(canvas, view, magnification, focus = null) {
   ctx.rect(0, 0, W, H);
   ctx.clip();
   const bodyColour = ["#555", "#8a6d3b", "#333", "#6b4c9a"];
-  ctx.lineWidth = 0.8;
-  for (let e = 0; e < m.edges.length / 3; e++) {
-    const [a, mid, b] = [m.edges[3 * e], m.edges[3 * e + 1], m.edges[3 * e + 2]];
-    const pa = at(X[2 * a], X[2 * a + 1]), pm = at(X[2 * mid], X[2 * mid + 1]), pb = at(X[2 * b], X[2 * b + 1]);
-    ctx.strokeStyle = bodyColour[m.edge_body[e] % bodyColour.length];
+  // 1.5 CSS px: thinner lines vanish on a projector.
+  ctx.lineWidth = 1.5;
+  // One path (one stroke) per body colour: a stroke per edge made large meshes slow to draw on
+  // the page's thread.
+  for (let colour = 0; colour < bodyColour.length; colour++) {
+    ctx.strokeStyle = bodyColour[colour];
     ctx.beginPath();
-    ctx.moveTo(...pa);
-    // The quadratic through a, m, b at ξ = −1, 0, 1 has the Bézier control point 2m − (a + b)/2.
-    ctx.quadraticCurveTo(2 * pm[0] - 0.5 * (pa[0] + pb[0]), 2 * pm[1] - 0.5 * (pa[1] + pb[1]), ...pb);
-    ctx.stroke();
+    let any = false;
+    for (let e = 0; e < m.edges.length / 3; e++) {
+      if (m.edge_body[e] % bodyColour.length !== colour) continue;
+      any = true;
+      const [a, mid, b] = [m.edges[3 * e], m.edges[3 * e + 1], m.edges[3 * e + 2]];
+      const pa = at(X[2 * a], X[2 * a + 1]), pm = at(X[2 * mid], X[2 * mid + 1]), pb = at(X[2 * b], X[2 * b + 1]);
+      ctx.moveTo(...pa);
+      // The quadratic through a, m, b at ξ = −1, 0, 1 has the Bézier control point 2m − (a + b)/2.
+      ctx.quadraticCurveTo(2 * pm[0] - 0.5 * (pa[0] + pb[0]), 2 * pm[1] - 0.5 * (pa[1] + pb[1]), ...pb);
+    }
+    if (any) ctx.stroke();
   }
   const counts = {};
   view.pairs.master.forEach((node, k) => {
-    const s = view.pairs.state[k];
+    const s = globalSlip(view.pairs.state[k], (view.pairs.tangent || [])[k]).key;
     counts[s] = (counts[s] || 0) + 1;
     const [px, py] = at(X[2 * node], X[2 * node + 1]);
     ctx.fillStyle = COLOURS[s];
@@ -98,7 +119,19 @@ export function drawMesh(canvas, view, magnification, focus = null) {
   return { counts, beta };
 }
 
-const tick = (v) => String(+v.toPrecision(3));
+/** Round tick values: the multiples of a step 1, 2, 2.5 or 5 × 10^k in [a, b], the step the
+ * smallest of these giving at most `most` intervals over [a, b]; labels with the step's decimals. */
+export function niceTicks(a, b, most = 5) {
+  const raw = (b - a) / most;
+  const mag = 10 ** Math.floor(Math.log10(raw));
+  const step = [1, 2, 2.5, 5, 10].map((m) => m * mag).find((st) => st >= raw * (1 - 1e-9));
+  const digits = Math.max(0, -Math.floor(Math.log10(step) + 1e-9) + (step / mag === 2.5 ? 1 : 0));
+  const ticks = [];
+  for (let k = Math.ceil(a / step - 1e-9); k * step <= b + 1e-9 * step; k++) {
+    ticks.push({ v: k * step, label: String(+(k * step).toFixed(Math.min(digits, 20)) || 0) });
+  }
+  return ticks;
+}
 
 /** A line chart: series {x, y, colour, label, points?}, vertical markers {x, label}; every
  * label sits in a band of its own: tick labels under/left of the plot, axis titles outside
@@ -117,8 +150,8 @@ export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange }) 
   if (!(xb > xa)) { xa -= 1; xb += 1; }
   const margin = 0.05 * (yb - ya);
   ya -= margin; yb += margin;
-  const yticks = [0, 1, 2, 3, 4].map((i) => ya + (yb - ya) * i / 4);
-  const tickWidth = Math.max(...yticks.map((y) => ctx.measureText(tick(y)).width));
+  const yticks = niceTicks(ya, yb);
+  const tickWidth = Math.max(...yticks.map((t) => ctx.measureText(t.label).width));
   // The legend: entries laid out left to right, wrapping into rows across the top.
   const legend = [];
   let lx = 0, lrow = 0;
@@ -152,13 +185,12 @@ export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange }) 
   ctx.strokeStyle = "#bbb"; ctx.beginPath(); ctx.moveTo(L, py(0)); ctx.lineTo(W - R, py(0)); ctx.stroke();
   // x tick labels: centred under their ticks, skipped where they would touch the previous one.
   let lastRight = -Infinity;
-  for (let i = 0; i <= 4; i++) {
-    const x = xa + (xb - xa) * i / 4, label = tick(x), w = ctx.measureText(label).width;
+  for (const { v: x, label } of niceTicks(xa, xb)) {
+    const w = ctx.measureText(label).width;
     const left = Math.min(Math.max(px(x) - w / 2, L - w / 2), W - w - 2);
     if (left > lastRight + 8) { ctx.fillText(label, left, H - B + 4 + f); lastRight = left + w; }
   }
-  yticks.forEach((y) => {
-    const label = tick(y);
+  yticks.forEach(({ v: y, label }) => {
     ctx.fillText(label, L - 6 - ctx.measureText(label).width, py(y) + 0.35 * f);
   });
   ctx.fillText(xlabel, L + (W - L - R) / 2 - ctx.measureText(xlabel).width / 2, H - 6);
@@ -176,6 +208,15 @@ export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange }) 
   ctx.beginPath(); ctx.rect(L, T, W - L - R, H - T - B); ctx.clip();
   series.forEach((s) => {
     ctx.strokeStyle = ctx.fillStyle = s.colour; ctx.lineWidth = 2;
+    if (s.fill && s.x.length > 2) {
+      // A closed polygon filled (the hysteresis loop's area).
+      ctx.fillStyle = s.fill;
+      ctx.beginPath();
+      s.x.forEach((x, i) => (i ? ctx.lineTo(px(x), py(s.y[i])) : ctx.moveTo(px(x), py(s.y[i]))));
+      ctx.closePath();
+      ctx.fill();
+      ctx.fillStyle = s.colour;
+    }
     if (s.points) {
       s.x.forEach((x, i) => { if (s.y[i] !== null) { ctx.beginPath(); ctx.arc(px(x), py(s.y[i]), 3.5, 0, 2 * Math.PI); ctx.fill(); } });
     } else {

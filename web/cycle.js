@@ -4,7 +4,7 @@
 // the contact (reverse slip growing in from the edges after each reversal), the shear beside
 // ±μp, and the Q–δ hysteresis loop drawn up to the current step.
 import { solve_cattaneo_mindlin_json } from "./pkg/contact2d_web.js";
-import { COLOURS } from "./chart.js";
+import { COLOURS, globalSlip } from "./chart.js";
 
 export const CYCLE_STEPS = 10;
 const SHEAR_MM = 0.01;
@@ -36,6 +36,10 @@ export function drawCycleStep(view, k, ui, loopCanvas, chart) {
   // The loading's slip sign (its first step with slip); the other sign is reverse slip.
   const loading = steps[1].contacts.roller.profile.state.find((s) => s.startsWith("slip")) || "slip+";
   const reverse = loading === "slip+" ? "slip-" : "slip+";
+  // Their colours and names as the mesh shows them: by the global direction of the sliding
+  // (the flat contact has one tangent).
+  const tangent = (view.pairs.tangent || [])[0];
+  const [gLoading, gReverse] = [globalSlip(loading, tangent), globalSlip(reverse, tangent)];
   // The pairs coloured by this step's states (matched on the master nodes' x); the deformed
   // shape drawn is the last step's.
   const stateAt = new Map(profile.x.map((x, i) => [x.toFixed(9), profile.state[i]]));
@@ -50,8 +54,10 @@ export function drawCycleStep(view, k, ui, loopCanvas, chart) {
       { x: xs, y: profile.pressure.map((p) => mu * p), colour: "#888", label: "+μp" },
       { x: xs, y: profile.pressure.map((p) => -mu * p), colour: "#bbb", label: "−μp" },
       { x: xs, y: pick((s) => s === "stick"), colour: "#1f77b4", label: "q, stick", points: true },
-      { x: xs, y: pick((s) => s === loading), colour: COLOURS[loading], label: "q, slip as first loaded", points: true },
-      { x: xs, y: pick((s) => s === reverse), colour: COLOURS[reverse], label: "q, slip the other way", points: true },
+      { x: xs, y: pick((s) => s === loading), colour: COLOURS[gLoading.key], label: `q, ${gLoading.name} (as first loaded)`,
+        points: true },
+      { x: xs, y: pick((s) => s === reverse), colour: COLOURS[gReverse.key], label: `q, ${gReverse.name} (the other way)`,
+        points: true },
     ],
     xlabel: "x / a", ylabel: "shear q, MPa", xrange: [-1.5, 1.5],
   }, `Mindlin–Deresiewicz cycle, step ${k} of ${steps.length - 1}: the shear q along the contact between ±μp; ` +
@@ -60,13 +66,17 @@ export function drawCycleStep(view, k, ui, loopCanvas, chart) {
   const delta = view.cycle_shear.map((s) => s * SHEAR_MM);
   chart(loopCanvas, {
     series: [
-      { x: delta.slice(1, k + 1), y: Q.slice(1, k + 1), colour: "#6b4c9a", label: "Q(δ), computed" },
+      { x: delta.slice(0, 2), y: Q.slice(0, 2), colour: "#999", label: "first loading 0 → +A (one step)" },
+      { x: delta.slice(1, k + 1), y: Q.slice(1, k + 1), colour: "#6b4c9a", label: "Q(δ), computed",
+        fill: "rgba(107, 76, 154, 0.25)" },
       { x: [delta[k]], y: [Q[k]], colour: "#d62728", label: "now", points: true },
     ],
     xlabel: "δ: sideways displacement of the roller's top, mm", ylabel: "Q, N/mm",
     xrange: [-1.1 * Math.abs(delta[1]), 1.1 * Math.abs(delta[1])],
   });
   const count = (s) => profile.state.filter((t) => t === s).length;
+  // The ratio beside the slider follows the cycle (not the slider's own solve).
+  ui.output("cm-ratio-out", Q[k] / (mu * P), `${(Q[k] / (mu * P)).toFixed(3)} (cycle step ${k})`);
   ui.banner(null);
   ui.table([
     ["step of the cycle", "cycle_step", k], ["δ, mm", "delta", delta[k]], ["Q, N/mm", "Q", Q[k]],

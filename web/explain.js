@@ -2,12 +2,14 @@
 // page, the materials and dimensions, and the caveats a lecturer should know. Plain HTML strings.
 
 const COULOMB = `<h3>Coulomb's law at each pair</h3>
-<p>p ≥ 0 is the contact pressure, q the shear (tangential traction), μ the friction coefficient.
+<p>p ≥ 0 is the contact pressure (positive in compression, and so plotted), q the shear (tangential traction), μ the friction coefficient.
 Where the bodies touch, <b>|q| ≤ μ p</b>:</p>
 <ul>
 <li><span class="key stick">stick</span>: |q| &lt; μ p, no relative sliding;</li>
-<li><span class="key slip">slip +</span> <span class="key slipm">slip −</span>: |q| = μ p, the surfaces slide
-(in the + or − tangential direction of the pair), q opposes the sliding;</li>
+<li><span class="key slip">slip +x</span> <span class="key slipm">slip −x</span>: |q| = μ p, the surfaces slide,
+q opposes the sliding. The sign is the global direction in which the surface carrying the dots (the pair's
+master side) slides over the other body: red towards +x, orange towards −x (+y / −y where the surface is
+steeper than 45°). Pushing a block towards +x shows “slip +x”.</li>
 <li><span class="key free">free</span> (separation): a gap is open, p = q = 0;</li>
 <li><span class="key contact">contact</span>: touching without friction (μ = 0): q = 0, nothing can stick.</li>
 </ul>`;
@@ -92,7 +94,10 @@ export const EXPLAIN = {
   (ten steps each way, the press held). After each reversal the shear must change by 2μp before a pair slips
   the other way, so reverse slip (orange) grows in from both edges while the middle sticks, and Q(δ) traces a
   hysteresis loop: by Masing's rule its unloading branch is the loading curve doubled and reflected, so
-  Q(−A) = −Q(+A) and the loop closes at +A. Its area is the energy friction dissipates per cycle.</p>
+  Q(−A) = −Q(+A) and the loop closes at +A. Its area (shaded) is the energy friction dissipates per cycle.
+  Below A = 0.615 (partial slip throughout) the loop is thin, 1–3 % of its box; the default A = 0.75 reaches
+  full sliding at the ends of the stroke (gross slip) and the loop opens wide. The first loading 0 → +A is one
+  load step (drawn grey).</p>
   <h3>Caveats</h3><ul><li>When Q reaches μP no pair sticks: the page says “full sliding”; moving further only adds slip.</li>
   <li>L0 places the stick ends to about one cell (a/4): c/a runs 0.03–0.09 below the closed form.</li></ul>`,
 

@@ -27,17 +27,42 @@ function drawInterface(view, ui, name, caption) {
   return c;
 }
 
+/** The solver's status in words (the report's `status`, and its `not_held` object). */
+export function statusWords(summary) {
+  const n = summary.not_held;
+  switch (summary.status) {
+    case "converged": return "converged: every pair satisfies the contact conditions and Coulomb's law";
+    case "not_held": return n
+      ? `not held: at load step ${n.step} friction on “${n.contact}” cannot hold the ${n.body}; it slides away ` +
+        `(the load demands ${n.ratio.toFixed(2)} × the friction force μΣλ available), so that step has no solution`
+      : "not held: friction cannot hold a body held only by contact; it slides away";
+    case "max_iterations": return "not converged: the iteration limit was reached";
+    case "infeasible": return "infeasible: the contact conditions cannot all be met";
+    case "numerical": return "numerical failure of the solver";
+    case "inadmissible": return "inadmissible: a computed state breaks the contact conditions";
+    case "penalised": return "penalised: held only by the stabilising springs";
+    default: return String(summary.status);
+  }
+}
+
+/** The banner of a run that did not converge (null when it did). */
+const unsolved = (view) => (view.summary.status === "converged" ? null : `Solver: ${statusWords(view.summary)}.`);
+
 function rows(view, name, extra = []) {
   const s = view.summary, c = s.contacts[name];
+  // A run that did not converge has no equilibrium to report: its forces and lengths are not
+  // shown (a dash), only the status in words.
+  const ok = s.status === "converged";
+  const v = (x) => (ok ? x : null);
   return [
     ...extra,
-    ["contact length, mm", "contact_length", c.contact_length],
+    ["contact length, mm", "contact_length", v(c.contact_length)],
     // Without friction on the interface nothing sticks: no stick length.
-    ["stick length, mm", "stick_length", view.pairs.state.includes("contact") ? null : c.stick_length],
-    ["normal force Σλ, N/mm", "normal_force", c.normal_force],
-    ["tangential force Στ, N/mm", "tangential_force", c.tangential_force],
-    ["largest pressure, MPa", "max_pressure", c.max_pressure],
-    ["status", "status", s.status], ["load steps", "steps", s.steps.length], ["pairs", "pairs", s.pairs],
+    ["stick length, mm", "stick_length", view.pairs.state.includes("contact") ? null : v(c.stick_length)],
+    ["normal force Σλ, N/mm", "normal_force", v(c.normal_force)],
+    ["tangential force Στ, N/mm", "tangential_force", v(c.tangential_force)],
+    ["largest pressure, MPa", "max_pressure", v(c.max_pressure)],
+    ["status", "status", statusWords(s)], ["load steps", "steps", s.steps.length], ["pairs", "pairs", s.pairs],
   ];
 }
 
@@ -46,6 +71,8 @@ const frictionSlider = (value) => ({ key: "mu", id: "g-mu", label: "friction μ"
 
 const pinLug = {
   title: "Pin in a lug",
+  short: "Pin in a lug",
+  keys: ["normal_force", "tangential_force", "max_pressure"],
   controls: [
     frictionSlider(0.2),
     { key: "force", id: "g-force", label: "pin force on the half model, N/mm", kind: "range", min: 250, max: 2000,
@@ -57,6 +84,7 @@ const pinLug = {
     ui.mesh(view, null);
     drawInterface(view, ui, "bore", "Along the pin's contact arc: pressure and shear (the pin crosses the 0.1 mm " +
       "clearance, then bears on the side of the lug's end).");
+    ui.banner(unsolved(view));
     ui.table(rows(view, "bore", [["pin force (half model), N/mm", "force", Number(v.force)]]));
   },
 };
@@ -66,6 +94,8 @@ const lame = (delta) => 2e5 * delta * (1000 ** 2 - 500 ** 2) / (2 * 500 * 1000 *
 
 const interferenceFit = {
   title: "Interference fit",
+  short: "Interference fit",
+  keys: ["p_lame", "max_pressure", "status"],
   controls: [
     { key: "delta", id: "g-delta", label: "radial interference δ, mm", kind: "range", min: 0.05, max: 1.2, step: 0.05,
       value: 0.65, show: (v) => Number(v).toFixed(2) },
@@ -76,15 +106,23 @@ const interferenceFit = {
   draw(view, ui, v) {
     ui.mesh(view, null);
     drawInterface(view, ui, "fit", "Along the bore: the contact pressure (uniform in Lamé's solution) and shear.");
+    ui.banner(unsolved(view));
     ui.table(rows(view, "fit", [["Lamé pressure E δ (b² − a²)/(2 a b²), MPa", "p_lame", lame(Number(v.delta))]]));
   },
 };
 
-// The incline's threshold (rigid-body statics with Coulomb): F/G = (tan α + μ)/(1 − μ tan α).
-const threshold = (mu) => (0.1 + mu) / (1 - mu * 0.1);
+// The incline's two limits (rigid-body statics with Coulomb, tan α = 0.1, a horizontal push F):
+// pushed up the slope when F cos α − G sin α > μ (G cos α + F sin α), i.e.
+// F/G > (tan α + μ)/(1 − μ tan α); sliding down when G sin α − F cos α > μ (G cos α + F sin α),
+// i.e. F/G < (tan α − μ)/(1 + μ tan α) (only when tan α > μ: then the weight alone slides it).
+const TAN_ALPHA = 0.1;
+const threshold = (mu) => (TAN_ALPHA + mu) / (1 - mu * TAN_ALPHA);
+export const lowerThreshold = (mu) => (TAN_ALPHA - mu) / (1 + mu * TAN_ALPHA);
 
 const inclinePush = {
   title: "Block on an incline",
+  short: "Incline",
+  keys: ["threshold", "tangential_force", "status"],
   controls: [
     frictionSlider(0.3),
     { key: "push", id: "g-push", label: "push F/G (horizontal force over weight)", kind: "range", min: 0, max: 0.7,
@@ -96,17 +134,30 @@ const inclinePush = {
   draw(view, ui, v) {
     ui.mesh(view, null);
     drawInterface(view, ui, "incline", "Along the block's base: pressure and shear (the stick zone shrinks as F grows).");
-    const limit = threshold(Number(v.mu));
-    ui.banner(Number(v.push) >= limit
-      ? `F/G = ${num(v.push)} is at or past the sliding threshold (tan α + μ)/(1 − μ tan α) = ${limit.toFixed(4)}: ` +
-        "no equilibrium exists, the block slides up the slope (a status other than converged is the expected answer)."
-      : null);
-    ui.table(rows(view, "incline", [["sliding threshold F/G (statics)", "threshold", limit]]));
+    const mu = Number(v.mu), push = Number(v.push), limit = threshold(mu), lower = lowerThreshold(mu);
+    const statics = `Statics (tan α = 0.1, μ = ${num(mu)}): the block holds for ` +
+      `${lower > 0 ? `${lower.toFixed(4)} = (tan α − μ)/(1 + μ tan α) ≤ ` : ""}F/G ≤ (tan α + μ)/(1 − μ tan α) = ` +
+      `${limit.toFixed(4)}.`;
+    let why = null;
+    if (TAN_ALPHA > mu && push < lower) {
+      why = `F/G = ${num(push)} is below (tan α − μ)/(1 + μ tan α) = ${lower.toFixed(4)}` +
+        ` (tan α = 0.1 > μ = ${num(mu)}: unpushed, the weight alone slides the block down): ` +
+        "no equilibrium, the block slides down the slope.";
+    } else if (push >= limit) {
+      why = `F/G = ${num(push)} is at or past (tan α + μ)/(1 − μ tan α) = ${limit.toFixed(4)}: ` +
+        "no equilibrium, the push slides the block up the slope.";
+    }
+    const status = view.summary.status;
+    ui.banner(why || status !== "converged" ? `${why || statics} Solver: ${statusWords(view.summary)}.` : null);
+    ui.table(rows(view, "incline", [["holds from F/G (statics)", "threshold_low", lower > 0 ? lower : 0],
+      ["slides up from F/G (statics)", "threshold", limit]]));
   },
 };
 
 const twoBlocks = {
   title: "Two blocks: press, then slide",
+  short: "Two blocks",
+  keys: ["mu_p", "tangential_force", "status"],
   controls: [
     frictionSlider(0.3),
     { key: "slide", id: "g-slide", label: "slide of the top, × 0.01 mm", kind: "range", min: 0, max: 1.5, step: 0.05,
@@ -119,9 +170,9 @@ const twoBlocks = {
     ui.mesh(view, null);
     const c = drawInterface(view, ui, "joint", "Along the joint: pressure and shear.");
     const slipping = view.pairs.state.every((st) => st === "free" || st.startsWith("slip"));
-    ui.banner(slipping && Number(v.mu) > 0 && Number(v.slide) > 0
+    ui.banner(unsolved(view) || (slipping && Number(v.mu) > 0 && Number(v.slide) > 0
       ? `Full sliding: every pair slips and Στ = μ Σλ (${Math.abs(c.tangential_force).toPrecision(5)} = ` +
-        `${num(v.mu)} × ${c.normal_force.toPrecision(5)}).` : null);
+        `${num(v.mu)} × ${c.normal_force.toPrecision(5)}).` : null));
     ui.table(rows(view, "joint", [["μ P (full sliding), N/mm", "mu_p", Number(v.mu) * 1000]]));
   },
 };
@@ -129,6 +180,7 @@ const twoBlocks = {
 /** A user's scene: the files chosen or dropped on the page, solved with the CLI's limits. */
 const userScene = {
   title: "Your scene (.toml + .msh)",
+  short: "Your scene",
   controls: [],
   user: true,
   describe: () => "your scene as written in its file",
@@ -136,7 +188,8 @@ const userScene = {
     ui.mesh(view, null);
     const names = Object.keys(view.summary.contacts);
     if (names.length) drawInterface(view, ui, names[0], `Along interface ${names[0]}: pressure and shear.`);
-    ui.table(names.length ? rows(view, names[0]) : [["status", "status", view.summary.status]]);
+    ui.banner(unsolved(view));
+    ui.table(names.length ? rows(view, names[0]) : [["status", "status", statusWords(view.summary)]]);
   },
 };
 

@@ -38,3 +38,6 @@ timeout 600 node web/tests/browser.mjs web/out/reference.json
 
 echo "== headless Chromium: issue 24's defects (state, readability, URL, export, a user's scene)"
 timeout 900 node web/tests/browser_page.mjs web/out/reference.json
+
+echo "== headless Chromium: issue 42 (the smaller items, each scene's limits)"
+timeout 600 node web/tests/browser_teaching.mjs

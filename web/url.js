@@ -35,7 +35,8 @@ export function readUrl(search, scenes, common, fallback) {
   let scene = fallback;
   if (q.has("scene")) {
     const s = q.get("scene");
-    if (scenes[s]) scene = s;
+    // Own keys only: "__proto__", "constructor" … are no scenes.
+    if (Object.hasOwn(scenes, s)) scene = s;
     else notes.push(`scene=${s}: no such scene (${Object.keys(scenes).join(", ")}); showing ${fallback}`);
   }
   const controls = [...scenes[scene].controls, ...common];

@@ -1,5 +1,6 @@
 // The screenshots of docs/teaching.md (docs/figures/teaching_*.png), at projector and phone
 // sizes: node web/tests/doc_figures.mjs (after web/build.sh; the page must pass web/test.sh).
+import { mkdirSync } from "node:fs";
 import { join } from "node:path";
 import { launch, newPage, serve, web } from "./harness.mjs";
 
@@ -13,6 +14,19 @@ const shots = [
   ["teaching_pin_lug_1366x768.png", { width: 1366, height: 768 }, "?scene=pin_lug&mu=0.2"],
   ["teaching_cycle_1366x768.png", { width: 1366, height: 768 }, "?scene=cattaneo_mindlin&amp=0.45&projector=1", 14],
 ];
+// The ten-minute plan of docs/teaching.md in projector mode at 1366×768, one shot per row,
+// written at 0.6 × scale (small PNGs in docs/figures/teaching/).
+const plan = { width: 1366, height: 768, deviceScaleFactor: 0.6 };
+shots.push(
+  ["teaching/plan_0_two_blocks.png", plan, "?scene=two_blocks_press_slide&mu=0.3&slide=1&projector=1"],
+  ["teaching/plan_1_cattaneo_mindlin.png", plan, "?scene=cattaneo_mindlin&shear=0.45&projector=1"],
+  ["teaching/plan_3_cycle.png", plan, "?scene=cattaneo_mindlin&amp=0.45&projector=1", 14],
+  ["teaching/plan_5_plate_mu03.png", plan, "?mu=0.3&projector=1"],
+  ["teaching/plan_7_table2_u1.png", plan, "?mu=0.3&eps=0.05&load=0.3838&projector=1"],
+  ["teaching/plan_8_incline_past.png", plan, "?scene=incline_push&mu=0.3&push=0.45&projector=1"],
+  ["teaching/plan_9_pin_lug.png", plan, "?scene=pin_lug&mu=0.2&projector=1"],
+);
+mkdirSync(join(figures, "teaching"), { recursive: true });
 try {
   for (const [name, viewport, query, cycleStep] of shots) {
     const page = await newPage(browser, [], viewport);
@@ -23,7 +37,7 @@ try {
       await page.click("#cycle");
       await page.waitForFunction((k) => window.contact2dPage.cycleStep === k, { timeout: 60000 }, cycleStep);
       await page.click("#cycle"); // stop there
-      await page.$eval("#profile", (c) => c.scrollIntoView({ block: "start" }));
+      if (viewport.deviceScaleFactor !== 0.6) await page.$eval("#profile", (c) => c.scrollIntoView({ block: "start" }));
     }
     await page.screenshot({ path: join(figures, name) });
     console.log(`docs/figures/${name}`);

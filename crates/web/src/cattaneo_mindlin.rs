@@ -227,7 +227,7 @@ pub fn cattaneo_mindlin_view(mesh_file: &str, outcome: &GenericOutcome) -> Resul
     let (pairs, mesh) = match outcome.history.steps.last() {
         Some(step) => (pairs_view(problem, &step.solution, mu), mesh_view(problem, &step.solution)),
         None => (
-            PairsView { master: vec![], state: vec![], normal_force: vec![] },
+            PairsView::empty(),
             MeshView { points: vec![], edges: vec![], edge_body: vec![], bodies: vec![], displacement: vec![] },
         ),
     };

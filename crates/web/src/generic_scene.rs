@@ -209,11 +209,12 @@ pub fn generic_view(mesh_file: &str, outcome: &GenericOutcome) -> GenericView {
                 master: problem.pairs.iter().map(|p| p.master.0).collect(),
                 state,
                 normal_force: solution.normal_force.clone(),
+                tangent: problem.pairs.iter().map(|p| p.tangent).collect(),
             };
             (pairs, mesh_view(problem, solution))
         }
         None => (
-            PairsView { master: vec![], state: vec![], normal_force: vec![] },
+            PairsView::empty(),
             MeshView { points: vec![], edges: vec![], edge_body: vec![], bodies: vec![], displacement: vec![] },
         ),
     };

@@ -136,7 +136,7 @@ pub fn hertz_view(params: &HertzParams, mesh_file: &str, outcome: &GenericOutcom
     let (pairs, mesh) = match outcome.history.steps.last() {
         Some(step) => (pairs_view(problem, &step.solution, friction), mesh_view(problem, &step.solution)),
         None => (
-            PairsView { master: vec![], state: vec![], normal_force: vec![] },
+            PairsView::empty(),
             MeshView { points: vec![], edges: vec![], edge_body: vec![], bodies: vec![], displacement: vec![] },
         ),
     };

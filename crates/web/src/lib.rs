@@ -9,7 +9,7 @@
 //! solve_flagship({"friction": 0.3, "stiffness_ratio": 1, "eps": 0, "refinement": 16,
 //!                 "load": 1, "variant": "hole_master"})
 //!   → {summary (the generic report; l, b, P, Φ, σ*, K under paper), published, hole {eta, s, hoop, p, q, state},
-//!      insert {...}, pairs {master, state, normal_force}, mesh {points, edges, displacement}}
+//!      insert {...}, pairs {master, state, normal_force, tangent}, mesh {points, edges, displacement}}
 //! solve_hertz({"force": 35000, "level": "L1"})
 //!   → {summary (generic report with the interface profile), closed_form {a, p0, x, pressure},
 //!      pairs, mesh}

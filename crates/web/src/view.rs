@@ -6,7 +6,8 @@
 //! edges         [a, m, b, a, m, b, ...]        element edges, each once: end nodes a, b and the
 //!                                              mid node m (m = a on linear edges)
 //! displacement  [u1, v1, u2, v2, ...]          per node; the page draws X = x + β u
-//! pairs         master node, state, λ          state: free, contact (frictionless), stick, slip+, slip-
+//! pairs         master node, state, λ, tangent state: free, contact (frictionless), stick, slip+, slip-
+//!                                              (slip± along ±tangent, the pair's global unit tangent)
 //! ```
 
 use std::collections::BTreeSet;
@@ -40,6 +41,17 @@ pub struct PairsView {
     pub state: Vec<&'static str>,
     /// Each pair's normal force λ (≥ 0 in compression).
     pub normal_force: Vec<f64>,
+    /// Each pair's unit tangent `t = (−n_y, n_x)` in the global frame (`n` out of the slave
+    /// body): `slip+` is the master node sliding along `+t` relative to the slave surface, so
+    /// the page names the slip by the global direction `±t` (e.g. "slip → +x").
+    pub tangent: Vec<[f64; 2]>,
+}
+
+impl PairsView {
+    /// No pairs (a run with no solved step).
+    pub fn empty() -> Self {
+        Self { master: vec![], state: vec![], normal_force: vec![], tangent: vec![] }
+    }
 }
 
 /// The mesh view of `problem` displaced by `solution`.
@@ -80,5 +92,6 @@ pub fn pairs_view(problem: &ContactProblem, solution: &ContactSolution, friction
         master: problem.pairs.iter().map(|p| p.master.0).collect(),
         state: solution.state.iter().map(|s| state_label(*s, friction)).collect(),
         normal_force: solution.normal_force.clone(),
+        tangent: problem.pairs.iter().map(|p| p.tangent).collect(),
     }
 }
