@@ -209,6 +209,8 @@ fn check_stages(stages: &[Stage], total: usize) -> Result<(), ContactError> {
 fn with_held(stage: &Stage, u: &[f64]) -> Result<(crate::ContactProblem, bool), ContactError> {
     let problem = &stage.built.problem;
     let dofs = &problem.system.dofs;
+    // The position reached, in the stage's DOFs (`un`, `ut` at a framed node).
+    let u = dofs.to_local(u);
     let held: Vec<f64> = dofs
         .constrained_dofs()
         .iter()

@@ -7,10 +7,11 @@
 use contact2d_element::{
     ElementError, ElementType, Formulation, GaussRule, Kinematics, Material, element_stiffness_with, map_point,
 };
+use contact2d_mesh::frames::{NodeFrames, node_frames};
 use contact2d_mesh::{CellKind, Mesh, NodeId};
 use nalgebra::DMatrix;
 
-use crate::dof::{Component, Dof, DofMap};
+use crate::dof::{Component, Dof, DofMap, Frame};
 use crate::error::FemError;
 
 /// Index of a body in its model.
@@ -129,6 +130,10 @@ pub struct Model {
     pub node_dirichlet: Vec<(Dof, f64)>,
     /// Edge loads.
     pub edge_loads: Vec<EdgeLoad>,
+    /// The node frames of the curves with a [`Component::Normal`] / [`Component::Tangent`]
+    /// condition ([`contact2d_mesh::frames::node_frames`]), by group: those nodes' DOFs are
+    /// `(un, ut)` ([`crate::dof`]).
+    pub local_frames: Vec<(String, NodeFrames)>,
     /// Whether a body piece that the Dirichlet conditions leave free to move rigidly is
     /// accepted (held by contact; assembly then pins it at as many DOFs as it has free rigid modes,
     /// pins whose forces the contact solve drives to zero, see
@@ -158,6 +163,7 @@ impl Model {
             dirichlet: vec![],
             node_dirichlet: vec![],
             edge_loads: vec![],
+            local_frames: vec![],
             allow_floating: false,
         }
     }
@@ -282,14 +288,21 @@ impl Model {
         Ok(())
     }
 
-    /// Prescribes `component = value` on every node of the physical group `group`.
+    /// Prescribes `component = value` on every node of the physical group `group`; a local
+    /// component (`un`, `ut`) gives the group's nodes their curve frame
+    /// ([`contact2d_mesh::frames::node_frames`]).
     ///
     /// # Errors
-    /// Unknown group or a non-finite value.
+    /// Unknown group or a non-finite value; for `un` / `ut`, [`FemError::Mesh`] naming the group
+    /// if it is not a curve or has a cusp.
     pub fn fix(&mut self, group: &str, component: Component, value: f64) -> Result<(), FemError> {
         self.mesh.group(group)?;
         if !value.is_finite() {
             return Err(FemError::InvalidInput(format!("Dirichlet value on \"{group}\" is not finite")));
+        }
+        if component.is_local() && !self.local_frames.iter().any(|(g, _)| g == group) {
+            let frames = node_frames(&self.mesh, group)?;
+            self.local_frames.push((group.to_string(), frames));
         }
         self.dirichlet.push(Dirichlet { group: group.to_string(), component, value });
         Ok(())
@@ -299,8 +312,15 @@ impl Model {
     /// conditions by [`Model::dof_map`], as a group's).
     ///
     /// # Errors
-    /// A node out of range or a non-finite value.
+    /// A node out of range, a non-finite value or a local component (`un`, `ut` need a curve).
     pub fn fix_node(&mut self, node: NodeId, component: Component, value: f64) -> Result<(), FemError> {
+        if component.is_local() {
+            return Err(FemError::InvalidInput(format!(
+                "{} on node index {}: local directions are given on a curve (a group)",
+                component.name(),
+                node.0
+            )));
+        }
         if node.0 >= self.mesh.num_nodes() {
             return Err(FemError::InvalidInput(format!(
                 "Dirichlet value on node index {}: the mesh has {} nodes",
@@ -353,11 +373,14 @@ impl Model {
         active
     }
 
-    /// Numbers the DOFs, resolving the Dirichlet conditions.
+    /// Numbers the DOFs, resolving the Dirichlet conditions and the local frames.
     ///
     /// # Errors
-    /// [`FemError::ConflictingDirichlet`] when one DOF gets two different values.
+    /// [`FemError::ConflictingDirichlet`] when one DOF gets two different values;
+    /// [`FemError::LocalDirections`] for a node with a frame that is also held in `u1` / `u2`, or
+    /// that two curves give different frames.
     pub fn dof_map(&self) -> Result<DofMap, FemError> {
+        let frames = self.node_frames()?;
         let mut prescribed: Vec<(Dof, f64)> = vec![];
         for d in &self.dirichlet {
             for n in self.mesh.group_nodes(&d.group)? {
@@ -372,14 +395,75 @@ impl Model {
                 let node = w[0].0.node();
                 return Err(FemError::ConflictingDirichlet {
                     node_tag: self.mesh.node_tags.get(node).copied().unwrap_or(node as u64),
-                    component: if w[0].0.0 % 2 == 0 { "u1" } else { "u2" },
+                    component: match (w[0].0.0 % 2 == 0, frames.binary_search_by_key(&node, |f| f.0).is_ok()) {
+                        (true, false) => "u1",
+                        (false, false) => "u2",
+                        (true, true) => "un",
+                        (false, true) => "ut",
+                    },
                     first: w[0].1,
                     second: w[1].1,
                 });
             }
         }
         prescribed.dedup_by_key(|p| p.0);
-        Ok(DofMap::new(&self.active_nodes(), &prescribed))
+        let frames: Vec<(usize, Frame)> = frames.into_iter().map(|(n, f, _)| (n, f)).collect();
+        Ok(DofMap::new(&self.active_nodes(), &prescribed).with_frames(&frames))
+    }
+
+    /// The frame of every node of a curve with a local condition, sorted by node, with its
+    /// group; checked against the `u1` / `u2` conditions and the other curves' frames.
+    fn node_frames(&self) -> Result<Vec<(usize, Frame, &str)>, FemError> {
+        let mut frames: Vec<(usize, Frame, &str)> = vec![];
+        for (group, f) in &self.local_frames {
+            for ((node, n), t) in f.nodes.iter().zip(&f.normals).zip(&f.tangents) {
+                frames.push((node.0, Frame { n: *n, t: *t }, group.as_str()));
+            }
+        }
+        if frames.is_empty() {
+            return Ok(frames);
+        }
+        frames.sort_by_key(|f| f.0);
+        let tag = |node: usize| self.mesh.node_tags.get(node).copied().unwrap_or(node as u64);
+        for w in frames.windows(2) {
+            if w[0].0 == w[1].0 && w[0].1 != w[1].1 {
+                return Err(FemError::LocalDirections {
+                    group: w[1].2.to_string(),
+                    node_tag: tag(w[0].0),
+                    reason: format!(
+                        "the node is also on \"{}\" with another normal ({:?} vs {:?}): one node, one frame",
+                        w[0].2, w[0].1.n, w[1].1.n
+                    ),
+                });
+            }
+        }
+        frames.dedup_by_key(|f| f.0);
+        let framed = |node: usize| frames.binary_search_by_key(&node, |f| f.0).ok().map(|i| frames[i].2);
+        let global = self
+            .dirichlet
+            .iter()
+            .filter(|d| !d.component.is_local())
+            .map(|d| Ok((self.mesh.group_nodes(&d.group)?, d.component, format!("\"{}\"", d.group))))
+            .collect::<Result<Vec<_>, FemError>>()?;
+        let nodes = self.node_dirichlet.iter().map(|(d, _)| {
+            (vec![NodeId(d.node())], if d.0 % 2 == 0 { Component::X } else { Component::Y }, "a node".to_string())
+        });
+        for (nodes, component, by) in global.into_iter().chain(nodes) {
+            for n in nodes {
+                if let Some(group) = framed(n.0) {
+                    return Err(FemError::LocalDirections {
+                        group: group.to_string(),
+                        node_tag: tag(n.0),
+                        reason: format!(
+                            "the node is also held in {} by {by}: un / ut and u1 / u2 on one node are conditions in \
+                             two frames",
+                            component.name()
+                        ),
+                    });
+                }
+            }
+        }
+        Ok(frames)
     }
 }
 
