@@ -215,9 +215,35 @@ fn un_with_u1_in_one_fix_is_an_error_naming_the_key() {
 
 #[test]
 fn un_and_u1_on_one_node_from_two_fixes_is_an_error_naming_both() {
-    // The corner (0, 0) is on "bottom" (un) and on "left" (u1).
-    let e = error(&(fix("bottom", "un = 0.0") + &fix("left", "u1 = 0.0")), square());
+    // The corner (0, 0) is on "bottom" (un = 0.1) and on "left" (u1 = 0): conditions in two
+    // frames with a value that is not a zero support.
+    let e = error(&(fix("bottom", "un = 0.1") + &fix("left", "u1 = 0.0")), square());
     assert!(e.contains("un, ut") && e.contains("\"bottom\"") && e.contains("u1") && e.contains("\"left\""), "{e}");
+    // Two rollers along one direction at a node (un on "bottom", u2 on "left": both vertical at
+    // the corner) do not hold it in x1: an error as well.
+    let e = error(&(fix("bottom", "un = 0.0") + &fix("left", "u2 = 0.0")), square());
+    assert!(e.contains("un, ut") && e.contains("u2 by \"left\""), "{e}");
+}
+
+#[test]
+fn zero_supports_in_two_frames_hold_their_corner_fully() {
+    // un = 0 on the bottom and u1 = 0 on the left of a square pulled up by a traction on its top:
+    // the corner (0, 0) is held in both directions (a pin), as u1 = 0 / u2 = 0 there would; the
+    // same problem posed with u2 = 0 on the bottom (n = (0, −1): un = −u2) gives the same
+    // displacements to round-off (1e-12 of max |u|).
+    let local = run(
+        &(fix("bottom", "un = 0.0") + &fix("left", "u1 = 0.0")),
+        "[[load]]\ngroup = \"top\"\ntraction = [0.0, 1.0]",
+        square(),
+    );
+    let global = run(
+        &(fix("bottom", "u2 = 0.0") + &fix("left", "u1 = 0.0")),
+        "[[load]]\ngroup = \"top\"\ntraction = [0.0, 1.0]",
+        square(),
+    );
+    let (a, b) = (displacement(&local), displacement(&global));
+    let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    assert!(a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-12 * scale), "{a:?} vs {b:?}");
 }
 
 #[test]
@@ -237,4 +263,85 @@ fn un_at_a_cusp_is_an_error_naming_the_node() {
     });
     let e = error(&(fix("fold", "un = 0.0") + &fix("left", "u1 = 0.0")), mesh);
     assert!(e.contains("fix.0.un") && e.contains("cusp"), "{e}");
+}
+
+#[test]
+fn prescribed_un_on_two_tilted_edges_translate_the_sector_rigidly() {
+    // un = c · n on the two straight cut edges of the tilted sector (n: each edge's outward
+    // normal, c = (3, −2)·1e-3), no load: the rigid translation u = c meets both conditions and
+    // equilibrium, and the two normals hold every rigid mode, so it is the solution, exactly:
+    // every node's u = c to round-off (1e-12 of |c|); the reactions vanish (1e-9 of E |c|).
+    let deg = std::f64::consts::PI / 180.0;
+    let c = [3e-3, -2e-3];
+    let normal = |theta: f64, sign: f64| [-sign * theta.sin(), sign * theta.cos()];
+    let (n_start, n_end) = (normal(20.0 * deg, -1.0), normal(50.0 * deg, 1.0));
+    let value = |n: [f64; 2]| c[0] * n[0] + c[1] * n[1];
+    let fixes = fix("start", &format!("un = {:?}", value(n_start))) + &fix("end", &format!("un = {:?}", value(n_end)));
+    for kind in [CellKind::Quad8, CellKind::Tri3] {
+        let out = run(&fixes, "", annulus_sector(kind, [1.0, 2.0], [20.0 * deg, 50.0 * deg], 3, 3));
+        let u = displacement(&out);
+        let active = out.built.problem.model.active_nodes();
+        let size = c[0].hypot(c[1]);
+        for n in (0..active.len()).filter(|n| active[*n]) {
+            let d = [u[2 * n] - c[0], u[2 * n + 1] - c[1]];
+            assert!(d[0].hypot(d[1]) < 1e-12 * size, "{kind:?} node {n}: u = ({}, {})", u[2 * n], u[2 * n + 1]);
+        }
+        for (group, r) in &out.report.reactions {
+            let r = r.map(Option::unwrap);
+            assert!(r[0].hypot(r[1]) < 1e-9 * E * size, "{kind:?} {group}: {r:?}");
+        }
+    }
+}
+
+#[test]
+fn a_staged_un_holds_the_arc_where_the_step_before_left_it() {
+    // The quarter annulus under p in two steps (p/2, p); the outer arc held radially (un = 0)
+    // from step 2 on: its nodes' radial displacement stays where step 1 left it (to round-off,
+    // 1e-12 of it), its reaction is null in step 1 and the radial hoop-free support in step 2.
+    let fixes = fix("start", "un = 0.0") + &fix("end", "un = 0.0") + &fix("outer", "un = 0.0\nfrom_step = 2");
+    let text = format!(
+        "name = \"staged\"\nmesh = \"generated.msh\"\nplane = \"strain\"\n[[body]]\nregion = \"domain\"\n\
+         youngs_modulus = {E}\npoissons_ratio = {NU}\n{fixes}\n{PRESSURE}\n[loading]\nsteps = 2\npath_error = false\n"
+    );
+    let scene = GenericScene::from_toml_str(&text, Path::new("tests/generated.toml"), &[]).unwrap();
+    let mesh = annulus_sector(CellKind::Quad8, [1.0, 2.0], [0.0, std::f64::consts::FRAC_PI_2], 3, 6);
+    let out = solve_generic_on_mesh(&scene, mesh, &mut |_, _| {}).unwrap();
+    let model = &out.built.problem.model;
+    let radial = |step: usize, n: usize| {
+        let (u, x) = (&out.history.steps[step].solution.displacement, model.mesh.points[n]);
+        (u[2 * n] * x[0] + u[2 * n + 1] * x[1]) / x[0].hypot(x[1])
+    };
+    let outer = model.mesh.group_nodes("outer").unwrap();
+    for n in &outer {
+        let (first, second) = (radial(0, n.0), radial(1, n.0));
+        assert!(first > 0.0 && (second - first).abs() < 1e-12 * first, "node {}: {first:e} → {second:e}", n.0);
+    }
+    assert_eq!(out.report.steps.len(), 2);
+    assert!(out.report.steps[0].reactions["outer"].iter().all(Option::is_none));
+    assert!(out.report.steps[1].reactions["outer"].iter().all(Option::is_some));
+}
+
+#[test]
+fn un_on_a_contact_node_is_refused_naming_it() {
+    // The plate's left edge on un: its corner (0, 0) is a node of the contact's master edge.
+    let mut mesh = Mesh::default();
+    let plate = mapped_grid(
+        &MappedGrid { kind: CellKind::Quad4, nx: 4, ny: 2, region: "domain" },
+        |u, v| [10.0 * u, 5.0 * v],
+        |side, _| Some(side_name(side).to_string()),
+    );
+    contact2d_mesh::generate::append_prefixed(&mut mesh, &plate, "plate_");
+    let ground = mapped_grid(
+        &MappedGrid { kind: CellKind::Quad4, nx: 6, ny: 2, region: "domain" },
+        |u, v| [12.0 * u, -2.0 + 2.0 * v],
+        |side, _| Some(side_name(side).to_string()),
+    );
+    contact2d_mesh::generate::append_prefixed(&mut mesh, &ground, "ground_");
+    let text = "name = \"c\"\nmesh = \"generated.msh\"\nplane = \"strain\"\n[[body]]\nregion = \"plate_domain\"\n\
+                youngs_modulus = 1000.0\npoissons_ratio = 0.3\n[[fix]]\ngroup = \"plate_left\"\nun = 0.0\n\
+                [[load]]\ngroup = \"plate_top\"\npressure = 1.0\n[[contact]]\nname = \"floor\"\nmaster = \"plate_bottom\"\n\
+                slave = \"ground_top\"\nrigid = true\nfriction = 0.5\n[loading]\npath_error = false\n";
+    let scene = GenericScene::from_toml_str(text, Path::new("tests/generated.toml"), &[]).unwrap();
+    let e = solve_generic_on_mesh(&scene, mesh, &mut |_, _| {}).err().expect("refused").to_string();
+    assert!(e.contains("un / ut") && e.contains("contact node"), "{e}");
 }

@@ -378,16 +378,22 @@ impl Model {
     /// # Errors
     /// [`FemError::ConflictingDirichlet`] when one DOF gets two different values;
     /// [`FemError::LocalDirections`] for a node with a frame that is also held in `u1` / `u2`, or
-    /// that two curves give different frames.
+    /// that two curves give different frames, unless every condition there is a zero support
+    /// and their directions span the plane (a corner where two rollers meet): the node is then
+    /// held fully, `u = 0`, without a frame.
     pub fn dof_map(&self) -> Result<DofMap, FemError> {
-        let frames = self.node_frames()?;
+        let (frames, pinned) = self.node_frames()?;
         let mut prescribed: Vec<(Dof, f64)> = vec![];
+        let held_fully = |node: usize| !pinned.is_empty() && pinned.binary_search(&node).is_ok();
         for d in &self.dirichlet {
             for n in self.mesh.group_nodes(&d.group)? {
-                prescribed.push((Dof::of(n.0, d.component), d.value));
+                if !held_fully(n.0) {
+                    prescribed.push((Dof::of(n.0, d.component), d.value));
+                }
             }
         }
-        prescribed.extend_from_slice(&self.node_dirichlet);
+        prescribed.extend(self.node_dirichlet.iter().filter(|(d, _)| !held_fully(d.node())));
+        prescribed.extend(pinned.iter().flat_map(|&n| [(Dof(2 * n), 0.0), (Dof(2 * n + 1), 0.0)]));
         prescribed.sort_by_key(|p| p.0);
         for w in prescribed.windows(2) {
             // Exactly equal values (a corner shared by two groups) are consistent.
@@ -412,60 +418,88 @@ impl Model {
     }
 
     /// The frame of every node of a curve with a local condition, sorted by node, with its
-    /// group; checked against the `u1` / `u2` conditions and the other curves' frames.
-    fn node_frames(&self) -> Result<Vec<(usize, Frame, &str)>, FemError> {
-        let mut frames: Vec<(usize, Frame, &str)> = vec![];
+    /// group, and the nodes held fully (see [`Model::dof_map`]).
+    fn node_frames(&self) -> Result<(Vec<(usize, Frame, &str)>, Vec<usize>), FemError> {
+        let mut entries: Vec<(usize, Frame, &str)> = vec![];
         for (group, f) in &self.local_frames {
             for ((node, n), t) in f.nodes.iter().zip(&f.normals).zip(&f.tangents) {
-                frames.push((node.0, Frame { n: *n, t: *t }, group.as_str()));
+                entries.push((node.0, Frame { n: *n, t: *t }, group.as_str()));
             }
         }
-        if frames.is_empty() {
-            return Ok(frames);
+        if entries.is_empty() {
+            return Ok((vec![], vec![]));
         }
-        frames.sort_by_key(|f| f.0);
+        entries.sort_by_key(|f| f.0);
+        let mut nodes: Vec<usize> = entries.iter().map(|f| f.0).collect();
+        nodes.dedup();
+        // Every condition at a framed node: (direction, value, what gives it).
+        let mut conditions: Vec<Vec<([f64; 2], f64, String, bool)>> = vec![vec![]; nodes.len()];
+        let unit = |c: Component| if c.index() == 0 { [1.0, 0.0] } else { [0.0, 1.0] };
+        for d in &self.dirichlet {
+            for n in self.mesh.group_nodes(&d.group)? {
+                let Ok(k) = nodes.binary_search(&n.0) else { continue };
+                let direction = if d.component.is_local() {
+                    let Some((_, f, _)) = entries.iter().find(|e| e.0 == n.0 && e.2 == d.group) else { continue };
+                    if d.component.index() == 0 { f.n } else { f.t }
+                } else {
+                    unit(d.component)
+                };
+                let by = format!("{} by \"{}\"", d.component.name(), d.group);
+                conditions[k].push((direction, d.value, by, d.component.is_local()));
+            }
+        }
+        for (d, v) in &self.node_dirichlet {
+            if let Ok(k) = nodes.binary_search(&d.node()) {
+                let c = if d.0 % 2 == 0 { Component::X } else { Component::Y };
+                conditions[k].push((unit(c), *v, format!("{} by a node's value", c.name()), false));
+            }
+        }
         let tag = |node: usize| self.mesh.node_tags.get(node).copied().unwrap_or(node as u64);
-        for w in frames.windows(2) {
-            if w[0].0 == w[1].0 && w[0].1 != w[1].1 {
-                return Err(FemError::LocalDirections {
-                    group: w[1].2.to_string(),
-                    node_tag: tag(w[0].0),
-                    reason: format!(
-                        "the node is also on \"{}\" with another normal ({:?} vs {:?}): one node, one frame",
-                        w[0].2, w[0].1.n, w[1].1.n
-                    ),
-                });
+        let cross = |a: [f64; 2], b: [f64; 2]| a[0] * b[1] - a[1] * b[0];
+        let (mut frames, mut pinned) = (vec![], vec![]);
+        for (k, &node) in nodes.iter().enumerate() {
+            let mine: Vec<&(usize, Frame, &str)> = entries.iter().filter(|e| e.0 == node).collect();
+            let first = mine[0];
+            let other_frame = mine.iter().find(|e| {
+                let (a, b) = (e.1.n, first.1.n);
+                !(cross(a, b).abs() < PARALLEL && a[0] * b[0] + a[1] * b[1] > 0.0)
+            });
+            let global = conditions[k].iter().find(|c| !c.3);
+            if other_frame.is_none() && global.is_none() {
+                frames.push((node, first.1, first.2));
+                continue;
             }
-        }
-        frames.dedup_by_key(|f| f.0);
-        let framed = |node: usize| frames.binary_search_by_key(&node, |f| f.0).ok().map(|i| frames[i].2);
-        let global = self
-            .dirichlet
-            .iter()
-            .filter(|d| !d.component.is_local())
-            .map(|d| Ok((self.mesh.group_nodes(&d.group)?, d.component, format!("\"{}\"", d.group))))
-            .collect::<Result<Vec<_>, FemError>>()?;
-        let nodes = self.node_dirichlet.iter().map(|(d, _)| {
-            (vec![NodeId(d.node())], if d.0 % 2 == 0 { Component::X } else { Component::Y }, "a node".to_string())
-        });
-        for (nodes, component, by) in global.into_iter().chain(nodes) {
-            for n in nodes {
-                if let Some(group) = framed(n.0) {
-                    return Err(FemError::LocalDirections {
-                        group: group.to_string(),
-                        node_tag: tag(n.0),
-                        reason: format!(
-                            "the node is also held in {} by {by}: un / ut and u1 / u2 on one node are conditions in \
-                             two frames",
-                            component.name()
-                        ),
-                    });
+            let c = &conditions[k];
+            let zero = c.iter().all(|c| c.1 == 0.0);
+            let spans = c.iter().any(|a| c.iter().any(|b| cross(a.0, b.0).abs() > PARALLEL));
+            if zero && spans {
+                pinned.push(node);
+                continue;
+            }
+            let reason = match global {
+                Some(g) => format!(
+                    "the node is also held in {}: un / ut and u1 / u2 on one node are conditions in two frames \
+                     (allowed only where all are zero supports that hold the node in both directions)",
+                    g.2
+                ),
+                None => {
+                    let e = other_frame.copied().unwrap_or(first);
+                    format!(
+                        "the node is also on \"{}\" with another normal ({:?} vs {:?}): one node, one frame (two \
+                         curves may meet only where all their values are zero supports that hold the node in both \
+                         directions)",
+                        e.2, e.1.n, first.1.n
+                    )
                 }
-            }
+            };
+            return Err(FemError::LocalDirections { group: first.2.to_string(), node_tag: tag(node), reason });
         }
-        Ok(frames)
+        Ok((frames, pinned))
     }
 }
+
+/// Below this `|a × b|` two unit directions are one (1e-8 rad).
+const PARALLEL: f64 = 1e-8;
 
 fn check_formulation(body: &Body, formulation: Formulation) -> Result<(), FemError> {
     match body.elements.iter().position(|e| !formulation.supports(*e)) {
