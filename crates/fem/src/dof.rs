@@ -322,4 +322,39 @@ mod tests {
         assert_eq!(Dof::of(2, Component::Y), Dof(5));
         assert_eq!(map.restrict_free(&[1.0, 2.0, 0.0, 0.0, 3.0, 0.5]), vec![1.0, 2.0, 3.0]);
     }
+
+    /// `K' = Tᵀ K T` against the product of the full matrices (T block-diagonal, identity at the
+    /// unframed node), and `expand` / `restrict_*` as `T u'` / `Tᵀ u`: equal to round-off.
+    #[test]
+    fn a_frame_rotates_matrices_and_vectors_as_t_transpose_k_t() {
+        let a = 0.3f64;
+        let frame = Frame { n: [a.cos(), a.sin()], t: [-a.sin(), a.cos()] };
+        let map = DofMap::new(&[true, true], &[(Dof(2), 0.25)]).with_frames(&[(1, frame)]);
+        let k = nalgebra::DMatrix::from_fn(4, 4, |i, j| 1.0 + (i * 4 + j) as f64 + if i == j { 10.0 } else { 0.0 });
+        let k = &k + k.transpose();
+        let mut t = nalgebra::DMatrix::<f64>::identity(4, 4);
+        t[(2, 2)] = frame.n[0];
+        t[(3, 2)] = frame.n[1];
+        t[(2, 3)] = frame.t[0];
+        t[(3, 3)] = frame.t[1];
+        let mut rotated = k.clone();
+        map.rotate_cell_matrix([0, 1].into_iter(), &mut rotated);
+        assert!((rotated - t.transpose() * &k * &t).amax() < 1e-13 * k.amax());
+        // u' = (1, 2 | un = 0.25, ut = 3): u = T u'.
+        let u = map.expand(&[1.0, 2.0, 3.0], &[0.25]);
+        let expected = &t * nalgebra::DVector::from_vec(vec![1.0, 2.0, 0.25, 3.0]);
+        assert!(u.iter().zip(expected.iter()).all(|(a, b)| (a - b).abs() < 1e-15));
+        let back = map.restrict_free(&u);
+        assert!(back.iter().zip([1.0, 2.0, 3.0]).all(|(a, b)| (a - b).abs() < 1e-15), "{back:?}");
+        assert!((map.restrict_constrained(&u)[0] - 0.25).abs() < 1e-15);
+        // A reaction r' = 2 along n: r = 2 n, on both global DOFs of the node.
+        let r = map.reactions_global(&[2.0]);
+        assert!((r[2] - 2.0 * frame.n[0]).abs() < 1e-15 && (r[3] - 2.0 * frame.n[1]).abs() < 1e-15);
+        assert_eq!(map.reaction_dofs(), vec![Dof(2), Dof(3)]);
+        // Without a frame nothing changes.
+        let plain = DofMap::new(&[true, true], &[(Dof(2), 0.25)]);
+        let mut same = k.clone();
+        plain.rotate_cell_matrix([0, 1].into_iter(), &mut same);
+        assert_eq!(same, k);
+    }
 }
