@@ -419,8 +419,8 @@ impl Model {
 
     /// The frame of every node of a curve with a local condition, sorted by node, with its
     /// group, and the nodes held fully (see [`Model::dof_map`]).
-    fn node_frames(&self) -> Result<(Vec<(usize, Frame, &str)>, Vec<usize>), FemError> {
-        let mut entries: Vec<(usize, Frame, &str)> = vec![];
+    fn node_frames(&self) -> Result<(Vec<FramedNode<'_>>, Vec<usize>), FemError> {
+        let mut entries: Vec<FramedNode<'_>> = vec![];
         for (group, f) in &self.local_frames {
             for ((node, n), t) in f.nodes.iter().zip(&f.normals).zip(&f.tangents) {
                 entries.push((node.0, Frame { n: *n, t: *t }, group.as_str()));
@@ -433,7 +433,7 @@ impl Model {
         let mut nodes: Vec<usize> = entries.iter().map(|f| f.0).collect();
         nodes.dedup();
         // Every condition at a framed node: (direction, value, what gives it).
-        let mut conditions: Vec<Vec<([f64; 2], f64, String, bool)>> = vec![vec![]; nodes.len()];
+        let mut conditions: Vec<Vec<Condition>> = vec![vec![]; nodes.len()];
         let unit = |c: Component| if c.index() == 0 { [1.0, 0.0] } else { [0.0, 1.0] };
         for d in &self.dirichlet {
             for n in self.mesh.group_nodes(&d.group)? {
@@ -458,7 +458,7 @@ impl Model {
         let cross = |a: [f64; 2], b: [f64; 2]| a[0] * b[1] - a[1] * b[0];
         let (mut frames, mut pinned) = (vec![], vec![]);
         for (k, &node) in nodes.iter().enumerate() {
-            let mine: Vec<&(usize, Frame, &str)> = entries.iter().filter(|e| e.0 == node).collect();
+            let mine: Vec<&FramedNode<'_>> = entries.iter().filter(|e| e.0 == node).collect();
             let first = mine[0];
             let other_frame = mine.iter().find(|e| {
                 let (a, b) = (e.1.n, first.1.n);
@@ -497,6 +497,12 @@ impl Model {
         Ok((frames, pinned))
     }
 }
+
+/// A node, its frame and the group that gives it.
+type FramedNode<'a> = (usize, Frame, &'a str);
+
+/// A condition at a framed node: its unit direction, value, what gives it, whether local.
+type Condition = ([f64; 2], f64, String, bool);
 
 /// Below this `|a × b|` two unit directions are one (1e-8 rad).
 const PARALLEL: f64 = 1e-8;
