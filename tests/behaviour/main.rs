@@ -21,6 +21,7 @@ mod fretting_outputs;
 mod generic_outputs;
 mod generic_scenes;
 mod honest_status;
+mod local_directions;
 mod locking_warning;
 mod memory_flat;
 mod moment_balance_scenes;

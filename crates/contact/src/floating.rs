@@ -67,6 +67,7 @@ impl RigidModes {
                 let mut column = vec![0.0; n];
                 for &node in &piece.nodes {
                     let r = piece.mode_displacement(m, problem.model.mesh.points[node]);
+                    let r = dofs.frame(node).map_or(r, |f| f.to_local(r));
                     for (c, value) in r.into_iter().enumerate() {
                         if let contact2d_fem::DofKind::Free(i) = dofs.kind(contact2d_fem::Dof(2 * node + c)) {
                             column[i] = value;

@@ -99,6 +99,18 @@ pub(crate) enum SlaveKind {
     Rigid,
 }
 
+/// A contact node may not have a local frame (a `[[fix]]` with `un` / `ut`): its rows would need
+/// `B' = B T`, which the contact forces and reactions do not carry back.
+fn local_directions_refused(system: &LinearSystem, node: usize) -> Result<(), ContactError> {
+    match system.dofs.frame(node) {
+        None => Ok(()),
+        Some(_) => Err(ContactError::InvalidInput(format!(
+            "contact node index {node} is on a [[fix]] with un / ut: local directions on a contact node are not \
+             supported (fix it in u1 / u2, or end the curve of un / ut before the contact)"
+        ))),
+    }
+}
+
 fn pair_row(
     system: &LinearSystem,
     pair: &ContactPair,
@@ -107,6 +119,7 @@ fn pair_row(
 ) -> Result<PairRow, ContactError> {
     let mut row = PairRow::default();
     let mut push = |node: usize, scale: f64| -> Result<(), ContactError> {
+        local_directions_refused(system, node)?;
         for c in [Component::X, Component::Y] {
             let v = scale * dir[c.index()];
             if v == 0.0 {
@@ -163,6 +176,7 @@ fn integrated_row(
             _ => {}
         }
         let v = part(c);
+        local_directions_refused(system, n)?;
         for comp in [Component::X, Component::Y] {
             let value = v[comp.index()];
             if value == 0.0 {

@@ -29,7 +29,8 @@ use crate::problem::{ContactProblem, PairRow};
 use crate::solution::ContactSolution;
 
 impl ContactProblem {
-    /// Reactions at the constrained DOFs (per constrained index) of a solution under the load
+    /// Reactions at the constrained DOFs (per constrained index; in the local frame at a node
+    /// with one, see [`contact2d_fem::DofMap::reactions_global`]) of a solution under the load
     /// with pattern factors `factors`, the contact forces on constrained DOFs included:
     ///
     /// ```text
@@ -51,14 +52,16 @@ impl ContactProblem {
         let dofs = &self.system.dofs;
         let u = &solution.displacement;
         let u_free = dofs.restrict_free(u);
-        let u_c: Vec<f64> = dofs.constrained_dofs().iter().map(|d| u[d.0]).collect();
+        let u_c = dofs.restrict_constrained(u);
         // LinearSystem::reactions subtracts the model's own loads; add them back and subtract
-        // the patterns' instead.
+        // the patterns' instead (at a framed node, all in its local frame: f' = Tᵀ f).
         let mut r = self.system.reactions(&u_free, &u_c);
+        let load = dofs.to_local(&self.system.load);
+        let nodal: Vec<_> = self.patterns().iter().map(|p| dofs.to_local(&p.nodal)).collect();
         for (j, d) in dofs.constrained_dofs().iter().enumerate() {
-            r[j] += self.system.load[d.0];
-            for (p, f) in self.patterns().iter().zip(factors) {
-                r[j] -= f * p.nodal[d.0];
+            r[j] += load[d.0];
+            for (p, f) in nodal.iter().zip(factors) {
+                r[j] -= f * p[d.0];
             }
         }
         let forces = solution.normal_force.iter().zip(&self.normal_rows);

@@ -72,9 +72,12 @@ impl ProblemDescription {
                 )));
             }
             let built = self.build_stage(active)?;
-            let held = match before {
-                Some(before) => self.held_at_start(&built.problem.model, active, before)?,
-                None => vec![false; built.problem.system.dofs.num_global()],
+            let held = match (before, stages.last()) {
+                (Some(before), Some(previous)) => {
+                    let frames = (&previous.built.problem.system.dofs, &built.problem.system.dofs);
+                    self.held_at_start(&built.problem.model, active, before, frames)?
+                }
+                _ => vec![false; built.problem.system.dofs.num_global()],
             };
             stages.push(Stage { steps: steps.clone(), built, held });
             before = Some(active);
@@ -83,8 +86,17 @@ impl ProblemDescription {
         Ok(stages)
     }
 
-    /// The DOFs constrained by fixes `now` active, none of them `before` active.
-    fn held_at_start(&self, model: &Model, now: &[bool], before: &[bool]) -> Result<Vec<bool>, ContactError> {
+    /// The DOFs constrained by fixes `now` active, none of them `before` active; and both DOFs of
+    /// a node a newly active fix touches whose local frame (`un`, `ut`) changes between the
+    /// stages' DOF maps `frames` (before, now): its DOFs are other directions now, held where the
+    /// node is (its conditions there are zero supports, which the position reached satisfies).
+    fn held_at_start(
+        &self,
+        model: &Model,
+        now: &[bool],
+        before: &[bool],
+        frames: (&contact2d_fem::DofMap, &contact2d_fem::DofMap),
+    ) -> Result<Vec<bool>, ContactError> {
         let n = model.mesh.num_nodes() * 2;
         let (mut new, mut kept) = (vec![false; n], vec![false; n]);
         for ((f, _), before) in self.fixes.iter().zip(now).zip(before).filter(|((_, now), _)| **now) {
@@ -97,7 +109,16 @@ impl ProblemDescription {
                 }
             }
         }
-        Ok(new.iter().zip(&kept).map(|(n, k)| *n && !*k).collect())
+        let mut held: Vec<bool> = new.iter().zip(&kept).map(|(n, k)| *n && !*k).collect();
+        if frames.0.has_frames() || frames.1.has_frames() {
+            for node in 0..n / 2 {
+                if (new[2 * node] || new[2 * node + 1]) && frames.0.frame(node) != frames.1.frame(node) {
+                    held[2 * node] = true;
+                    held[2 * node + 1] = true;
+                }
+            }
+        }
+        Ok(held)
     }
 }
 
@@ -209,6 +230,8 @@ fn check_stages(stages: &[Stage], total: usize) -> Result<(), ContactError> {
 fn with_held(stage: &Stage, u: &[f64]) -> Result<(crate::ContactProblem, bool), ContactError> {
     let problem = &stage.built.problem;
     let dofs = &problem.system.dofs;
+    // The position reached, in the stage's DOFs (`un`, `ut` at a framed node).
+    let u = dofs.to_local(u);
     let held: Vec<f64> = dofs
         .constrained_dofs()
         .iter()

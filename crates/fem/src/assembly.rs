@@ -177,7 +177,7 @@ pub(crate) fn stabilise(
         };
         let mean = free.iter().map(|&(i, _)| diagonal(stiffness, i)).sum::<f64>() / free.len().max(1) as f64;
         let k = FLOATING_PIN_STIFFNESS * mean;
-        springs.extend(pin_dofs(model, piece, &free).into_iter().map(|i| (i, k)));
+        springs.extend(pin_dofs(model, dofs, piece, &free).into_iter().map(|i| (i, k)));
     }
     if springs.is_empty() {
         return springs;
@@ -196,14 +196,15 @@ pub(crate) fn stabilise(
 /// mode: each pick maximises the part of its row `(r_1(d), …, r_m(d))` (the modes' values at
 /// DOF `d`) orthogonal to the rows picked before (a column-pivoted QR of `Rᵀ`; ties go to the
 /// first DOF, so the choice is reproducible).
-fn pin_dofs(model: &Model, piece: &FloatingPiece, free: &[(usize, Dof)]) -> Vec<usize> {
+fn pin_dofs(model: &Model, dofs: &DofMap, piece: &FloatingPiece, free: &[(usize, Dof)]) -> Vec<usize> {
     let modes = piece.free_modes.len();
     let rows: Vec<Vec<f64>> = free
         .iter()
         .map(|&(_, d)| {
             let x = model.mesh.points[d.node()];
             let c = d.0 % 2;
-            (0..modes).map(|m| piece.mode_displacement(m, x)[c]).collect()
+            let local = |v: [f64; 2]| dofs.frame(d.node()).map_or(v, |f| f.to_local(v));
+            (0..modes).map(|m| local(piece.mode_displacement(m, x))[c]).collect()
         })
         .collect();
     let mut basis: Vec<Vec<f64>> = vec![];
@@ -237,7 +238,7 @@ fn scatter_cell(model: &Model, dofs: &DofMap, b: usize, i: usize, t: &mut Triple
     if !kinds.iter().any(|k| matches!(k, DofKind::Constrained(_))) {
         return Ok(());
     }
-    let k = element_matrix(model, b, i)?;
+    let k = element_matrix(model, dofs, b, i)?;
     scatter_constrained(&kinds, &k, t);
     Ok(())
 }
@@ -247,9 +248,13 @@ pub(crate) fn cell_kinds(model: &Model, dofs: &DofMap, b: usize, i: usize) -> Ve
     model.bodies[b].cell_dofs(i).map(|d| dofs.kind(d)).collect()
 }
 
-/// The stiffness matrix of cell `i` of body `b` ([`crate::model::Body::cell_stiffness`]).
-pub(crate) fn element_matrix(model: &Model, b: usize, i: usize) -> Result<DMatrix<f64>, FemError> {
-    model.bodies[b].cell_stiffness(&model.mesh, i)
+/// The stiffness matrix of cell `i` of body `b` ([`crate::model::Body::cell_stiffness`]) in the
+/// DOFs of `dofs`: `T_eᵀ K_e T_e` at nodes with a local frame ([`DofMap::rotate_cell_matrix`]).
+pub(crate) fn element_matrix(model: &Model, dofs: &DofMap, b: usize, i: usize) -> Result<DMatrix<f64>, FemError> {
+    let body = &model.bodies[b];
+    let mut k = body.cell_stiffness(&model.mesh, i)?;
+    dofs.rotate_cell_matrix(body.cell_nodes(i).iter().map(|n| n.0), &mut k);
+    Ok(k)
 }
 
 /// The `K_fc` and `K_cc` entries of a cell's matrix `k` as triplets, column by column.
@@ -379,10 +384,11 @@ impl LinearSystem {
         self.rhs_with(&self.load, prescribed)
     }
 
-    /// The right-hand side `f_f - K_fc u_c` for nodal loads `load` (global DOF order, e.g. one
-    /// load pattern's from [`assemble_edge_loads`]) and prescribed values `u_c`.
+    /// The right-hand side `f_f - K_fc u_c` for nodal loads `load` (global DOF order and
+    /// components, e.g. one load pattern's from [`assemble_edge_loads`]; `f' = Tᵀ f` at framed
+    /// nodes) and prescribed values `u_c`.
     pub fn rhs_with(&self, load: &[f64], prescribed: &[f64]) -> Vec<f64> {
-        let mut rhs: Vec<f64> = self.dofs.free_dofs().iter().map(|d| load[d.0]).collect();
+        let mut rhs: Vec<f64> = self.dofs.restrict_free(load);
         for (j, &uc) in prescribed.iter().enumerate() {
             if uc == 0.0 {
                 continue;
@@ -395,14 +401,16 @@ impl LinearSystem {
         rhs
     }
 
-    /// Reactions `r_c = K_cf u_f + K_cc u_c - f_c`, per constrained index.
+    /// Reactions `r_c = K_cf u_f + K_cc u_c - f_c`, per constrained index (in the local frame
+    /// at a framed node: [`DofMap::reactions_global`] turns them into global components).
     pub fn reactions(&self, u_free: &[f64], prescribed: &[f64]) -> Vec<f64> {
         let (fc, cc) = (self.coupling.as_ref(), self.constrained.as_ref());
+        let load = self.dofs.restrict_constrained(&self.load);
         (0..self.dofs.num_constrained())
             .map(|j| {
                 let from_free: f64 = fc.row_idx_of_col(j).zip(fc.val_of_col(j)).map(|(r, v)| v * u_free[r]).sum();
                 let from_fixed: f64 = cc.row_idx_of_col(j).zip(cc.val_of_col(j)).map(|(r, v)| v * prescribed[r]).sum();
-                from_free + from_fixed - self.load[self.dofs.constrained_dofs()[j].0]
+                from_free + from_fixed - load[j]
             })
             .collect()
     }

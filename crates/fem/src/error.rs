@@ -58,6 +58,17 @@ pub enum FemError {
         /// Value prescribed second.
         second: f64,
     },
+    /// Local directions (`un`, `ut`) that cannot hold: a node also held in `u1` / `u2`, or on two
+    /// curves with different normals.
+    #[error("local directions (un, ut) on \"{group}\" at node tag {node_tag}: {reason}")]
+    LocalDirections {
+        /// The group of the `un` / `ut` fix.
+        group: String,
+        /// The file's node tag.
+        node_tag: u64,
+        /// What conflicts.
+        reason: String,
+    },
     /// A body (or a disconnected piece of one) is not held against rigid motion.
     #[error(
         "body \"{body}\" is not constrained against rigid motion: {free_modes} rigid mode(s) free (piece containing node tag {node_tag})"

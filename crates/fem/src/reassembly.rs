@@ -87,7 +87,7 @@ impl ElementMatrices {
                 }
                 Ok(CellMatrix {
                     coords: model.bodies[b].cell_coords(&model.mesh, i),
-                    matrix: element_matrix(model, b, i)?,
+                    matrix: element_matrix(model, &system.dofs, b, i)?,
                     kinds,
                     scatter,
                 })
@@ -114,7 +114,7 @@ impl ElementMatrices {
             .zip(&self.cells)
             .map(
                 |(&(b, i), base)| {
-                    if base.moved(model, b, i) { element_matrix(model, b, i).map(Some) } else { Ok(None) }
+                    if base.moved(model, b, i) { element_matrix(model, &self.dofs, b, i).map(Some) } else { Ok(None) }
                 },
             )
             .collect::<Result<Vec<Option<DMatrix<f64>>>, FemError>>()?;

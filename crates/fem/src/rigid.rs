@@ -137,9 +137,12 @@ fn constraint_normal_matrix(model: &Model, dofs: &DofMap, nodes: &[usize]) -> (M
     let mut normal = Matrix3::<f64>::zeros();
     for (&n, p) in nodes.iter().zip(&pts) {
         let (x, y) = ((p[0] - centre[0]) / scale, (p[1] - centre[1]) / scale);
-        for (c, row) in [(Component::X, [1.0, 0.0, -y]), (Component::Y, [0.0, 1.0, x])] {
+        // The row of a constrained DOF along the unit direction e (e_1, e_2, or a framed node's
+        // n, t): (e_1, e_2, x e_2 − y e_1).
+        let directions = dofs.frame(n).map_or([[1.0, 0.0], [0.0, 1.0]], |f| [f.n, f.t]);
+        for (c, e) in [Component::X, Component::Y].into_iter().zip(directions) {
             if matches!(dofs.kind(Dof::of(n, c)), DofKind::Constrained(_)) {
-                let r = nalgebra::Vector3::from(row);
+                let r = nalgebra::Vector3::new(e[0], e[1], x * e[1] - y * e[0]);
                 normal += r * r.transpose();
             }
         }

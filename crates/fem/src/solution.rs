@@ -17,7 +17,8 @@ use crate::solve::CholeskySolver;
 pub struct Solution {
     /// Displacement of every DOF (zero at inactive nodes).
     pub displacement: Vec<f64>,
-    /// Reaction force at every constrained DOF (zero elsewhere).
+    /// Reaction force at every constrained DOF (zero elsewhere), in global components (`r = T r'`
+    /// at a node with a local frame: both components of a node held in `un` only).
     pub reactions: Vec<f64>,
 }
 
@@ -25,10 +26,7 @@ impl Solution {
     /// Builds the full solution from the free unknowns and the prescribed values.
     pub fn from_free(system: &LinearSystem, u_free: &[f64], prescribed: &[f64]) -> Solution {
         let displacement = system.dofs.expand(u_free, prescribed);
-        let mut reactions = vec![0.0; displacement.len()];
-        for (j, r) in system.reactions(u_free, prescribed).into_iter().enumerate() {
-            reactions[system.dofs.constrained_dofs()[j].0] = r;
-        }
+        let reactions = system.dofs.reactions_global(&system.reactions(u_free, prescribed));
         Solution { displacement, reactions }
     }
 

@@ -571,8 +571,9 @@ pub(crate) fn fixed_groups(scene: &GenericScene) -> Vec<FixedGroup> {
     let mut out: Vec<FixedGroup> = vec![];
     for f in &scene.fix {
         let Some(name) = &f.group else { continue };
-        // A rotation prescribes both components.
-        let turned = f.rotation.is_some();
+        // A rotation prescribes both components, and so does un / ut (its reaction `r = T r'`
+        // has both global components).
+        let turned = f.rotation.is_some() || f.un.is_some() || f.ut.is_some();
         let components = [f.u1.is_some() || turned, f.u2.is_some() || turned];
         let group = match out.iter().position(|g| g.name == *name) {
             Some(at) => &mut out[at],
@@ -592,7 +593,7 @@ pub(crate) fn fixed_groups(scene: &GenericScene) -> Vec<FixedGroup> {
     for group in &mut out {
         let Some(by_step) = group.components_by_step.as_mut() else { continue };
         for f in scene.fix.iter().filter(|f| f.group.as_deref() == Some(group.name.as_str())) {
-            let turned = f.rotation.is_some();
+            let turned = f.rotation.is_some() || f.un.is_some() || f.ut.is_some();
             let (from, until) = (f.from_step.unwrap_or(1), f.until_step.unwrap_or(steps));
             for c in by_step.iter_mut().take(until).skip(from.saturating_sub(1)) {
                 *c = [c[0] || f.u1.is_some() || turned, c[1] || f.u2.is_some() || turned];

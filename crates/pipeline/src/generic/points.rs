@@ -417,16 +417,33 @@ impl GenericScene {
         if f.group.is_some() == f.point.is_some() {
             return Err(self.fail(&format!("fix.{i}"), "give exactly one of group and point".into()));
         }
-        if f.u1.is_none() && f.u2.is_none() && f.rotation.is_none() {
+        if f.u1.is_none() && f.u2.is_none() && f.un.is_none() && f.ut.is_none() && f.rotation.is_none() {
             let (name, what) = match (&f.group, &f.point) {
-                (Some(g), _) => (g, "u1, u2 or both"),
+                (Some(g), _) => (g, "u1, u2, un, ut (un / ut: on a curve) or several"),
                 (_, p) => (p.as_ref().unwrap_or(&self.name), "u1, u2, rotation or several"),
             };
             return Err(self.fail(&format!("fix.{i}"), format!("fixes nothing on \"{name}\": give {what}")));
         }
         let about = f.about.iter().flatten();
-        if let Some(v) = f.u1.iter().chain(&f.u2).chain(&f.rotation).chain(about).find(|v| !v.is_finite()) {
+        let values = f.u1.iter().chain(&f.u2).chain(&f.un).chain(&f.ut).chain(&f.rotation);
+        if let Some(v) = values.chain(about).find(|v| !v.is_finite()) {
             return Err(self.fail(&format!("fix.{i}"), format!("value {v} is not finite")));
+        }
+        if let Some(local) = [("un", f.un), ("ut", f.ut)].iter().find(|(_, v)| v.is_some()).map(|(k, _)| *k) {
+            let other = [("u1", f.u1.is_some()), ("u2", f.u2.is_some()), ("rotation", f.rotation.is_some())]
+                .iter()
+                .chain(&[("point", f.point.is_some())])
+                .find(|(_, given)| *given)
+                .map(|(k, _)| *k);
+            if let Some(other) = other {
+                return Err(self.fail(
+                    &key(local),
+                    format!(
+                        "{local} (a direction of a curve's local frame, node by node) with {other} in one [[fix]]: a \
+                         node's DOFs are in one frame (give un / ut on a curve group, u1 / u2 elsewhere)"
+                    ),
+                ));
+            }
         }
         if let Some(name) = &f.point {
             let Some((_, p)) = self.point_named(name) else {

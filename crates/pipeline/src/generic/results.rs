@@ -538,6 +538,8 @@ fn dof_owners(problem: &contact2d_contact::ContactProblem) -> Vec<usize> {
 /// bodies (with the springs `D`, whose `K u` terms are rounded as well).
 fn body_energies(problem: &contact2d_contact::ContactProblem, owner: &[usize], u: &[f64]) -> (Vec<f64>, Vec<f64>, f64) {
     let dofs = &problem.system.dofs;
+    // The blocks are in the DOFs `u' = Tᵀ u` at framed nodes (`u` itself without frames).
+    let u = &*dofs.to_local(u);
     let (free, fixed) = (dofs.free_dofs(), dofs.constrained_dofs());
     // `K u` row by row first (each row's rigid-motion terms cancel there, to ε |K_i| |u|, as in
     // `K_e u_e`), then `½ Σ u_g (K u)_g` per body: summing the products `u_i K_ij u_j` one by
@@ -592,12 +594,15 @@ fn reactions_at_dofs(built: &BuiltProblem, s: &ContactSolution, factors: &[f64])
     for (j, d) in problem.system.dofs.constrained_dofs().iter().enumerate() {
         at_dof[d.0] = r[j];
     }
+    // `r = T r'` at framed nodes.
+    problem.system.dofs.to_global_in_place(&mut at_dof);
     Ok(at_dof)
 }
 
-/// `[R1, R2]`: the reactions (global DOF order) of every constrained DOF, each once.
+/// `[R1, R2]`: the reactions (global DOF order) of every constrained DOF, each once (both
+/// components of a framed node's).
 fn reactions_total(built: &BuiltProblem, at_dof: &[f64]) -> [f64; 2] {
-    built.problem.system.dofs.constrained_dofs().iter().fold([0.0; 2], |mut a, d| {
+    built.problem.system.dofs.reaction_dofs().iter().fold([0.0; 2], |mut a, d| {
         a[d.0 % 2] += at_dof[d.0];
         a
     })
@@ -646,7 +651,7 @@ fn reaction_moment_total(built: &BuiltProblem, at_dof: &[f64], centre: [f64; 2])
         .problem
         .system
         .dofs
-        .constrained_dofs()
+        .reaction_dofs()
         .iter()
         .map(|d| points.get(d.0 / 2).map_or(f64::NAN, |x| moment_of(*x, centre, d.0 % 2, at_dof[d.0])))
         .sum()

@@ -13,6 +13,7 @@
 //! group = "block_bottom"
 //! u1 = 0.0
 //! u2 = 0.0
+//! # un = 0.0, ut = 0.0            # or: normal / tangential to a curve, node by node
 //! [[load]]                          # force (total, per unit thickness), traction, pressure, or
 //! group = "cylinder_top"            # body_force (per unit volume) with group = a body's region
 //! force = [0.0, -35000.0]
@@ -128,6 +129,11 @@ pub struct FixEntry {
     pub u1: Option<f64>,
     /// Prescribed u2 (a translation with `rotation`).
     pub u2: Option<f64>,
+    /// Prescribed un, along the curve's normal (out of the body) node by node: the group must be
+    /// a curve ([`contact2d_mesh::frames::node_frames`]); not with `u1` / `u2` on the same node.
+    pub un: Option<f64>,
+    /// Prescribed ut, along the curve's tangent `e3 × n` node by node (as `un`).
+    pub ut: Option<f64>,
     /// A small rigid rotation θ (radians, counter-clockwise): of the group about `about`,
     /// `u = (u1, u2) + θ e3 × (x − about)`, or of a kinematic point.
     pub rotation: Option<f64>,
@@ -155,7 +161,7 @@ impl FixEntry {
 
     /// Whether any of its values is not zero.
     pub fn moves(&self) -> bool {
-        [self.u1, self.u2, self.rotation].iter().any(|v| v.is_some_and(|v| v != 0.0))
+        [self.u1, self.u2, self.un, self.ut, self.rotation].iter().any(|v| v.is_some_and(|v| v != 0.0))
     }
 }
 
@@ -611,7 +617,8 @@ impl GenericScene {
                 .filter(|f| f.rotation.is_none() && f.group.is_some())
                 .flat_map(|f| {
                     let on = f.from_step.is_none_or(|from| from <= k) && f.until_step.is_none_or(|until| k <= until);
-                    std::iter::repeat_n(on, usize::from(f.u1.is_some()) + usize::from(f.u2.is_some()))
+                    let count = [f.u1, f.u2, f.un, f.ut].iter().filter(|v| v.is_some()).count();
+                    std::iter::repeat_n(on, count)
                 })
                 .collect()
         };
@@ -687,9 +694,15 @@ impl GenericScene {
             })
             .collect();
         let mut fixes = vec![];
-        for f in self.fix.iter().filter(|f| f.rotation.is_none()) {
+        for (i, f) in self.fix.iter().enumerate().filter(|(_, f)| f.rotation.is_none()) {
             let Some(group) = &f.group else { continue };
-            for (component, value) in [(Component::X, f.u1), (Component::Y, f.u2)] {
+            if let Some(key) = [("un", f.un), ("ut", f.ut)].iter().find(|(_, v)| v.is_some()).map(|(k, _)| *k) {
+                contact2d_mesh::frames::node_frames(&mesh, group)
+                    .map_err(|e| self.fail(&format!("fix.{i}.{key}"), e.to_string()))?;
+            }
+            let components =
+                [(Component::X, f.u1), (Component::Y, f.u2), (Component::Normal, f.un), (Component::Tangent, f.ut)];
+            for (component, value) in components {
                 if let Some(value) = value {
                     fixes.push(FixDescription { group: group.clone(), component, value, pattern: f.pattern.clone() });
                 }

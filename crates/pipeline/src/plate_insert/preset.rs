@@ -50,6 +50,8 @@ impl PlateInsert {
             point: None,
             u1,
             u2,
+            un: None,
+            ut: None,
             rotation: None,
             about: None,
             pattern: DEFAULT_PATTERN.into(),
