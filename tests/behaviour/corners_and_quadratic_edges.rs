@@ -295,3 +295,43 @@ fn every_status_that_is_not_converged_names_its_check() {
     assert!(why.starts_with("step 1: iteration limit: 1 iterations"), "{why}");
     assert!(r.steps[0].failed_check.is_some());
 }
+
+#[test]
+fn the_augmented_lagrangian_converges_at_a_symmetry_corner_on_fine_meshes() {
+    // Issue 41 item 5: the augmented Lagrangian (Alart–Curnier) on this scene with Quad9 and
+    // segment-to-segment pairs was reported to stop at max_iterations (100, "without a repeated
+    // state") on the finer meshes. n = 8 and 16 (plates of 16 × 8 and 32 × 16 cells; measured
+    // also on 16 × 16 and 32 × 32: 2 iterations at μ = 1, 6 to 14 at μ = 0.02 to 0.2, all
+    // converged). μ = 1 sticks everywhere; μ = 0.1 slips over part of the interface (friction
+    // resultant 95 < μN = 100), so the iteration moves pairs between states before it settles
+    // (AL 9 and 14 iterations, active set 10 and 11). Truths: the normal force is the press
+    // (equilibrium, 1e-9 of it: round-off of a direct solve, measured ≤ 1.1e-14 of it at μ = 1); and
+    // the active set (the default algorithm) on the same mesh is a second exact method: both
+    // stop only at an exact solution of one state's linear equations (the AL when a full
+    // Newton step leaves the state unchanged, so F(x̂) = 0 to round-off, module docs of
+    // algorithms/augmented_lagrangian.rs; the active set at round-off, certify.rs), so their
+    // friction resultants differ by round-off alone: 1e-9 of the press (measured 3.6e-15 at
+    // μ = 1, 8.2e-16 at μ = 0.1).
+    for n in [8usize, 16] {
+        for mu in ["1.0", "0.1"] {
+            let what = format!("Quad9 n = {n}, μ = {mu}");
+            let text = plate_scene("segment_to_segment", 1, "u1 = 0.0")
+                .replace("friction = 1.0", &format!("friction = {mu}"))
+                .replace("[loading]", "[loading]\npath_error = false");
+            let al_text = text.replace("[loading]", "[solver]\nalgorithm = \"augmented_lagrangian\"\n[loading]");
+            let al = run(&al_text, plate_mesh(CellKind::Quad9, n, false));
+            let active = run(&text, plate_mesh(CellKind::Quad9, n, false));
+            for out in [&al, &active] {
+                let r = &out.report;
+                assert_eq!(r.status, "converged", "{what}: {:?}", r.failed_check);
+                assert!(r.steps.iter().all(|s| s.iterations < 100), "{what}");
+                let [fx, fy] = imbalance(out);
+                assert!(fx.abs() < 1e-9 * PRESS && fy.abs() < 1e-9 * PRESS, "{what}: imbalance {fx}, {fy}");
+                assert!((r.contacts["floor"].normal_force - PRESS).abs() < 1e-9 * PRESS, "{what}");
+            }
+            let (a, b) =
+                (al.report.contacts["floor"].tangential_force, active.report.contacts["floor"].tangential_force);
+            assert!((a - b).abs() < 1e-9 * PRESS, "{what}: friction resultant {a} (AL) against {b} (active set)");
+        }
+    }
+}
