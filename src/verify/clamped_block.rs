@@ -8,7 +8,8 @@
 //!   block_left ┌────●────┐            step 1: P = 1000 N/mm and M = 100 N·mm/mm; block_left
 //!   (u1 = 0,   │  block  │                    holds u1 (the block floats otherwise)
 //!   step 1)    └─────────┘  μ = 0.35  steps 2…: block_left released (until_step = 1), the
-//!      ┌────────────────────────┐             point pulled by F = 1000 λ, λ = 0.1, 0.2, …
+//!      ┌────────────────────────┐             point pulled by F = 1000 λ, λ = 0.1, 0.2, …, 0.5
+//!                                             (the bundled scene stops at 0.3: held)
 //!      │ base (clamped below)   │
 //!      └────────────────────────┘
 //! ```
@@ -50,8 +51,17 @@ const MU: f64 = 0.35;
 /// The point's position p and the block's width (the moment's length scale).
 const AT: [f64; 2] = [2.0, 2.0];
 const WIDTH: f64 = 2.0;
-/// The scene's pull step Δλ.
+/// The pull step Δλ.
 const STEP: f64 = 0.1;
+/// The pull factors of the case: the bundled scene's 0.1, 0.2, 0.3 (held), then past λ*.
+const PULLS: [f64; 5] = [0.1, 0.2, 0.3, 0.4, 0.5];
+
+/// The override that extends the bundled scene's schedule (the clamp, then the pull to 0.3) past
+/// the slip load: the clamp, then the pull in steps of 0.1 to 0.5.
+pub fn schedule_override() -> String {
+    let pulls: Vec<String> = PULLS.iter().map(|f| format!("{{clamp = 1.0, pull = {f}}}")).collect();
+    format!("loading.schedule=[{{clamp = 1.0}}, {}]", pulls.join(", "))
+}
 
 /// The pull factor at which friction lets go: λ* = μ P / F(1).
 pub fn slip_factor() -> f64 {
@@ -68,7 +78,8 @@ fn moment_about(m0: f64, f: [f64; 2], c: [f64; 2]) -> f64 {
 /// # Errors
 /// A scene that cannot be read or solved, or a step without the interface.
 pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
-    let out = solve_generic(&gallery_scene(&scene_path(root, SCENE), &[])?, &mut |_, _| {})?;
+    let scene = gallery_scene(&scene_path(root, SCENE), &[schedule_override()])?;
+    let out = solve_generic(&scene, &mut |_, _| {})?;
     let mut report = CaseReport {
         name: "clamped_block".into(),
         source: "statics of a block clamped through a reference point (N = P, T = F, moment about the point = M) \
@@ -139,7 +150,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
         series: vec![
             Series { label: "computed (converged steps)".into(), points: computed, markers: true },
             Series {
-                label: "statics T/N = F/P, capped by μ".into(),
+                label: "statics once released: T/N = F/P, capped by μ".into(),
                 points: vec![(0.0, 0.0), (slip_factor(), MU), (0.5, MU)],
                 markers: false,
             },

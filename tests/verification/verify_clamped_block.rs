@@ -46,7 +46,8 @@ fn the_clamped_block_follows_statics_and_lets_go_at_mu_p() {
 /// held, naming the contact and the block.
 #[test]
 fn the_side_support_holds_in_the_clamp_step_only() {
-    let scene = load_scene(Path::new("scenes/generic/clamped_block.toml"), &[]).unwrap();
+    let path = Path::new("scenes/generic/clamped_block.toml");
+    let scene = load_scene(path, &["loading.path_error=false".into(), clamped_block::schedule_override()]).unwrap();
     let report = solve_generic(&scene, &mut |_, _| {}).unwrap().report;
     assert_eq!(report.status, "not_held", "{:?}", report.failed_check);
     let first = report.steps[0].reactions["block_left"][0].unwrap();
