@@ -14,6 +14,7 @@
 //! is.
 
 pub mod cattaneo_mindlin;
+pub mod clamped_block;
 pub mod contact_patch;
 pub mod flagship;
 pub mod hertz;
@@ -156,7 +157,7 @@ pub enum VerifyError {
 }
 
 /// The names of the gallery's cases, in the order they run.
-pub const CASES: [&str; 12] = [
+pub const CASES: [&str; 13] = [
     "contact_patch",
     "hertz",
     "cattaneo_mindlin",
@@ -169,6 +170,7 @@ pub const CASES: [&str; 12] = [
     "sliding_patch",
     "press_fit",
     "moving_roller",
+    "clamped_block",
 ];
 
 /// Runs one case by name; `root` is the repository root (where `scenes/` and `meshes/` are).
@@ -189,6 +191,7 @@ pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, Ver
         "sliding_patch" => sliding_patch::run(root, level),
         "press_fit" => press_fit::run(root, level),
         "moving_roller" => moving_roller::run(root, level),
+        "clamped_block" => clamped_block::run(root, level),
         other => Err(VerifyError::Missing {
             case: other.to_string(),
             reason: format!("no such case (cases: {})", CASES.join(", ")),
@@ -205,7 +208,7 @@ pub struct VerifyArgs {
     pub level: String,
     /// Cases to run, comma separated (default: all of contact_patch, hertz, cattaneo_mindlin,
     /// mindlin_deresiewicz, hills_nowell, interference_fit, incline, pin_lug, flagship, sliding_patch,
-    /// press_fit, moving_roller).
+    /// press_fit, moving_roller, clamped_block).
     #[cfg_attr(feature = "cli", arg(long, value_delimiter = ','))]
     pub cases: Vec<String>,
     /// The repository root (where `scenes/` and `meshes/` are).

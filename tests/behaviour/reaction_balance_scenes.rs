@@ -117,9 +117,16 @@ fn every_bundled_scene_balances_its_loads_at_every_step() {
                 step.work
             );
         }
-        // A group reports exactly the components its own fixes prescribe; the others are null.
+        // A group reports exactly the components its own fixes prescribe in the last step; the
+        // others are null (a fix released before it, `until_step`, exerts no force: null).
+        let last = out.report.steps.len();
         for (group, r) in &out.report.reactions {
-            let fixes: Vec<_> = out.scene.fix.iter().filter(|f| f.group.as_ref() == Some(group)).collect();
+            let fixes: Vec<_> = out
+                .scene
+                .fix
+                .iter()
+                .filter(|f| f.group.as_ref() == Some(group) && f.until_step.is_none_or(|k| k >= last))
+                .collect();
             let prescribed = [fixes.iter().any(|f| f.u1.is_some()), fixes.iter().any(|f| f.u2.is_some())];
             for c in 0..2 {
                 assert_eq!(r[c].is_some(), prescribed[c], "{name}: reactions.{group}.{c}");

@@ -8,6 +8,7 @@ mod verify_augmented_lagrangian;
 mod verify_boussinesq_agrees;
 mod verify_boussinesq_placed;
 mod verify_cattaneo_mindlin;
+mod verify_clamped_block;
 mod verify_contact_patch;
 mod verify_friction_incline;
 mod verify_hills_nowell;
