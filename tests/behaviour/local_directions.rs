@@ -322,27 +322,82 @@ fn a_staged_un_holds_the_arc_where_the_step_before_left_it() {
 }
 
 #[test]
-fn un_on_a_contact_node_is_refused_naming_it() {
-    // The plate's left edge on un: its corner (0, 0) is a node of the contact's master edge.
-    let mut mesh = Mesh::default();
-    let plate = mapped_grid(
-        &MappedGrid { kind: CellKind::Quad4, nx: 4, ny: 2, region: "domain" },
-        |u, v| [10.0 * u, 5.0 * v],
-        |side, _| Some(side_name(side).to_string()),
+fn un_on_a_contact_node_is_the_same_support_as_u1_on_a_vertical_edge() {
+    // The plate's left edge x = 0 on `un = 0` (its normal is ±x, so un = 0 is u1 = 0): its
+    // corner (0, 0) is a node of the contact's master edge, whose pair rows are then written
+    // in the corner's frame (B' = B T). Truth: the same problem with u1 = 0, to 1e-10 of the
+    // largest displacement and of the press (two eliminations of one condition: round-off).
+    // The plate and the ground turned by `angle` about the origin (the corner).
+    let mesh = |angle: f64| {
+        let (c, s) = (angle.cos(), angle.sin());
+        let turn = move |x: [f64; 2]| [c * x[0] - s * x[1], s * x[0] + c * x[1]];
+        let mut mesh = Mesh::default();
+        let plate = mapped_grid(
+            &MappedGrid { kind: CellKind::Quad4, nx: 4, ny: 2, region: "domain" },
+            |u, v| turn([10.0 * u, 5.0 * v]),
+            |side, _| Some(side_name(side).to_string()),
+        );
+        contact2d_mesh::generate::append_prefixed(&mut mesh, &plate, "plate_");
+        let ground = mapped_grid(
+            &MappedGrid { kind: CellKind::Quad4, nx: 6, ny: 2, region: "domain" },
+            |u, v| turn([12.0 * u, -2.0 + 2.0 * v]),
+            |side, _| Some(side_name(side).to_string()),
+        );
+        contact2d_mesh::generate::append_prefixed(&mut mesh, &ground, "ground_");
+        mesh
+    };
+    let solve = |support: &str, mesh: Mesh| {
+        let text = format!(
+            "name = \"c\"\nmesh = \"generated.msh\"\nplane = \"strain\"\n[[body]]\nregion = \"plate_domain\"\n\
+             youngs_modulus = 1000.0\npoissons_ratio = 0.3\n[[fix]]\ngroup = \"plate_left\"\n{support}\n\
+             [[load]]\ngroup = \"plate_top\"\npressure = 1.0\n[[contact]]\nname = \"floor\"\nmaster = \"plate_bottom\"\n\
+             slave = \"ground_top\"\nrigid = true\nfriction = 0.5\n[loading]\npath_error = false\n"
+        );
+        let scene = GenericScene::from_toml_str(&text, Path::new("tests/generated.toml"), &[]).unwrap();
+        solve_generic_on_mesh(&scene, mesh, &mut |_, _| {}).unwrap()
+    };
+    let (local, global) = (solve("un = 0.0", mesh(0.0)), solve("u1 = 0.0", mesh(0.0)));
+    for out in [&local, &global] {
+        assert_eq!(out.report.status, "converged", "{:?}", out.report.failed_check);
+    }
+    let (a, b) = (&local.history.steps[0].solution.displacement, &global.history.steps[0].solution.displacement);
+    let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let worst = a.iter().zip(b).fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+    assert!(worst <= 1e-10 * scale, "displacements differ by {worst:e} of {scale:e}");
+    let (ca, cb) = (&local.report.contacts["floor"], &global.report.contacts["floor"]);
+    let press = 10.0;
+    assert!(
+        (ca.normal_force - cb.normal_force).abs() <= 1e-10 * press,
+        "{} against {}",
+        ca.normal_force,
+        cb.normal_force
     );
-    contact2d_mesh::generate::append_prefixed(&mut mesh, &plate, "plate_");
-    let ground = mapped_grid(
-        &MappedGrid { kind: CellKind::Quad4, nx: 6, ny: 2, region: "domain" },
-        |u, v| [12.0 * u, -2.0 + 2.0 * v],
-        |side, _| Some(side_name(side).to_string()),
+    assert!((ca.tangential_force - cb.tangential_force).abs() <= 1e-10 * press);
+    // The whole problem turned by 30°: the left edge is no longer along an axis, and `un = 0`
+    // is the only way to pose its roller. Truth: rotation invariance — the contact's resultants
+    // are those of the unturned problem and every displacement is the unturned one turned, to
+    // 1e-9 (round-off of the turned coordinates).
+    let angle = std::f64::consts::FRAC_PI_6;
+    let turned = solve("un = 0.0", mesh(angle));
+    assert_eq!(turned.report.status, "converged", "{:?}", turned.report.failed_check);
+    let ct = &turned.report.contacts["floor"];
+    assert!(
+        (ct.normal_force - cb.normal_force).abs() <= 1e-9 * press,
+        "{} against {}",
+        ct.normal_force,
+        cb.normal_force
     );
-    contact2d_mesh::generate::append_prefixed(&mut mesh, &ground, "ground_");
-    let text = "name = \"c\"\nmesh = \"generated.msh\"\nplane = \"strain\"\n[[body]]\nregion = \"plate_domain\"\n\
-                youngs_modulus = 1000.0\npoissons_ratio = 0.3\n[[fix]]\ngroup = \"plate_left\"\nun = 0.0\n\
-                [[load]]\ngroup = \"plate_top\"\npressure = 1.0\n[[contact]]\nname = \"floor\"\nmaster = \"plate_bottom\"\n\
-                slave = \"ground_top\"\nrigid = true\nfriction = 0.5\n[loading]\npath_error = false\n";
-    let scene = GenericScene::from_toml_str(text, Path::new("tests/generated.toml"), &[]).unwrap();
-    let Err(e) = solve_generic_on_mesh(&scene, mesh, &mut |_, _| {}) else { panic!("solved") };
-    let e = e.to_string();
-    assert!(e.contains("un / ut") && e.contains("contact node"), "{e}");
+    assert!((ct.tangential_force.abs() - cb.tangential_force.abs()).abs() <= 1e-9 * press);
+    let u = &turned.history.steps[0].solution.displacement;
+    let (c, s) = (angle.cos(), angle.sin());
+    for n in 0..b.len() / 2 {
+        let expected = [c * b[2 * n] - s * b[2 * n + 1], s * b[2 * n] + c * b[2 * n + 1]];
+        for k in 0..2 {
+            assert!(
+                (u[2 * n + k] - expected[k]).abs() <= 1e-9 * scale,
+                "node {n}: {:?} against {expected:?}",
+                &u[2 * n..2 * n + 2]
+            );
+        }
+    }
 }

@@ -99,16 +99,26 @@ pub(crate) enum SlaveKind {
     Rigid,
 }
 
-/// A contact node may not have a local frame (a `[[fix]]` with `un` / `ut`): its rows would need
-/// `B' = B T`, which the contact forces and reactions do not carry back.
-fn local_directions_refused(system: &LinearSystem, node: usize) -> Result<(), ContactError> {
-    match system.dofs.frame(node) {
-        None => Ok(()),
-        Some(_) => Err(ContactError::InvalidInput(format!(
-            "contact node index {node} is on a [[fix]] with un / ut: local directions on a contact node are not \
-             supported (fix it in u1 / u2, or end the curve of un / ut before the contact)"
-        ))),
+/// Adds a node's coefficient vector `v` (global components: the row reads `v · u_node`) to `row`.
+/// At a node with a local frame (a `[[fix]]` with `un` / `ut`, `u = T u'`) the row reads
+/// `(Tᵀ v) · u'`: `B' = B T`, so that the gap and the contact forces `B'ᵀλ` are those of the
+/// rotated unknowns; without a frame `v` is used as it is (the same bits as before frames).
+fn push_node(system: &LinearSystem, row: &mut PairRow, node: usize, v: [f64; 2]) -> Result<(), ContactError> {
+    let v = system.dofs.frame(node).map_or(v, |frame| frame.to_local(v));
+    for c in [Component::X, Component::Y] {
+        let value = v[c.index()];
+        if value == 0.0 {
+            continue;
+        }
+        match system.dofs.kind(Dof::of(node, c)) {
+            DofKind::Free(i) => row.free.push((i, value)),
+            DofKind::Constrained(j) => row.constrained.push((j, value)),
+            DofKind::Inactive => {
+                return Err(ContactError::InvalidInput(format!("contact node index {node} belongs to no body")));
+            }
+        }
     }
+    Ok(())
 }
 
 fn pair_row(
@@ -118,23 +128,7 @@ fn pair_row(
     slave: SlaveKind,
 ) -> Result<PairRow, ContactError> {
     let mut row = PairRow::default();
-    let mut push = |node: usize, scale: f64| -> Result<(), ContactError> {
-        local_directions_refused(system, node)?;
-        for c in [Component::X, Component::Y] {
-            let v = scale * dir[c.index()];
-            if v == 0.0 {
-                continue;
-            }
-            match system.dofs.kind(Dof::of(node, c)) {
-                DofKind::Free(i) => row.free.push((i, v)),
-                DofKind::Constrained(j) => row.constrained.push((j, v)),
-                DofKind::Inactive => {
-                    return Err(ContactError::InvalidInput(format!("contact node index {node} belongs to no body")));
-                }
-            }
-        }
-        Ok(())
-    };
+    let mut push = |node: usize, scale: f64| push_node(system, &mut row, node, [scale * dir[0], scale * dir[1]]);
     push(pair.master.0, 1.0)?;
     for (n, w) in &pair.slave {
         let active = !matches!(system.dofs.kind(Dof::of(n.0, Component::X)), DofKind::Inactive);
@@ -175,21 +169,7 @@ fn integrated_row(
             }
             _ => {}
         }
-        let v = part(c);
-        local_directions_refused(system, n)?;
-        for comp in [Component::X, Component::Y] {
-            let value = v[comp.index()];
-            if value == 0.0 {
-                continue;
-            }
-            match system.dofs.kind(Dof::of(n, comp)) {
-                DofKind::Free(i) => row.free.push((i, value)),
-                DofKind::Constrained(j) => row.constrained.push((j, value)),
-                DofKind::Inactive => {
-                    return Err(ContactError::InvalidInput(format!("contact node index {n} belongs to no body")));
-                }
-            }
-        }
+        push_node(system, &mut row, n, part(c))?;
     }
     Ok(row)
 }
