@@ -41,7 +41,7 @@ use contact2d_contact::{
     BodyDescription, ContactAlgorithm, ContactDescription, ContactStatus, FixDescription, GapDescription, LoadSchedule,
     Pairing, ProblemDescription, SolverSettings, solve,
 };
-use contact2d_element::{Formulation, PlaneCondition};
+use contact2d_element::{Formulation, Kinematics};
 use contact2d_fem::Component;
 use contact2d_mesh::generate::{append_prefixed, rectangle};
 use contact2d_mesh::{CellKind, Mesh};
@@ -74,8 +74,7 @@ pub fn body(region: &str, e: f64, nu: f64) -> BodyDescription {
         region: region.into(),
         youngs_modulus: e,
         poissons_ratio: nu,
-        plane: PlaneCondition::Strain,
-        thickness: 1.0,
+        kinematics: Kinematics::PlaneStrain { thickness: 1.0 },
         formulation: Formulation::Standard,
     }
 }

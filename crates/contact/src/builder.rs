@@ -17,7 +17,7 @@
 
 use std::ops::Range;
 
-use contact2d_element::{Formulation, Material, PlaneCondition};
+use contact2d_element::{Formulation, Kinematics, Material, PlaneCondition};
 use contact2d_fem::{Component, DofKind, EdgeLoad, Model, assemble_body_forces, assemble_edge_loads};
 use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, Mesh, NodeId, line_cell_length};
@@ -39,10 +39,9 @@ pub struct BodyDescription {
     pub youngs_modulus: f64,
     /// Poisson's ratio ν.
     pub poissons_ratio: f64,
-    /// Plane stress or strain.
-    pub plane: PlaneCondition,
-    /// Out-of-plane thickness.
-    pub thickness: f64,
+    /// Plane stress or plane strain with the out-of-plane thickness, or a body of revolution
+    /// (every body of a problem plane, or every one of revolution).
+    pub kinematics: Kinematics,
     /// Standard displacement elements, or B-bar (locking-free for nearly incompressible
     /// materials in plane strain).
     pub formulation: Formulation,
@@ -361,8 +360,10 @@ impl ProblemDescription {
             return fail("no body: give at least one [[body]] region".into());
         }
         for b in &self.bodies {
-            if !(b.thickness.is_finite() && b.thickness > 0.0) {
-                return fail(format!("body \"{}\": thickness {} must be finite and > 0", b.region, b.thickness));
+            if let Some(t) = b.kinematics.thickness()
+                && !(t.is_finite() && t > 0.0)
+            {
+                return fail(format!("body \"{}\": thickness {t} must be finite and > 0", b.region));
             }
         }
         for (i, c) in self.contacts.iter().enumerate() {
@@ -389,10 +390,15 @@ impl ProblemDescription {
         let mut model = Model::new(mesh);
         model.allow_floating = true;
         for b in &self.bodies {
-            let material = Material::new(b.youngs_modulus, b.poissons_ratio, b.plane)
+            // A body of revolution's in-plane block is the plane-strain matrix
+            // (Kinematics::in_plane_elasticity), so its material is written in plane strain.
+            let plane = b.kinematics.plane_condition().unwrap_or(PlaneCondition::Strain);
+            let material = Material::new(b.youngs_modulus, b.poissons_ratio, plane)
                 .map_err(|e| ContactError::InvalidInput(format!("body \"{}\": {e}", b.region)))?;
-            model.add_body_with(&b.region, material, b.thickness, b.formulation)?;
+            model.add_body_in(&b.region, material, b.kinematics, b.formulation)?;
         }
+        // A body of revolution's axis nodes hold u_r = 0 (none in the plane).
+        model.fix_axis_nodes();
         for f in self.fixes.iter().zip(active).filter(|(_, a)| **a).map(|(f, _)| f) {
             model.fix(&f.group, f.component, f.value)?;
         }

@@ -77,7 +77,7 @@ pub use linear::{LinearSolver, SPARSE_FROM_PAIRS};
 pub use loading::LoadSchedule;
 pub use pairing::{
     ContactPair, IntegratedRows, RowCoefficient, node_to_node_targets, nodes_face_each_other, pair_contours,
-    tributary_weights,
+    tributary_weights, tributary_weights_in,
 };
 pub use post::{contact_end, contact_end_from_pressure, pair_tractions, stick_end};
 pub use problem::{BuildTimes, ContactProblem, LoadPattern, PairRow, SparseRow, condensed_rows};

@@ -20,6 +20,7 @@
 //! inequality reads u - uh ≥ u_s). The paper's γ is always ds_plate/ds_insert: γ1 = γ in
 //! variant 1 and γ2 = 1/γ in variant 2.
 
+use contact2d_element::Kinematics;
 use contact2d_fem::Model;
 use contact2d_mesh::{Contour, ContourEdge, NodeId};
 use rayon::prelude::*;
@@ -111,7 +112,7 @@ pub(crate) fn pair_contours_with(
     body: &SlaveBody,
     boxes: &EdgeBoxes,
 ) -> Vec<ContactPair> {
-    let weights = tributary_weights(master);
+    let weights = tributary_weights_in(master, &model.pairing_kinematics());
     // Each master node's closest point is independent: in parallel, collected in node order.
     let mut pairs: Vec<ContactPair> = master
         .nodes
@@ -279,6 +280,13 @@ fn snap(xi: f64) -> f64 {
 
 /// `w_a = Σ_edges ∫ N_a ds` for every node of the contour (5-point Gauss per edge).
 pub fn tributary_weights(contour: &Contour) -> Vec<f64> {
+    tributary_weights_in(contour, &Kinematics::PlaneStress { thickness: 1.0 })
+}
+
+/// `w_a = Σ_edges ∫ N_a m ds` for every node of the contour, `m` the kinematics'
+/// [`Kinematics::pairing_measure`] (1 in the plane: [`tributary_weights`]; `2πr` for a body of
+/// revolution, the area of the node's ring).
+pub fn tributary_weights_in(contour: &Contour, kinematics: &Kinematics) -> Vec<f64> {
     const G: [(f64, f64); 5] = contact2d_mesh::GAUSS5;
     let mut w = vec![0.0; contour.nodes.len()];
     for e in &contour.edges {
@@ -287,7 +295,9 @@ pub fn tributary_weights(contour: &Contour) -> Vec<f64> {
             if e.quadratic { (e.first, e.first + 1, e.first + 2) } else { (e.first, e.first, e.first + 1) };
         let end = if contour.closed && end == contour.nodes.len() { 0 } else { end };
         for (g, wg) in G {
-            let (_, _, ds) = contour.edge_frame(e, g);
+            let (x, _, ds) = contour.edge_frame(e, g);
+            // × 1.0 exactly in the plane.
+            let ds = ds * kinematics.pairing_measure(x);
             let n = edge_shape(e.quadratic, g);
             w[start] += wg * ds * n[0];
             w[end] += wg * ds * n[1];

@@ -100,6 +100,7 @@ pub fn pair_segments(
     let err = |reason: String| ContactError::Pairing { master: master.name.clone(), slave: slave.name.clone(), reason };
     let body = SlaveBody::new(model, slave_region, slave).map_err(err)?;
     let boxes = EdgeBoxes::of(slave);
+    let kinematics = model.pairing_kinematics();
     let mut pairs = pair_contours_with(model, master, slave, &body, &boxes);
     let (gx, gw) = gauss_legendre(5).map_err(|e| err(e.to_string()))?;
     let points = &model.mesh.points;
@@ -122,6 +123,8 @@ pub fn pair_segments(
                 for (g, &wg) in gx.iter().zip(&gw) {
                     let xi = mid + half * g;
                     let (x, _, ds) = master.edge_frame(edge, xi);
+                    // × 1.0 exactly in the plane; 2πr for a body of revolution.
+                    let ds = ds * kinematics.pairing_measure(x);
                     let (e, eta) = boxes.closest_point_unsnapped(slave, points, x);
                     let slave_edge = &slave.edges[e];
                     let (y, t, _) = slave.edge_frame(slave_edge, eta);

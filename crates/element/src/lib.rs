@@ -1,7 +1,8 @@
 //! Isoparametric plane-elasticity elements: local mathematics only.
 //!
 //! Shape functions (T3, T6, Q4, Q8, Q9 and 2-/3-node edges, in Gmsh's node order), Gauss rules,
-//! the isoparametric map, the plane [`Kinematics`] (plane stress / plane strain with its thickness),
+//! the isoparametric map, the body's [`Kinematics`] (plane stress / plane strain with its thickness, or a body of
+//! revolution),
 //! isotropic elasticity, element stiffness,
 //! consistent loads, and strains and stresses at any reference point, in the standard or the
 //! locking-free B-bar [`Formulation`]. This crate knows nothing of
@@ -42,4 +43,6 @@ pub use material::{Material, PlaneCondition};
 pub use quadrature::{GaussRule, gauss_legendre};
 pub use shape::{EdgeType, ElementType, MAX_NODES, ShapeEval};
 pub use stiffness::{element_area, element_stiffness, element_stiffness_with};
-pub use stress::{gauss_to_node_extrapolation, strain_at, strain_at_with, stress_at, stress_at_with};
+pub use stress::{
+    gauss_to_node_extrapolation, hoop_strain_at, strain_at, strain_at_with, stress_at, stress_at_with, stress_state_at,
+};

@@ -9,6 +9,14 @@
 //! ```
 //!
 //! `t det J` is the volume weight of the body's [`Kinematics`] (`t` the thickness, 1 in the paper).
+//!
+//! A body of revolution adds the hoop row `B_θ,a = [N_a / r, 0]` (`ε_θθ = u_r / r`) and weighs
+//! every point by `2πr`:
+//!
+//! ```text
+//! K_e = Σ_g [ B_pᵀ D_pp B_p + B_pᵀ d λ B_θ + B_θᵀ λ dᵀ B_p + B_θᵀ (λ + 2μ) B_θ ] 2πr det J w_g,
+//!       d = [1, 1, 0]ᵀ,  D_pp the plane-strain matrix ([`Kinematics::in_plane_elasticity`])
+//! ```
 
 use nalgebra::{DMatrix, Matrix3};
 
@@ -75,12 +83,24 @@ pub fn element_stiffness_with(
     formulation: Formulation,
 ) -> Result<DMatrix<f64>, ElementError> {
     match formulation {
-        Formulation::Standard => integrate_btdb(element, coords, &material.elasticity_matrix(), kinematics, rule),
+        Formulation::Standard => {
+            let mut k = integrate_btdb(element, coords, &kinematics.in_plane_elasticity(material), kinematics, rule)?;
+            if let Some(hoop) = kinematics.hoop_elasticity(material) {
+                add_hoop_stiffness(&mut k, element, coords, hoop, kinematics, rule)?;
+            }
+            Ok(k)
+        }
         Formulation::BBar => {
+            let Some(weight) = kinematics.uniform_weight() else {
+                return Err(ElementError::UnsupportedFormulation {
+                    element: format!("{element:?}"),
+                    formulation: format!("{formulation:?} in a body of revolution"),
+                });
+            };
             let projection = DilatationProjection::new(element, coords, rule)?;
             let (d_dev, kappa) = deviatoric_split(material);
             let mut k = integrate_btdb(element, coords, &d_dev, kinematics, rule)?;
-            k += projection.volumetric_stiffness(kappa, kinematics.uniform_weight());
+            k += projection.volumetric_stiffness(kappa, weight);
             // Gᵀ M⁻¹ G is symmetric up to round-off; make K_e exactly symmetric.
             let n = k.nrows();
             for a in 0..n {
@@ -93,6 +113,39 @@ pub fn element_stiffness_with(
             Ok(k)
         }
     }
+}
+
+/// Adds the hoop terms of a body of revolution (module docs) to the in-plane `k`:
+/// `(λ, λ + 2μ)` from [`Kinematics::hoop_elasticity`], every point weighed by `2πr det J w`.
+fn add_hoop_stiffness(
+    k: &mut DMatrix<f64>,
+    element: ElementType,
+    coords: &[[f64; 2]],
+    (lambda, diagonal): (f64, f64),
+    kinematics: &Kinematics,
+    rule: &GaussRule,
+) -> Result<(), ElementError> {
+    let n = element.num_nodes();
+    for (xi, w) in rule.points.iter().zip(&rule.weights) {
+        let p = map_point(element, coords, *xi)?;
+        // Gauss points lie inside the cell, so r > 0 for a mesh with r ≥ 0.
+        let r = p.x[0];
+        let f = w * p.det_j * kinematics.volume_weight(p.x);
+        for a in 0..n {
+            let [ax, ay] = p.dn_dx[a];
+            let hoop_a = p.n[a] / r;
+            for b in 0..n {
+                let bx = p.dn_dx[b][0];
+                let hoop_b = p.n[b] / r;
+                // Written so that (a, b) and (b, a) round alike: K_e stays exactly symmetric.
+                k[(2 * a, 2 * b)] += f * (lambda * (ax * hoop_b + hoop_a * bx) + diagonal * (hoop_a * hoop_b));
+                let coupling = f * lambda * (ay * hoop_b);
+                k[(2 * a + 1, 2 * b)] += coupling;
+                k[(2 * b, 2 * a + 1)] += coupling;
+            }
+        }
+    }
+    Ok(())
 }
 
 /// `Σ_g B_gᵀ d B_g t det J_g w_g` for any symmetric 3×3 `d` (`t` the kinematics' volume weight).
@@ -174,6 +227,65 @@ mod tests {
         let mut ev: Vec<f64> = k.clone().symmetric_eigen().eigenvalues.iter().copied().collect();
         ev.sort_by(f64::total_cmp);
         ev
+    }
+
+    /// The 4×4 isotropic matrix on `[ε_rr, ε_zz, γ_rz, ε_θθ]`: `λ m mᵀ + μ diag(2, 2, 1, 2)`,
+    /// `m = [1, 1, 0, 1]` (written from λ and μ, independently of the kinematics' blocks).
+    fn isotropic_4x4(e: f64, nu: f64) -> nalgebra::Matrix4<f64> {
+        let lambda = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+        let mu = e / (2.0 * (1.0 + nu));
+        let m = nalgebra::Vector4::new(1.0, 1.0, 0.0, 1.0);
+        m * m.transpose() * lambda + nalgebra::Matrix4::from_diagonal(&nalgebra::Vector4::new(2.0, 2.0, 1.0, 2.0)) * mu
+    }
+
+    /// A distorted cell off the axis, and the reference cell moved onto the axis (its leftmost
+    /// nodes at r = 0: an edge of a quadrilateral, an edge of a triangle) and sheared in z.
+    fn revolution_cells(t: ElementType, jitter: &[f64]) -> Vec<Vec<[f64; 2]>> {
+        let reference = t.reference_nodes();
+        let x_min = reference.iter().map(|p| p[0]).fold(f64::INFINITY, f64::min);
+        let on_axis = reference.iter().map(|&[x, y]| [x - x_min, y + 0.3 * (x - x_min)]).collect();
+        vec![distorted(t, jitter), on_axis]
+    }
+
+    proptest! {
+        /// A body of revolution: K is symmetric, positive semi-definite, with exactly one zero
+        /// mode (the axial translation; a radial translation strains the hoops), and the energy of
+        /// a uniform state `u_r = a r, u_z = c z + d r` is `½ εᵀ D ε V` with the isotropic 4×4 `D`
+        /// and Pappus' volume `V = 2π ∫ r dA`, to round-off (the integrand is `r` times a
+        /// polynomial the stiffness rule integrates exactly).
+        #[test]
+        fn axisymmetric_stiffness_has_one_rigid_mode_and_the_uniform_energy(
+            ti in 0usize..5,
+            jitter in proptest::collection::vec(-1.0..1.0f64, 18),
+            (a, c, d) in (-1.0..1.0f64, -1.0..1.0f64, -1.0..1.0f64),
+        ) {
+            let t = ElementType::ALL[ti];
+            let m = Material::new(3.0, 0.3, PlaneCondition::Strain).unwrap();
+            for coords in revolution_cells(t, &jitter) {
+                let rule = Kinematics::Axisymmetric.stiffness_rule(t);
+                let k = element_stiffness(t, &coords, &m, &Kinematics::Axisymmetric, &rule).unwrap();
+                prop_assert!((k.clone() - k.transpose()).abs().max() == 0.0);
+                let ev = symmetric_eigenvalues(&k);
+                let scale = ev.last().copied().unwrap();
+                prop_assert!(ev[0].abs() < 1e-10 * scale, "{ev:?}");
+                prop_assert!(ev[1] > 1e-6 * scale, "{ev:?}");
+                let axial: Vec<f64> = coords.iter().flat_map(|_| [0.0, 1.0]).collect();
+                let ku = &k * nalgebra::DVector::from_vec(axial);
+                prop_assert!(ku.abs().max() < 1e-12 * scale);
+
+                let u: Vec<f64> = coords.iter().flat_map(|p| [a * p[0], c * p[1] + d * p[0]]).collect();
+                let u = nalgebra::DVector::from_vec(u);
+                let energy = 0.5 * u.dot(&(&k * &u));
+                let eps = nalgebra::Vector4::new(a, c, d, a);
+                let mut volume = 0.0;
+                for (xi, w) in rule.points.iter().zip(&rule.weights) {
+                    let p = map_point(t, &coords, *xi).unwrap();
+                    volume += 2.0 * std::f64::consts::PI * p.x[0] * p.det_j * w;
+                }
+                let exact = 0.5 * eps.dot(&(isotropic_4x4(3.0, 0.3) * eps)) * volume;
+                prop_assert!((energy - exact).abs() < 1e-12 * exact.abs().max(scale), "{energy} vs {exact}");
+            }
+        }
     }
 
     proptest! {

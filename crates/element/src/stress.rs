@@ -18,6 +18,7 @@ use nalgebra::DMatrix;
 use crate::error::ElementError;
 use crate::formulation::{DilatationProjection, Formulation, deviatoric_split};
 use crate::isoparametric::map_point;
+use crate::kinematics::Kinematics;
 use crate::material::Material;
 use crate::quadrature::GaussRule;
 use crate::shape::ElementType;
@@ -147,6 +148,60 @@ pub fn stress_at_with(
             Ok([s[0] + kappa * theta_bar, s[1] + kappa * theta_bar, s[2]])
         }
     }
+}
+
+/// The hoop strain `ε_θθ = u_r / r` of a body of revolution at reference point `xi`; on the axis
+/// (`r = 0`, where `u_r = 0`) its limit `∂u_r/∂r`.
+///
+/// # Errors
+/// As [`strain_at`].
+pub fn hoop_strain_at(element: ElementType, coords: &[[f64; 2]], u: &[f64], xi: [f64; 2]) -> Result<f64, ElementError> {
+    let p = map_point(element, coords, xi)?;
+    let radial: f64 = (0..p.len).map(|a| p.n[a] * u[2 * a]).sum();
+    // "On the axis" relative to the cell's size, so the limit is taken only where r/h is round-off.
+    let size = p.det_j.sqrt();
+    if p.x[0].abs() <= 1e-12 * size {
+        Ok((0..p.len).map(|a| p.dn_dx[a][0] * u[2 * a]).sum())
+    } else {
+        Ok(radial / p.x[0])
+    }
+}
+
+/// The whole stress of a body of the given [`Kinematics`] at reference point `xi`:
+/// `[σ11, σ22, σ12, σ_out]`, `σ_out` the out-of-plane stress (σ33 in the plane, σθθ for a body
+/// of revolution).
+///
+/// ```text
+/// plane:         [σ11, σ22, σ12] = stress_at_with(…),  σ33 = Kinematics::out_of_plane_stress
+/// axisymmetric:  [σ_rr, σ_zz, σ_rz] = D_pp ε + λ ε_θθ [1, 1, 0],  σθθ = λ (ε_rr + ε_zz) + (λ + 2μ) ε_θθ
+/// ```
+///
+/// # Errors
+/// As [`stress_at_with`]; [`ElementError::UnsupportedFormulation`] for B-bar in a body of
+/// revolution.
+pub fn stress_state_at(
+    element: ElementType,
+    coords: &[[f64; 2]],
+    material: &Material,
+    kinematics: &Kinematics,
+    u: &[f64],
+    xi: [f64; 2],
+    formulation: Formulation,
+) -> Result<[f64; 4], ElementError> {
+    let Some((lambda, diagonal)) = kinematics.hoop_elasticity(material) else {
+        let s = stress_at_with(element, coords, material, u, xi, formulation)?;
+        return Ok([s[0], s[1], s[2], kinematics.out_of_plane_stress(material, &s).unwrap_or(0.0)]);
+    };
+    if formulation != Formulation::Standard {
+        return Err(ElementError::UnsupportedFormulation {
+            element: format!("{element:?}"),
+            formulation: format!("{formulation:?} in a body of revolution"),
+        });
+    }
+    let e = strain_at(element, coords, u, xi)?;
+    let hoop = hoop_strain_at(element, coords, u, xi)?;
+    let s = kinematics.in_plane_elasticity(material) * nalgebra::Vector3::new(e[0], e[1], e[2]);
+    Ok([s[0] + lambda * hoop, s[1] + lambda * hoop, s[2], lambda * (e[0] + e[1]) + diagonal * hoop])
 }
 
 /// Monomial exponents of the extrapolation space for a rule of `len` points on `element`'s cell.

@@ -13,7 +13,7 @@
 //! the Cholesky factorisation reads that side. `K_fc` and `K_cc` are kept so that the right-hand side and the
 //! reactions can be formed for any prescribed values without assembling again.
 
-use contact2d_element::{EdgeType, GaussRule, body_force_load, edge_traction_load};
+use contact2d_element::{EdgeType, body_force_load, edge_traction_load};
 use std::collections::HashMap;
 
 use contact2d_mesh::{CellKind, NodeId};
@@ -338,7 +338,7 @@ pub fn assemble_body_forces(model: &Model, forces: &[(String, [f64; 2])]) -> Res
             .ok_or_else(|| FemError::InvalidInput(format!("body force on \"{region}\": no body has that region")))?;
         for i in 0..body.num_cells() {
             let element = body.elements[i];
-            let rule = GaussRule::stiffness_rule(element);
+            let rule = body.kinematics.stiffness_rule(element);
             let fe = body_force_load(element, &body.cell_coords(&model.mesh, i), &body.kinematics, *b, &rule)
                 .map_err(|source| FemError::Element { body: body.name.clone(), cell: body.cell_tags[i], source })?;
             for (a, node) in body.cell_nodes(i).iter().enumerate() {

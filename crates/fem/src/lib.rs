@@ -36,7 +36,7 @@ pub use error::FemError;
 pub use model::{Body, BodyId, Dirichlet, EdgeLoad, Model, element_type};
 pub use ordering::{COMPRESS_FROM, Ordering, fill_reducing_permutation, twin_compressed_amd};
 pub use reassembly::ElementMatrices;
-pub use recovery::{CurveSample, StressRecovery, nodal_stresses, stresses_along_curve};
+pub use recovery::{CurveSample, StressRecovery, nodal_stress_states, nodal_stresses, stresses_along_curve};
 pub use rigid::{FloatingPiece, check_rigid_modes, floating_pieces};
 pub use saddle::SaddlePointSolver;
 pub use solution::{Solution, solve_linear, strain_energy};

@@ -5,7 +5,7 @@
 //! between bodies is added by the contact crate on top of this model.
 
 use contact2d_element::{
-    ElementError, ElementType, Formulation, GaussRule, Kinematics, Material, element_stiffness_with, map_point,
+    ElementError, ElementType, Formulation, Kinematics, Material, element_stiffness_with, map_point,
 };
 use contact2d_mesh::frames::{NodeFrames, node_frames};
 use contact2d_mesh::{CellKind, Mesh, NodeId};
@@ -25,8 +25,9 @@ pub struct Body {
     pub name: String,
     /// Material.
     pub material: Material,
-    /// The body's kinematics (plane stress or plane strain, from the material's plane condition,
-    /// with the out-of-plane thickness): every integral over the body takes its weight from it.
+    /// The body's kinematics (plane stress or plane strain with the out-of-plane thickness, or a
+    /// body of revolution): every integral over the body takes its weight, and the stiffness its
+    /// strain rows and Gauss rule, from it.
     pub kinematics: Kinematics,
     /// Standard or B-bar (locking-free for nearly incompressible plane strain); used by the
     /// assembly, the strain energy and the stress recovery alike. Change it with
@@ -78,7 +79,7 @@ impl Body {
             &self.cell_coords(mesh, i),
             &self.material,
             &self.kinematics,
-            &GaussRule::stiffness_rule(element),
+            &self.kinematics.stiffness_rule(element),
             self.formulation,
         )
         .map_err(|source| FemError::Element { body: self.name.clone(), cell: self.cell_tags[i], source })
@@ -201,6 +202,34 @@ impl Model {
         let kinematics = Kinematics::plane(material.plane(), thickness).map_err(|_| {
             FemError::InvalidInput(format!("body \"{region}\": thickness must be positive, got {thickness}"))
         })?;
+        self.add_body_in(region, material, kinematics, formulation)
+    }
+
+    /// As [`Model::add_body_with`], with the body's [`Kinematics`] given whole (a plane one, or
+    /// [`Kinematics::Axisymmetric`]: then the material's plane condition is not used, and every
+    /// node must lie at `x = r ≥ 0`).
+    ///
+    /// # Errors
+    /// As [`Model::add_body_with`]; [`FemError::InvalidRegion`] naming the first node at `r < 0`
+    /// of a body of revolution; [`FemError::Element`] for B-bar in a body of revolution (its
+    /// volumetric term is written for a uniform weight).
+    pub fn add_body_in(
+        &mut self,
+        region: &str,
+        material: Material,
+        kinematics: Kinematics,
+        formulation: Formulation,
+    ) -> Result<BodyId, FemError> {
+        if let Some(other) = self.bodies.iter().find(|b| b.kinematics.has_hoop_strain() != kinematics.has_hoop_strain())
+        {
+            return Err(FemError::InvalidInput(format!(
+                "body \"{region}\" is {} but body \"{}\" is {}: a model's bodies are all bodies of revolution \
+                 or all plane",
+                kinematics.name(),
+                other.name,
+                other.kinematics.name()
+            )));
+        }
         let group = self.mesh.group(region)?;
         if group.dim != 2 {
             return Err(FemError::InvalidRegion {
@@ -234,10 +263,43 @@ impl Model {
         if body.elements.is_empty() {
             return Err(FemError::InvalidRegion { group: region.into(), reason: "no cells".into() });
         }
+        check_radii(&self.mesh, &body)?;
         check_jacobians(&self.mesh, &body)?;
         check_formulation(&body, formulation)?;
         self.bodies.push(body);
         Ok(BodyId(self.bodies.len() - 1))
+    }
+
+    /// The kinematics contact pairing integrates with ([`Kinematics::pairing_measure`]): the
+    /// first body's, since a model's bodies are all plane or all of revolution
+    /// ([`Model::add_body_in`]); plane stress of unit thickness in a model without bodies.
+    pub fn pairing_kinematics(&self) -> Kinematics {
+        self.bodies.first().map_or(Kinematics::PlaneStress { thickness: 1.0 }, |b| b.kinematics)
+    }
+
+    /// The nodes on the axis `r = x = 0` of the bodies of revolution (none in a plane model), in
+    /// node order. "On the axis" is `|x| ≤ 1e-12 L`, `L` the mesh's extent: a mesh generator
+    /// writes the axis as exact zeros, and an offset at the round-off of the coordinates is
+    /// still the axis.
+    pub fn axis_nodes(&self) -> Vec<NodeId> {
+        let mut on_axis = vec![false; self.mesh.num_nodes()];
+        let extent = self.mesh.points.iter().fold(0.0f64, |a, p| a.max(p[0].abs()).max(p[1].abs()));
+        for body in self.bodies.iter().filter(|b| b.kinematics.has_hoop_strain()) {
+            for n in &body.nodes {
+                on_axis[n.0] |= self.mesh.points[n.0][0].abs() <= 1e-12 * extent;
+            }
+        }
+        (0..on_axis.len()).filter(|&n| on_axis[n]).map(NodeId).collect()
+    }
+
+    /// Prescribes `u_r = u1 = 0` on [`Model::axis_nodes`]: a point of the axis cannot move off it
+    /// (the hoop strain `u_r / r` would be infinite). Returns how many nodes that is.
+    pub fn fix_axis_nodes(&mut self) -> usize {
+        let nodes = self.axis_nodes();
+        for n in &nodes {
+            self.node_dirichlet.push((Dof::of(n.0, Component::X), 0.0));
+        }
+        nodes.len()
     }
 
     /// Sets the [`Formulation`] of body `id`.
@@ -508,6 +570,16 @@ type Condition = ([f64; 2], f64, String, bool);
 const PARALLEL: f64 = 1e-8;
 
 fn check_formulation(body: &Body, formulation: Formulation) -> Result<(), FemError> {
+    if formulation != Formulation::Standard && body.kinematics.uniform_weight().is_none() {
+        return Err(FemError::Element {
+            body: body.name.clone(),
+            cell: body.cell_tags[0],
+            source: ElementError::UnsupportedFormulation {
+                element: format!("{:?}", body.elements[0]),
+                formulation: format!("{formulation:?} in a body of revolution"),
+            },
+        });
+    }
     match body.elements.iter().position(|e| !formulation.supports(*e)) {
         None => Ok(()),
         Some(i) => Err(FemError::Element {
@@ -521,6 +593,22 @@ fn check_formulation(body: &Body, formulation: Formulation) -> Result<(), FemErr
     }
 }
 
+/// A body of revolution lives at `r = x ≥ 0`: its first node at `r < 0` is refused by tag.
+fn check_radii(mesh: &Mesh, body: &Body) -> Result<(), FemError> {
+    if body.kinematics.has_hoop_strain()
+        && let Some(n) = body.nodes.iter().find(|n| mesh.points[n.0][0] < 0.0)
+    {
+        return Err(FemError::InvalidRegion {
+            group: body.name.clone(),
+            reason: format!(
+                "node {} lies at r = x = {} < 0; a body of revolution lives at r ≥ 0 (the axis is x = 0)",
+                mesh.node_tags[n.0], mesh.points[n.0][0]
+            ),
+        });
+    }
+    Ok(())
+}
+
 fn check_jacobians(mesh: &Mesh, body: &Body) -> Result<(), FemError> {
     check_cell_jacobians(mesh, body, 0..body.num_cells())
 }
@@ -530,7 +618,7 @@ fn check_cell_jacobians(mesh: &Mesh, body: &Body, cells: impl Iterator<Item = us
     for i in cells {
         let element = body.elements[i];
         let coords = body.cell_coords(mesh, i);
-        let rule = GaussRule::stiffness_rule(element);
+        let rule = body.kinematics.stiffness_rule(element);
         for xi in rule.points.iter().chain(element.reference_nodes()) {
             map_point(element, &coords, *xi).map_err(|e| match e {
                 ElementError::NonPositiveJacobian { det_j, .. } => {

@@ -12,8 +12,12 @@
 //!
 //! Averaging is per body: a node is never averaged across a material interface. `D B` is the
 //! body's formulation: with B-bar, `σ = D B̄ u` (the projected dilatation, as in the stiffness).
+//!
+//! The out-of-plane stress ([`nodal_stress_states`]) follows from the recovered in-plane stress
+//! in the plane (`σ33 = 0` or `ν (σ11 + σ22)`); a body of revolution's σθθ needs the hoop strain
+//! and is recovered like the in-plane components.
 
-use contact2d_element::{ElementType, GaussRule, gauss_to_node_extrapolation, stress_at_with};
+use contact2d_element::{ElementType, gauss_to_node_extrapolation, stress_state_at};
 use contact2d_mesh::{Contour, NodeId};
 use nalgebra::DMatrix;
 
@@ -40,20 +44,40 @@ pub fn nodal_stresses(
     u: &[f64],
     recovery: StressRecovery,
 ) -> Result<Vec<Option<[f64; 3]>>, FemError> {
-    nodal_stresses_of_cells(model, body, u, recovery, |_| true)
+    let states = nodal_stress_states_of_cells(model, body, u, recovery, |_| true)?;
+    Ok(states.into_iter().map(|s| s.map(|[s11, s22, s12, _]| [s11, s22, s12])).collect())
 }
 
-/// [`nodal_stresses`] from the cells `i` of `body` where `keep(i)`: at a node all of whose
+/// Nodal stress states `[σ11, σ22, σ12, σ_out]` of one body, indexed by node (`None` outside the
+/// body): the in-plane stresses of [`nodal_stresses`] and the out-of-plane stress σ33 (plane) or
+/// σθθ (a body of revolution), see the module docs.
+///
+/// # Errors
+/// Element failures (not expected once the body was validated).
+pub fn nodal_stress_states(
+    model: &Model,
+    body: BodyId,
+    u: &[f64],
+    recovery: StressRecovery,
+) -> Result<Vec<Option<[f64; 4]>>, FemError> {
+    nodal_stress_states_of_cells(model, body, u, recovery, |_| true)
+}
+
+/// [`nodal_stress_states`] from the cells `i` of `body` where `keep(i)`: at a node all of whose
 /// cells are kept, the same values bit for bit (the same cells, summed in the same order).
-fn nodal_stresses_of_cells(
+fn nodal_stress_states_of_cells(
     model: &Model,
     body: BodyId,
     u: &[f64],
     recovery: StressRecovery,
     keep: impl Fn(usize) -> bool,
-) -> Result<Vec<Option<[f64; 3]>>, FemError> {
+) -> Result<Vec<Option<[f64; 4]>>, FemError> {
     let b = &model.bodies[body.0];
-    let mut sum = vec![[0.0; 4]; model.mesh.num_nodes()];
+    let state = |element, coords: &[[f64; 2]], ue: &[f64], xi: &[f64; 2]| {
+        stress_state_at(element, coords, &b.material, &b.kinematics, ue, *xi, b.formulation)
+    };
+    // [σ11, σ22, σ12, σ_out, cells]
+    let mut sum = vec![[0.0; 5]; model.mesh.num_nodes()];
     // The Gauss-to-node matrix of each element type met (it depends on the type alone).
     let mut extrapolation: Vec<(ElementType, DMatrix<f64>)> = Vec::new();
     for i in (0..b.num_cells()).filter(|&i| keep(i)) {
@@ -61,19 +85,19 @@ fn nodal_stresses_of_cells(
         let coords = b.cell_coords(&model.mesh, i);
         let ue: Vec<f64> = b.cell_dofs(i).map(|d| u[d.0]).collect();
         let err = |source| FemError::Element { body: b.name.clone(), cell: b.cell_tags[i], source };
-        let nodal: Vec<[f64; 3]> = match recovery {
+        let nodal: Vec<[f64; 4]> = match recovery {
             StressRecovery::Direct => element
                 .reference_nodes()
                 .iter()
-                .map(|xi| stress_at_with(element, &coords, &b.material, &ue, *xi, b.formulation))
+                .map(|xi| state(element, &coords, &ue, xi))
                 .collect::<Result<_, _>>()
                 .map_err(err)?,
             StressRecovery::Extrapolated => {
-                let rule = GaussRule::stiffness_rule(element);
-                let gauss: Vec<[f64; 3]> = rule
+                let rule = b.kinematics.stiffness_rule(element);
+                let gauss: Vec<[f64; 4]> = rule
                     .points
                     .iter()
-                    .map(|xi| stress_at_with(element, &coords, &b.material, &ue, *xi, b.formulation))
+                    .map(|xi| state(element, &coords, &ue, xi))
                     .collect::<Result<_, _>>()
                     .map_err(err)?;
                 let e = match extrapolation.iter().position(|(t, _)| *t == element) {
@@ -85,9 +109,9 @@ fn nodal_stresses_of_cells(
                 };
                 (0..element.num_nodes())
                     .map(|a| {
-                        let mut s = [0.0; 3];
+                        let mut s = [0.0; 4];
                         for (g, sg) in gauss.iter().enumerate() {
-                            for k in 0..3 {
+                            for k in 0..4 {
                                 s[k] += e[(a, g)] * sg[k];
                             }
                         }
@@ -98,13 +122,23 @@ fn nodal_stresses_of_cells(
         };
         for (node, s) in b.cell_nodes(i).iter().zip(nodal) {
             let acc = &mut sum[node.0];
-            for k in 0..3 {
+            for k in 0..4 {
                 acc[k] += s[k];
             }
-            acc[3] += 1.0;
+            acc[4] += 1.0;
         }
     }
-    Ok(sum.into_iter().map(|a| (a[3] > 0.0).then(|| [a[0] / a[3], a[1] / a[3], a[2] / a[3]])).collect())
+    Ok(sum
+        .into_iter()
+        .map(|a| {
+            (a[4] > 0.0).then(|| {
+                let s = [a[0] / a[4], a[1] / a[4], a[2] / a[4]];
+                // In the plane σ33 follows from the recovered in-plane stress itself.
+                let out = b.kinematics.out_of_plane_stress(&b.material, &s).unwrap_or(a[3] / a[4]);
+                [s[0], s[1], s[2], out]
+            })
+        })
+        .collect())
 }
 
 /// Stress at one node of a curve.
@@ -147,20 +181,26 @@ pub fn stresses_along_curve(
     contour.nodes.iter().for_each(|n| on_curve[n.0] = true);
     let b = &model.bodies[body.0];
     let touches = |i: usize| b.cell_nodes(i).iter().any(|n| on_curve[n.0]);
-    let nodal = nodal_stresses_of_cells(model, body, u, recovery, touches)?;
+    let nodal = nodal_stress_states_of_cells(model, body, u, recovery, touches)?;
     contour
         .nodes
         .iter()
         .zip(&contour.arc_length)
         .zip(&contour.tangents)
         .map(|((n, s), t)| {
-            let stress = nodal[n.0].ok_or_else(|| {
+            let [s11, s22, s12, _] = nodal[n.0].ok_or_else(|| {
                 FemError::InvalidInput(format!(
                     "curve \"{}\": node tag {} is not in body \"{}\"",
                     contour.name, model.mesh.node_tags[n.0], model.bodies[body.0].name
                 ))
             })?;
-            Ok(CurveSample { node: *n, arc_length: *s, x: model.mesh.points[n.0], tangent: *t, stress })
+            Ok(CurveSample {
+                node: *n,
+                arc_length: *s,
+                x: model.mesh.points[n.0],
+                tangent: *t,
+                stress: [s11, s22, s12],
+            })
         })
         .collect()
 }

@@ -9,12 +9,18 @@
 //! Each connected piece of each body is checked on its own (coordinates centred and scaled so
 //! the rank test is independent of units), so an unconstrained body is reported by name before
 //! any factorisation could produce NaN or a meaningless pivot.
+//!
+//! Only the body's own rigid motions count ([`contact2d_element::Kinematics::rigid_motions`]):
+//! all three in the plane, the axial translation `(0, 1, 0)` alone for a body of revolution. With
+//! `P` the projector on their span, the test runs on `P N P + (I − P) c` (`N = Σ r rᵀ`, `c` above
+//! every eigenvalue of `N`), so motions outside the span never count as free; in the plane
+//! `P = I` and the matrix is `N` itself, bit for bit.
 
 use nalgebra::Matrix3;
 
 use crate::dof::{Component, Dof, DofKind, DofMap};
 use crate::error::FemError;
-use crate::model::Model;
+use crate::model::{Body, Model};
 
 /// A connected piece of a body that the Dirichlet conditions leave free to move rigidly: a body
 /// held only by contact (a pin pushed by a force, a roller pressed on a block).
@@ -74,7 +80,7 @@ pub fn floating_pieces(model: &Model, dofs: &DofMap) -> Vec<FloatingPiece> {
     for body in &model.bodies {
         for piece in connected_pieces(body) {
             let (normal, centre, scale) = constraint_normal_matrix(model, dofs, &piece);
-            let eig = normal.symmetric_eigen();
+            let eig = within_motions(normal, body).symmetric_eigen();
             let largest = eig.eigenvalues.iter().fold(0.0f64, |a, e| a.max(*e)).max(f64::MIN_POSITIVE);
             let mut order: Vec<usize> = (0..3).collect();
             order.sort_by(|a, b| eig.eigenvalues[*a].total_cmp(&eig.eigenvalues[*b]));
@@ -105,7 +111,7 @@ pub fn floating_pieces(model: &Model, dofs: &DofMap) -> Vec<FloatingPiece> {
 pub fn check_rigid_modes(model: &Model, dofs: &DofMap) -> Result<(), FemError> {
     for body in &model.bodies {
         for piece in connected_pieces(body) {
-            let free_modes = 3 - constraint_rank(model, dofs, &piece);
+            let free_modes = 3 - constraint_rank(model, dofs, &piece, body);
             if free_modes > 0 {
                 let node = piece.first().copied().unwrap_or(0);
                 return Err(FemError::UnconstrainedBody {
@@ -119,11 +125,23 @@ pub fn check_rigid_modes(model: &Model, dofs: &DofMap) -> Result<(), FemError> {
     Ok(())
 }
 
-fn constraint_rank(model: &Model, dofs: &DofMap, nodes: &[usize]) -> usize {
+fn constraint_rank(model: &Model, dofs: &DofMap, nodes: &[usize], body: &Body) -> usize {
     let (normal, _, _) = constraint_normal_matrix(model, dofs, nodes);
-    let eig = normal.symmetric_eigenvalues();
+    let eig = within_motions(normal, body).symmetric_eigenvalues();
     let largest = eig.max().max(f64::MIN_POSITIVE);
     eig.iter().filter(|&&e| e > 1e-10 * largest && e > 1e-14).count()
+}
+
+/// `P N P + (I − P) c` (module docs): the constraint matrix `N` seen only along the body's rigid
+/// motions; `N` itself in the plane.
+fn within_motions(normal: Matrix3<f64>, body: &Body) -> Matrix3<f64> {
+    let mut projector = Matrix3::<f64>::zeros();
+    for m in body.kinematics.rigid_motions() {
+        let v = nalgebra::Vector3::from(m);
+        projector += v * v.transpose();
+    }
+    let held = normal.trace() + 1.0;
+    projector * normal * projector + (Matrix3::identity() - projector) * held
 }
 
 /// `Σ r rᵀ` over the constraint rows `r` of the piece's constrained DOFs, in centred and scaled
@@ -152,7 +170,7 @@ fn constraint_normal_matrix(model: &Model, dofs: &DofMap, nodes: &[usize]) -> (M
 
 /// Connected pieces of a body (nodes linked by sharing a cell), by union-find over a dense
 /// parent array (union by size, path halving): linear in the mesh size.
-fn connected_pieces(body: &crate::model::Body) -> Vec<Vec<usize>> {
+fn connected_pieces(body: &Body) -> Vec<Vec<usize>> {
     let n = body.nodes.iter().map(|v| v.0 + 1).max().unwrap_or(0);
     let mut parent: Vec<usize> = (0..n).collect();
     let mut size = vec![1usize; n];

@@ -22,6 +22,7 @@ pub mod lame;
 pub mod norms;
 pub mod patch;
 pub mod report;
+pub mod revolution;
 
 use contact2d_element::ElementError;
 use contact2d_fem::FemError;

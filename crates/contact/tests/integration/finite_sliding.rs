@@ -16,7 +16,7 @@ use contact2d_contact::{
     FixDescription, GapDescription, LoadDescription, LoadSchedule, PairState, Pairing, ProblemDescription, Retention,
     SolverSettings,
 };
-use contact2d_element::{Formulation, PlaneCondition};
+use contact2d_element::{Formulation, Kinematics};
 use contact2d_fem::Component;
 use contact2d_mesh::CellKind;
 use contact2d_mesh::Mesh;
@@ -36,8 +36,7 @@ fn body(region: &str, e: f64) -> BodyDescription {
         region: region.into(),
         youngs_modulus: e,
         poissons_ratio: 0.3,
-        plane: PlaneCondition::Strain,
-        thickness: 1.0,
+        kinematics: Kinematics::PlaneStrain { thickness: 1.0 },
         formulation: Formulation::Standard,
     }
 }

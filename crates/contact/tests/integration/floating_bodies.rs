@@ -14,7 +14,7 @@ use contact2d_contact::{
     BodyDescription, ContactAlgorithm, ContactDescription, ContactError, ContactStatus, EdgeLoadKind, FixDescription,
     GapDescription, LoadDescription, LoadSchedule, Pairing, ProblemDescription, SolverSettings, solve,
 };
-use contact2d_element::{Formulation, PlaneCondition};
+use contact2d_element::{Formulation, Kinematics};
 use contact2d_fem::Component;
 use contact2d_mesh::generate::{append_prefixed, rectangle};
 use contact2d_mesh::{CellKind, Mesh};
@@ -32,8 +32,7 @@ fn body(region: &str, e: f64) -> BodyDescription {
         region: region.into(),
         youngs_modulus: e,
         poissons_ratio: 0.3,
-        plane: PlaneCondition::Strain,
-        thickness: 1.0,
+        kinematics: Kinematics::PlaneStrain { thickness: 1.0 },
         formulation: Formulation::Standard,
     }
 }

@@ -25,7 +25,7 @@ use contact2d_contact::{
     GapDescription, History, LinearSolver, LoadDescription, LoadSchedule, Pairing, ProblemDescription, SolverSettings,
     solve,
 };
-use contact2d_element::{Formulation, PlaneCondition};
+use contact2d_element::{Formulation, Kinematics};
 use contact2d_fem::Component;
 use contact2d_mesh::generate::{append_prefixed, rectangle};
 use contact2d_mesh::{CellKind, Mesh};
@@ -156,8 +156,7 @@ fn floating_description(lower: [f64; 2], na: usize, nb: usize, pairing: Pairing)
         region: region.into(),
         youngs_modulus: e,
         poissons_ratio: 0.3,
-        plane: PlaneCondition::Strain,
-        thickness: 1.0,
+        kinematics: Kinematics::PlaneStrain { thickness: 1.0 },
         formulation: Formulation::Standard,
     };
     let fix = |group: &str, component, value, pattern: &str| FixDescription {

@@ -10,6 +10,7 @@ pub mod adaptive;
 pub mod fretting;
 #[cfg(feature = "native")]
 pub mod fretting_outputs;
+pub mod kinematics_key;
 #[cfg(feature = "native")]
 pub mod outputs;
 pub mod path_error;

@@ -297,10 +297,10 @@ pub fn built_step_view<'a>(built: &'a BuiltProblem, solution: &'a ContactSolutio
     let problem = &built.problem;
     let mut node_contact = vec![None; problem.model.mesh.num_nodes()];
     for iface in &built.interfaces {
-        let thickness = problem.model.body(&iface.master_region).map_or(1.0, |(_, b)| b.kinematics.thickness());
+        let factor = problem.model.body(&iface.master_region).map_or(1.0, |(_, b)| b.kinematics.pair_area_factor());
         for k in iface.pairs.clone() {
             let pair = &problem.pairs[k];
-            let area = pair.weight * thickness;
+            let area = pair.weight * factor;
             node_contact[pair.master.0] = Some(NodeValues {
                 pressure: solution.normal_force[k] / area,
                 shear: solution.tangential_force[k] / area,

@@ -64,7 +64,7 @@ pub(super) fn set_placed_ends(report: &mut GenericReport, i: usize, step: &Place
         .built
         .interfaces
         .first()
-        .and_then(|f| case.problem().model.body(&f.master_region).map(|(_, b)| b.kinematics.thickness()))
+        .and_then(|f| case.problem().model.body(&f.master_region).map(|(_, b)| b.kinematics.pair_area_factor()))
         .unwrap_or(1.0);
     let last = i + 1 == report.steps.len();
     let rows = report.steps.get_mut(i).and_then(|row| row.contacts.get_mut(&name)).into_iter();

@@ -720,7 +720,7 @@ pub fn contact_result_about(
 ) -> ContactResult {
     let problem = &built.problem;
     let order = sorted_pairs(built, iface);
-    let thickness = problem.model.body(&iface.master_region).map_or(1.0, |(_, b)| b.kinematics.thickness());
+    let thickness = problem.model.body(&iface.master_region).map_or(1.0, |(_, b)| b.kinematics.pair_area_factor());
     let area = |k: usize| problem.pairs[k].weight * thickness;
     let arc: Vec<f64> = order.iter().map(|&k| problem.pairs[k].master_arc_length).collect();
     let in_contact: Vec<bool> = order.iter().map(|&k| s.state[k] != PairState::Free).collect();

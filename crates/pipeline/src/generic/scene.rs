@@ -54,6 +54,7 @@ use contact2d_element::{Formulation, PlaneCondition, locking_warning};
 use contact2d_fem::Component;
 use contact2d_mesh::Mesh;
 
+use super::kinematics_key::KinematicsKey;
 use crate::schema::limits::{MAX_FRICTION, STIFFNESS_RATIO_RANGE};
 use crate::schema::{SceneError, SolverEntry, parse_scene_toml};
 
@@ -68,7 +69,7 @@ pub enum PlaneKey {
 }
 
 impl PlaneKey {
-    fn condition(self) -> PlaneCondition {
+    pub(super) fn condition(self) -> PlaneCondition {
         match self {
             PlaneKey::Stress => PlaneCondition::Stress,
             PlaneKey::Strain => PlaneCondition::Strain,
@@ -88,9 +89,8 @@ pub struct BodyEntry {
     pub poissons_ratio: f64,
     /// Overrides the scene's `plane`.
     pub plane: Option<PlaneKey>,
-    /// Out-of-plane thickness (default 1).
-    #[serde(default = "one")]
-    pub thickness: f64,
+    /// Out-of-plane thickness (default 1; none for a body of revolution).
+    pub thickness: Option<f64>,
     /// `standard` (default) or `bbar` (locking-free for nearly incompressible plane strain).
     #[serde(default)]
     pub formulation: FormulationKey,
@@ -336,9 +336,6 @@ impl Default for LoadingSection {
     }
 }
 
-fn one() -> f64 {
-    1.0
-}
 fn main() -> String {
     DEFAULT_PATTERN.to_string()
 }
@@ -347,9 +344,6 @@ fn automatic() -> PairingKey {
 }
 fn geometric() -> GapKey {
     GapKey::Named("geometric".into())
-}
-fn stress() -> PlaneKey {
-    PlaneKey::Stress
 }
 
 /// A generic scene.
@@ -363,9 +357,11 @@ pub struct GenericScene {
     pub description: String,
     /// The mesh, relative to the scene file.
     pub mesh: PathBuf,
-    /// Default plane condition of the bodies.
-    #[serde(default = "stress")]
-    pub plane: PlaneKey,
+    /// `plane_stress`, `plane_strain` or `axisymmetric` ([`super::kinematics_key`]).
+    pub kinematics: Option<KinematicsKey>,
+    /// Default plane condition of the bodies (plane stress when neither this nor `kinematics`
+    /// is given).
+    pub plane: Option<PlaneKey>,
     /// Bodies.
     #[serde(default)]
     pub body: Vec<BodyEntry>,
@@ -487,15 +483,11 @@ impl GenericScene {
                 return Err(self
                     .fail(&format!("body.{i}.poissons_ratio"), format!("{} must lie in (−1, 0.5)", b.poissons_ratio)));
             }
-            if !(b.thickness.is_finite() && b.thickness > 0.0) {
-                return Err(
-                    self.fail(&format!("body.{i}.thickness"), format!("{} must be finite and > 0", b.thickness))
-                );
-            }
             if self.body[..i].iter().any(|c| c.region == b.region) {
                 return Err(self.fail(&format!("body.{i}.region"), format!("\"{}\" is a body twice", b.region)));
             }
         }
+        self.validate_kinematics()?;
         self.validate_stiffness_ratio()?;
         self.validate_points()?;
         for (i, c) in self.contact.iter().enumerate() {
@@ -667,7 +659,7 @@ impl GenericScene {
         self.body
             .iter()
             .filter_map(|b| {
-                let plane = b.plane.unwrap_or(self.plane).condition();
+                let plane = self.body_plane(b);
                 locking_warning(plane, b.poissons_ratio, b.formulation.formulation())
                     .map(|w| format!("body \"{}\": {w}", b.region))
             })
@@ -688,8 +680,7 @@ impl GenericScene {
                 region: b.region.clone(),
                 youngs_modulus: b.youngs_modulus,
                 poissons_ratio: b.poissons_ratio,
-                plane: b.plane.unwrap_or(self.plane).condition(),
-                thickness: b.thickness,
+                kinematics: self.body_kinematics(b),
                 formulation: b.formulation.formulation(),
             })
             .collect();

@@ -43,7 +43,7 @@ fn parses_patterns_schedule_and_overrides_by_index_and_name() {
     let s = GenericScene::from_toml_str(SCENE, path, &["contact.0.friction=0.2".into(), "body.b.thickness=2".into()])
         .unwrap();
     assert_eq!(s.contact[0].friction, 0.2);
-    assert_eq!(s.body[1].thickness, 2.0);
+    assert_eq!(s.body[1].thickness, Some(2.0));
     assert_eq!(s.pattern_names(), ["slide", "press"]);
     let schedule = s.schedule().unwrap();
     assert_eq!(schedule.steps(), &[vec![0.0, 1.0], vec![1.0, 1.0]]);

@@ -39,7 +39,7 @@ impl PlateInsert {
             youngs_modulus,
             poissons_ratio: self.poissons_ratio,
             plane: None,
-            thickness: 1.0,
+            thickness: Some(1.0),
             formulation: match self.formulation {
                 Formulation::BBar => FormulationKey::Bbar,
                 _ => FormulationKey::Standard,
@@ -86,10 +86,11 @@ impl PlateInsert {
             name: name.into(),
             description: String::new(),
             mesh: PathBuf::from(&self.mesh),
-            plane: match self.plane {
+            kinematics: None,
+            plane: Some(match self.plane {
                 PlaneCondition::Strain => PlaneKey::Strain,
                 _ => PlaneKey::Stress,
-            },
+            }),
             body: bodies,
             fix: fixes,
             load: vec![],
