@@ -169,7 +169,29 @@ function setError(message) {
   }
 }
 
-async function solveNow() {
+/** Runs the scheduled solve; `state.inflight` is its promise while it runs (a history or cycle
+ * waits for it, see settle()). */
+function solveNow() {
+  const run = solveScheduled().finally(() => { if (state.inflight === run) state.inflight = null; });
+  state.inflight = run;
+  return run;
+}
+
+/** Before a history or cycle starts: no solve of the controls may run, be scheduled or queued
+ * (its answer would be drawn over the run's steps, or its end would reschedule a solve that
+ * cancels the run). A solve in flight is awaited; a scheduled or queued one is run now (its
+ * view gives the published case the run's steps show). Loops until nothing is pending, as a
+ * finished solve may reschedule a queued one. */
+async function settle() {
+  for (;;) {
+    if (state.inflight) { await state.inflight; continue; }
+    if (state.frame) { cancelAnimationFrame(state.frame); state.frame = 0; await solveNow(); continue; }
+    if (state.queued) { state.queued = false; await solveNow(); continue; }
+    return;
+  }
+}
+
+async function solveScheduled() {
   page.run = "solving";
   const sceneName = state.scene;
   const scene = SCENES[sceneName];
@@ -223,8 +245,11 @@ function record(view, timing) {
 // runs; any input, preset or tab switch stops it too.
 async function runHistory() {
   if (page.run === "history") { cancelHistory(); return; }
-  if (page.run === "solving") return;
-  if (state.frame) { cancelAnimationFrame(state.frame); state.frame = 0; await solveNow(); }
+  // A click while a solve of the controls runs or is scheduled is not lost: the history starts
+  // when that solve has been drawn (a second click meanwhile is the same request).
+  if (state.starting) return;
+  state.starting = true;
+  try { await settle(); } finally { state.starting = false; }
   const generation = ++state.generation;
   page.run = "history";
   $("history").textContent = "Stop the loading history";
@@ -269,8 +294,9 @@ async function runHistory() {
 // 150 ms; stopped like a history.
 async function runCycle() {
   if (page.run === "cycle") { cancelHistory(); return; }
-  if (page.run === "solving") return;
-  if (state.frame) { cancelAnimationFrame(state.frame); state.frame = 0; await solveNow(); }
+  if (state.starting) return;
+  state.starting = true;
+  try { await settle(); } finally { state.starting = false; }
   const generation = ++state.generation;
   page.run = "cycle";
   $("cycle").textContent = "Stop the cycle";
