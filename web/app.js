@@ -11,7 +11,7 @@
 import init, { bundled_json } from "./pkg/contact2d_web.js";
 import { PAPER_SCENES, PRESETS, flagshipParams, flagshipSteps } from "./scenes_paper.js";
 import { GENERIC_SCENES, readUserFiles } from "./scenes_generic.js";
-import { chart, chartCsv, drawMesh, setFontPx } from "./chart.js";
+import { chart, chartCsv, drawMesh, fixedMeshScale, setFontPx } from "./chart.js";
 import { readUrl, urlOf } from "./url.js";
 import { EXPLAIN } from "./explain.js";
 import { drawCycleStep } from "./cycle.js";
@@ -138,6 +138,7 @@ const CYCLE_LABEL = "Mindlin–Deresiewicz cycle: +A → −A → +A";
 /** Stops a history or cycle in flight: its loop sees the new generation and never draws again. */
 function cancelHistory() {
   state.generation += 1;
+  stopPlay();
   if (page.run === "history" || page.run === "cycle") page.run = "idle";
   $("history").textContent = HISTORY_LABEL;
   $("cycle").textContent = CYCLE_LABEL;
@@ -148,6 +149,7 @@ function cancelHistory() {
  * value replaces a queued one. */
 function schedule() {
   cancelHistory();
+  clearPlayer();
   state.history = [];
   if (page.run === "solving") { state.queued = true; return; }
   if (!state.frame) {
@@ -251,6 +253,8 @@ async function runHistory() {
   state.starting = true;
   try { await settle(); } finally { state.starting = false; }
   const generation = ++state.generation;
+  clearPlayer();
+  const frames = [];
   page.run = "history";
   $("history").textContent = "Stop the loading history";
   const values = { ...state.values }, w = Number(values.load);
@@ -268,11 +272,13 @@ async function runHistory() {
       if (generation !== state.generation) return;
       state.history.push({ w: Number(load), l: view.summary.paper.l, b: view.summary.paper.b });
       const n = flagshipSteps({ ...base, steps });
-      draw(view, values, {
+      const shows = {
         kind: "history", scene: "flagship", step: k, published,
         text: `Loading history, step ${k} of ${HISTORY_STEPS}: w = ${load} reached in ${n} equal load step(s) ` +
           `(the controls: ${SCENES.flagship.describe(values)}).`,
-      });
+      };
+      frames.push({ view, shows });
+      draw(view, values, shows);
       record(view, { scene: "history", solve_ms: t1 - t0, total_ms: performance.now() - t0 });
       $("timing").textContent = `history step ${k}/${HISTORY_STEPS} (w = ${load}): ${(t1 - t0).toFixed(1)} ms`;
     } catch (e) {
@@ -287,6 +293,11 @@ async function runHistory() {
   if (generation === state.generation) {
     page.run = "idle";
     $("history").textContent = "Loading history: step w from 0 and draw l(w), b(w)";
+    // Complete: the steps can be played, stepped and scrubbed, all at the whole history's scale.
+    if (frames.length === HISTORY_STEPS) {
+      setPlayer({ kind: "history", values, frames, first: 1, last: HISTORY_STEPS, interval: 400 });
+      showFrame(HISTORY_STEPS);
+    }
   }
 }
 
@@ -317,17 +328,105 @@ async function runCycle() {
     return;
   }
   page.cycle = view;
-  const last = view.summary.steps.length - 1;
-  for (let k = 1; k <= last; k++) {
-    if (generation !== state.generation) return;
-    const shows = { kind: "cycle", scene: "cattaneo_mindlin", step: k,
-      text: `Mindlin–Deresiewicz cycle, step ${k} of ${last}: the top at δ = ${view.cycle_shear[k]} × 0.01 mm ` +
-        `(press ${values.press}, amplitude ${values.amp}); the mesh's shape is the last step's.` };
-    draw(view, values, shows, (ui) => drawCycleStep(view, k, ui, $("history-plot"), chart));
-    page.cycleStep = k;
-    await new Promise((r) => setTimeout(r, 150));
-  }
+  // Played once through (150 ms a step); then, or when paused, the player steps and scrubs it.
+  setPlayer({ kind: "cycle", values, view, first: 1, last: view.summary.steps.length - 1, interval: 150 });
+  await play();
   if (generation === state.generation) cancelHistory();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The player: play / pause / step / scrub through the steps of a finished history or a cycle,
+// every step drawn at one scale (the mesh's β and box, the charts' y axes) taken from the whole
+// run, so that frames are comparable and the deformation grows with the load. Any input clears it.
+
+/** Draws step k of a history or cycle with a recording `ui`: the scene's chart specs and the
+ * mesh's focus, without drawing. */
+function specsOf(p, k) {
+  const got = { focus: null, charts: {} };
+  const add = (id, spec) => { (got.charts[id] = got.charts[id] || []).push(...spec.series.flatMap((s) => s.y.filter((v) => v !== null))); };
+  const ui = { mesh: (v, focus) => { got.focus = focus; }, chart: (spec) => add("profile", spec), output() {}, banner() {}, table() {} };
+  if (p.kind === "cycle") drawCycleStep(p.view, k, ui, { id: "history-plot" }, (c, spec) => add(c.id, spec));
+  else SCENES.flagship.draw(p.frames[k - 1].view, ui, p.values);
+  return got;
+}
+
+function setPlayer(p) {
+  p.k = p.last;
+  p.token = 0;
+  const views = p.kind === "cycle" ? [p.view] : p.frames.map((f) => f.view);
+  const ys = {};
+  let focus = null;
+  for (let k = p.first; k <= p.last; k++) {
+    const got = specsOf(p, k);
+    focus = got.focus;
+    for (const [id, y] of Object.entries(got.charts)) (ys[id] = ys[id] || []).push(...y);
+  }
+  if (p.kind === "history") ys["history-plot"] = state.history.flatMap((h) => [h.l, h.b]);
+  const yrange = Object.fromEntries(Object.entries(ys).map(([id, y]) => [id, [Math.min(...y), Math.max(...y)]]));
+  p.fixed = { mesh: fixedMeshScale(views, Number(p.values.mag), focus), yrange };
+  state.player = p;
+  const scrub = $("scrub");
+  Object.assign(scrub, { min: p.first, max: p.last, step: 1 });
+  scrub.value = p.k;
+  $("player").hidden = false;
+  $("player-what").textContent = p.kind === "cycle" ? "the cycle's steps" : "the history's steps";
+  page.player = { kind: p.kind, k: p.k, first: p.first, last: p.last, playing: false, fixed: p.fixed };
+}
+
+function clearPlayer() {
+  stopPlay();
+  state.player = null;
+  page.player = null;
+  $("player").hidden = true;
+}
+
+/** Shows step k (clamped to the run's steps) at the run's fixed scale. */
+function showFrame(k) {
+  const p = state.player;
+  if (!p) return;
+  k = Math.min(p.last, Math.max(p.first, k));
+  p.k = k;
+  $("scrub").value = k;
+  $("scrub-out").textContent = `step ${k} of ${p.last}`;
+  page.player.k = k;
+  if (p.kind === "cycle") {
+    const view = p.view, values = p.values;
+    const shows = { kind: "cycle", scene: "cattaneo_mindlin", step: k,
+      text: `Mindlin–Deresiewicz cycle, step ${k} of ${p.last}: the top at δ = ${view.cycle_shear[k]} × 0.01 mm ` +
+        `(press ${values.press}, amplitude ${values.amp}); the mesh's shape is the last step's.` };
+    draw(view, values, shows, (ui) => drawCycleStep(view, k, ui, $("history-plot"), (c, spec) =>
+      chart(c, { ...spec, yrange: p.fixed.yrange[c.id] })));
+    page.cycleStep = k;
+  } else {
+    const { view, shows } = p.frames[k - 1];
+    draw(view, p.values, shows);
+    page.view = view;
+  }
+}
+
+function stopPlay() {
+  const p = state.player;
+  if (!p) return;
+  p.token += 1;
+  if (page.player) page.player.playing = false;
+  $("play").textContent = "Play";
+}
+
+/** Plays from the step after the current one (from the first at the end) to the last; resolves
+ * true when it reached the last step, false when paused or stopped. */
+async function play() {
+  const p = state.player;
+  if (!p) return false;
+  const token = ++p.token;
+  page.player.playing = true;
+  $("play").textContent = "Pause";
+  for (let k = p.k >= p.last ? p.first : p.k + 1; k <= p.last; k++) {
+    showFrame(k);
+    if (k < p.last) await new Promise((r) => setTimeout(r, p.interval));
+    if (token !== p.token || state.player !== p) return false;
+  }
+  stopPlay();
+  return true;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -352,7 +451,9 @@ function draw(view, values, shows, custom = null) {
   const published = shows.kind === "history" ? shows.published : view.published;
   const ui = {
     mesh: (v, focus) => {
-      const { counts, beta } = drawMesh($("mesh"), v, Number(values.mag), focus);
+      const fixed = shows.step && state.player ? state.player.fixed : null;
+      const { counts, beta } = drawMesh($("mesh"), v, Number(values.mag), focus, fixed && fixed.mesh);
+      page.beta = beta;
       const slip = (counts["slip+"] || 0) + (counts["slip-"] || 0);
       $("pair-counts").textContent = `— ${counts.stick || 0} stick, ${slip} slip (${counts["slip+"] || 0} +, ` +
         `${counts["slip-"] || 0} −), ${counts.contact || 0} contact, ` +
@@ -360,7 +461,11 @@ function draw(view, values, shows, custom = null) {
       Object.assign($("mesh").dataset, { stick: counts.stick || 0, slip, free: counts.free || 0,
         slipPlus: counts["slip+"] || 0, slipMinus: counts["slip-"] || 0 });
     },
-    chart: (spec, caption) => { chart($("profile"), spec); $("profile-caption").textContent = caption; },
+    chart: (spec, caption) => {
+      const fixed = shows.step && state.player ? state.player.fixed : null;
+      chart($("profile"), fixed ? { ...spec, yrange: fixed.yrange.profile } : spec);
+      $("profile-caption").textContent = caption;
+    },
     output: (id, value, text) => { const o = $(id); if (o) { o.textContent = text; o.dataset.value = String(value); } },
     banner: (text) => { $("banner").hidden = !text; $("banner").textContent = text || ""; },
     table: (rows) => {
@@ -406,16 +511,19 @@ function draw(view, values, shows, custom = null) {
   $("banner").hidden = true;
   if (custom) { custom(ui); return; }
   SCENES[shows.scene].draw(view, ui, values);
-  if (shows.scene === "flagship") drawHistory(values);
+  if (shows.scene === "flagship") drawHistory(values, shows);
   if (shows.scene === "cattaneo_mindlin") {
     chart($("history-plot"), { series: [{ x: [], y: [], colour: "#6b4c9a", label: "Q(δ): run the cycle" }],
       xlabel: "δ: sideways displacement of the roller's top, mm", ylabel: "Q, N/mm" });
   }
 }
 
-function drawHistory(values) {
-  const h = state.history;
+/** l(w), b(w) of the history so far, or up to the step shown (the player), on its fixed axes. */
+function drawHistory(values, shows) {
+  const h = shows.kind === "history" ? state.history.slice(0, shows.step) : state.history;
+  const fixed = shows.kind === "history" && state.player ? state.player.fixed.yrange["history-plot"] : undefined;
   chart($("history-plot"), {
+    yrange: fixed,
     series: [
       { x: h.map((p) => p.w), y: h.map((p) => p.l), colour: "#d62728", label: "l(w)", points: h.length < 2 },
       { x: h.map((p) => p.w), y: h.map((p) => p.b), colour: "#1f77b4", label: "b(w)", points: h.length < 2 },
@@ -539,6 +647,12 @@ function build() {
   $("history").addEventListener("click", runHistory);
   $("cancel").addEventListener("click", cancelSolve);
   $("cycle").addEventListener("click", runCycle);
+  $("play").addEventListener("click", () => {
+    if (page.player && page.player.playing) stopPlay(); else play();
+  });
+  $("step-back").addEventListener("click", () => { stopPlay(); showFrame(state.player.k - 1); });
+  $("step-fwd").addEventListener("click", () => { stopPlay(); showFrame(state.player.k + 1); });
+  $("scrub").addEventListener("input", () => { stopPlay(); showFrame(Number($("scrub").value)); });
   // Reset: the scene's defaults, in the same display mode (projector stays on or off).
   $("reset").addEventListener("click", () => {
     $("url-notes").hidden = true;
