@@ -12,6 +12,7 @@ import init, { bundled_json } from "./pkg/contact2d_web.js";
 import { PAPER_SCENES, PRESETS, flagshipParams, flagshipSteps } from "./scenes_paper.js";
 import { GENERIC_SCENES, readUserFiles } from "./scenes_generic.js";
 import { chart, chartCsv, drawMesh, fixedMeshScale, setFontPx } from "./chart.js";
+import { figureParts, figurePng, figureSvg } from "./figure.js";
 import { readUrl, urlOf } from "./url.js";
 import { EXPLAIN } from "./explain.js";
 import { drawCycleStep } from "./cycle.js";
@@ -369,7 +370,7 @@ function setPlayer(p) {
   Object.assign(scrub, { min: p.first, max: p.last, step: 1 });
   scrub.value = p.k;
   $("player").hidden = false;
-  $("player-what").textContent = p.kind === "cycle" ? "the cycle's steps" : "the history's steps";
+  $("player-what").textContent = p.kind === "cycle" ? "the cycle's steps:" : "the history's steps:";
   page.player = { kind: p.kind, k: p.k, first: p.first, last: p.last, playing: false, fixed: p.fixed };
 }
 
@@ -573,18 +574,41 @@ function download(name, blob) {
   setTimeout(() => URL.revokeObjectURL(a.href), 10000);
 }
 
+/** The CSV: what is shown, the table, the profile chart's series, and the whole run when one
+ * was made: the loading history's (w, l, b) or the cycle's (step, δ, Q) loop. */
 function exportCsv() {
   const rows = [...$("summary").tBodies[0].rows].map((r) => [r.cells[0].textContent, r.cells[1].dataset.value,
     r.cells[2].textContent]);
   const quote = (s) => `"${String(s).replaceAll('"', '""')}"`;
+  const run = [];
+  if (state.scene === "flagship" && state.history.length) {
+    run.push(`${quote("loading history")}`, "w,l,b", ...state.history.map((h) => `${h.w},${h.l},${h.b}`), "");
+  }
+  if (state.scene === "cattaneo_mindlin" && page.cycle && state.player && state.player.kind === "cycle") {
+    const v = page.cycle;
+    run.push(`${quote("Mindlin–Deresiewicz cycle (the whole loop)")}`, "step,delta_mm,Q_N_per_mm",
+      ...v.summary.steps.map((st, k) => `${k},${v.cycle_shear[k] * 0.01},${st.reactions.cylinder_top[0]}`), "");
+  }
   const text = [`${quote("shows")},${quote($("table-caption").textContent)}`, `${quote("url")},${quote(location.href)}`, "",
-    "quantity,live,published", ...rows.map((r) => r.map(quote).join(",")), "", chartCsv("profile")].join("\n");
+    "quantity,live,published", ...rows.map((r) => r.map(quote).join(",")), "", chartCsv("profile"), ...run].join("\n");
   download(`contact2d_${state.scene}.csv`, new Blob([text], { type: "text/csv" }));
 }
 
+/** The figures shown, as one figure: title, key numbers, the mesh with its colour key, the
+ * profile and (when shown) the history or loop chart, each with its legend. */
+function shownFigure() {
+  const canvases = ["mesh", "profile", "history-plot"].map($).filter((c) => !c.closest("[hidden]") && c.width > 0);
+  const numbers = [...$("summary").tBodies[0].rows].slice(0, 4).map((r) => `${r.cells[0].textContent} = ${r.cells[1].textContent}`);
+  return figureParts({ title: `contact2d — ${SCENES[state.scene].title}`, caption: $("table-caption").textContent,
+    numbers, canvases });
+}
+
 function exportPng() {
-  $("mesh").toBlob((mesh) => download(`contact2d_${state.scene}_mesh.png`, mesh));
-  $("profile").toBlob((profile) => download(`contact2d_${state.scene}_profile.png`, profile));
+  figurePng(shownFigure()).toBlob((png) => download(`contact2d_${state.scene}_figure.png`, png));
+}
+
+function exportSvg() {
+  download(`contact2d_${state.scene}_figure.svg`, new Blob([figureSvg(shownFigure())], { type: "image/svg+xml" }));
 }
 
 async function takeFiles(files) {
@@ -665,6 +689,7 @@ function build() {
   });
   $("export-png").addEventListener("click", exportPng);
   $("export-csv").addEventListener("click", exportCsv);
+  $("export-svg").addEventListener("click", exportSvg);
   $("user-input").addEventListener("change", (e) => takeFiles(e.target.files));
   document.addEventListener("dragover", (e) => e.preventDefault());
   document.addEventListener("drop", (e) => { e.preventDefault(); takeFiles(e.dataTransfer.files); });
@@ -682,6 +707,14 @@ async function main() {
   startWorker();
   const bundled = JSON.parse(bundled_json());
   $("user-limits").textContent = `limits: scene ≤ ${bundled.max_scene_bytes} bytes, mesh ≤ ${bundled.max_mesh_bytes} bytes`;
+  // The bundled scenes' files (web/build.sh copies them to pkg/examples) as examples to download.
+  for (const [i, { name, mesh_file: mesh }] of bundled.generic.entries()) {
+    for (const [j, file] of [`${name}.toml`, mesh].entries()) {
+      const a = document.createElement("a");
+      Object.assign(a, { href: `pkg/examples/${file}`, download: file, textContent: file });
+      $("examples").append(i || j ? (j ? " + " : "; ") : "", a);
+    }
+  }
   build();
   const { scene, values, notes } = readUrl(location.search, SCENES, COMMON, "flagship");
   if (notes.length) {

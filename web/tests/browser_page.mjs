@@ -302,12 +302,12 @@ try {
     await cdp.send("Browser.setDownloadBehavior", { behavior: "allow", downloadPath: downloads });
     await page.click("#export-csv");
     await page.click("#export-png");
-    for (let i = 0; i < 50 && readdirSync(downloads).filter((f) => !f.endsWith(".crdownload")).length < 3; i++) await sleep(100);
+    for (let i = 0; i < 50 && readdirSync(downloads).filter((f) => !f.endsWith(".crdownload")).length < 2; i++) await sleep(100);
     const files = readdirSync(downloads);
     const csv = files.find((f) => f.endsWith(".csv"));
     const lCell = (await cell(page, "l")).value;
     check(csv && readFileSync(join(downloads, csv), "utf8").includes(`"contact end l","${lCell}"`)
-      && files.some((f) => f.endsWith("_mesh.png")) && files.some((f) => f.endsWith("_profile.png")),
+      && files.some((f) => f.endsWith("_figure.png")),
     `export: ${files.join(", ")} (the CSV holds the table's exact l)`);
   });
   await section("file://", async () => {

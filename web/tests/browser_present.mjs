@@ -3,12 +3,15 @@
 //   player (item 3)  a finished loading history and the Mindlin–Deresiewicz cycle play, pause,
 //                    step and scrub; every step is drawn at one scale: β and the charts' axes are
 //                    the same at every step, so the drawn deformation grows with the load
+//   export (item 6)  one figure as PNG and SVG (every chart shown, the colour key, the key
+//                    numbers); the CSV holds the history's (w, l, b) and the cycle's whole loop;
+//                    the example scene files are the repository's bytes and solve as a user's scene
 //
 // What is drawn is recorded by harness.mjs's instrument (the canvas calls), not by the page.
 // Usage: node web/tests/browser_present.mjs
-import { mkdirSync } from "node:fs";
+import { mkdirSync, readdirSync, readFileSync, rmSync } from "node:fs";
 import { join } from "node:path";
-import { check, failures, launch, newPage, out, serve } from "./harness.mjs";
+import { check, failures, launch, newPage, out, serve, web } from "./harness.mjs";
 
 mkdirSync(out, { recursive: true });
 const VIEWPORTS = [{ width: 1366, height: 768 }, { width: 1024, height: 768 }, { width: 390, height: 844 }];
@@ -34,6 +37,18 @@ const frame = (page) => page.evaluate(() => {
     extent: mesh ? [mesh.x1 - mesh.x0, mesh.y1 - mesh.y0] : [0, 0], profileTicks: ticks(profile), historyTicks: ticks(hist),
     caption: document.getElementById("table-caption").textContent };
 });
+// Clicks the buttons and returns the downloaded files' names and bytes.
+async function downloads(page, buttons) {
+  const dir = join(out, "downloads_present");
+  rmSync(dir, { recursive: true, force: true });
+  mkdirSync(dir, { recursive: true });
+  const cdp = await page.createCDPSession();
+  await cdp.send("Browser.setDownloadBehavior", { behavior: "allow", downloadPath: dir });
+  for (const b of buttons) await page.click(b);
+  const done = () => readdirSync(dir).filter((f) => !f.endsWith(".crdownload"));
+  for (let i = 0; i < 100 && done().length < buttons.length; i++) await sleep(100);
+  return Object.fromEntries(done().map((f) => [f.replace(/^.*_/, ""), readFileSync(join(dir, f))]));
+}
 const scrubTo = (page, k) => page.evaluate((n) => {
   const s = document.getElementById("scrub");
   s.value = String(n);
@@ -95,6 +110,55 @@ try {
       await page.waitForFunction(() => window.contact2dPage.run === "idle" && window.contact2dPage.shows.kind === "solve", { timeout: 30000 });
       check(await page.$eval("#player", (p) => p.hidden), `${tag}: a new input hides the player`);
     });
+    await section(`${tag} export: one figure, the history's CSV`, async () => {
+      await open(page, "?mu=0&load=0.5");
+      await page.click("#history");
+      await page.waitForFunction(() => window.contact2dPage.run === "idle" && window.contact2dPage.player
+        && window.contact2dPage.player.k === 10, { timeout: 60000 });
+      const shown = await page.evaluate(() => ({
+        canvases: ["mesh", "profile", "history-plot"].map((id) => document.getElementById(id)).map((c) => [c.width, c.height]),
+        history: window.contact2dPage.history, l: document.querySelector('td[data-key="l"]').textContent,
+      }));
+      const files = await downloads(page, ["#export-csv", "#export-png", "#export-svg"]);
+      const csv = String(files["flagship.csv"] || "");
+      const rows = csv.split("\n");
+      const at = rows.indexOf("w,l,b");
+      const hist = rows.slice(at + 1, at + 11).map((r) => r.split(",").map(Number));
+      check(at > 0 && hist.length === 10 && hist.every(([w, l, b], i) => w === shown.history[i].w && l === shown.history[i].l
+        && b === shown.history[i].b), `${tag}: the CSV holds the history's 10 (w, l, b) rows exactly`);
+      // The PNG: its header's size is the figure's: as wide as the widest chart, and taller
+      // than the three charts stacked (title, numbers, colour key above and between them).
+      const png = files["figure.png"];
+      const [pw, ph] = png ? [png.readUInt32BE(16), png.readUInt32BE(20)] : [0, 0];
+      const maxW = Math.max(...shown.canvases.map(([w]) => w)), sumH = shown.canvases.reduce((a, [, h]) => a + h, 0);
+      check(png && png.subarray(1, 4).toString() === "PNG" && pw >= maxW && ph > sumH,
+        `${tag}: one PNG figure ${pw}×${ph} px holds the three charts (${maxW} wide, ${sumH} tall)`);
+      const svg = String(files["figure.svg"] || "");
+      const images = (svg.match(/<image /g) || []).length;
+      const key = ["stick", "slip +x", "slip −x", "contact (μ = 0)", "free"].every((n) => svg.includes(`>${n}</text>`));
+      check(svg.startsWith("<svg") && images === 3 && key && svg.includes(`contact end l = ${shown.l}`),
+        `${tag}: the SVG figure: ${images} charts, the colour key, the key numbers (l = ${shown.l})`);
+    });
+    await section(`${tag} example scene files`, async () => {
+      await open(page, "?scene=user");
+      const links = await page.$$eval("#examples a", (as) => as.map((a) => [a.getAttribute("href"), a.download]));
+      const same = await Promise.all(links.map(async ([href]) => {
+        const bytes = Buffer.from(await page.evaluate(async (h) => [...new Uint8Array(await (await fetch(h)).arrayBuffer())], href));
+        const name = href.split("/").pop();
+        const repo = join(web, "..", name.endsWith(".toml") ? "scenes/generic" : "meshes/generic", name);
+        return bytes.equals(readFileSync(repo));
+      }));
+      check(links.length === 8 && same.every(Boolean) && links.every(([h, d]) => h.endsWith(d)),
+        `${tag}: ${links.length} example files offered, each the repository's bytes`);
+      if (viewport.width === 1366) {
+        const input = await page.$("#user-input");
+        await input.uploadFile(join(web, "../scenes/generic/pin_lug.toml"), join(web, "../meshes/generic/pin_lug_L1.msh"));
+        await page.waitForFunction(() => window.contact2dPage.view && window.contact2dPage.run === "idle"
+          && window.contact2dPage.shows && window.contact2dPage.shows.text.includes("pin_lug.toml"), { timeout: 60000 });
+        const s = await page.evaluate(() => ({ status: window.contact2dPage.view.summary.status, error: window.contact2dPage.error }));
+        check(!s.error && s.status === "converged", `the example pin_lug pair solves as a user's scene (status ${s.status})`);
+      }
+    });
     await section(`${tag} the cycle plays at one scale`, async () => {
       await open(page, "?scene=cattaneo_mindlin");
       await page.click("#cycle");
@@ -108,6 +172,16 @@ try {
       // The loop's axes: the whole cycle's Q range at every step.
       check(f4.historyTicks === last.historyTicks && f4.profileTicks === last.profileTicks && f4.beta === last.beta,
         `${tag}: the loop's and the profile's axes and β are the cycle's, at step 4 as at 21`);
+      // The CSV: the whole loop (22 states: the press, the loading, 20 steps of the cycle),
+      // whatever step is shown; its last Q is the table's Q at step 21.
+      await scrubTo(page, 21);
+      const q21 = await page.$eval('td[data-key="Q"]', (td) => Number(td.dataset.value));
+      const csv = String((await downloads(page, ["#export-csv"]))["mindlin.csv"] || "");
+      const rows = csv.split("\n");
+      const at = rows.indexOf("step,delta_mm,Q_N_per_mm");
+      const loop = rows.slice(at + 1).filter((r) => /^\d+,/.test(r)).map((r) => r.split(",").map(Number));
+      check(at > 0 && loop.length === 22 && loop[21][0] === 21 && loop[21][2] === q21,
+        `${tag}: the CSV holds the whole loop (${loop.length} rows; Q at step 21 = ${q21})`);
     });
     await page.close();
   }
