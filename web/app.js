@@ -11,8 +11,9 @@
 import init, { bundled_json } from "./pkg/contact2d_web.js";
 import { PAPER_SCENES, PRESETS, flagshipParams, flagshipSteps } from "./scenes_paper.js";
 import { GENERIC_SCENES, readUserFiles } from "./scenes_generic.js";
-import { chart, chartCsv, drawMesh, fixedMeshScale, setFontPx } from "./chart.js";
+import { chart, chartCsv, drawMesh, fixedMeshScale, lastCharts, setFontPx } from "./chart.js";
 import { figureParts, figurePng, figureSvg } from "./figure.js";
+import { CHOICES, EXERCISES, outcome } from "./exercises.js";
 import { readUrl, urlOf } from "./url.js";
 import { EXPLAIN } from "./explain.js";
 import { drawCycleStep } from "./cycle.js";
@@ -464,7 +465,13 @@ function draw(view, values, shows, custom = null) {
     },
     chart: (spec, caption) => {
       const fixed = shows.step && state.player ? state.player.fixed : null;
-      chart($("profile"), fixed ? { ...spec, yrange: fixed.yrange.profile } : spec);
+      if (fixed) spec = { ...spec, yrange: fixed.yrange.profile };
+      // Comparison mode: the pinned curves (same tab) drawn dashed under the live ones.
+      if (state.pinned && state.pinned.scene === shows.scene) {
+        spec = { ...spec, series: [...spec.series, ...state.pinned.series] };
+        state.pinned.shown = true;
+      }
+      chart($("profile"), spec);
       $("profile-caption").textContent = caption;
     },
     output: (id, value, text) => { const o = $(id); if (o) { o.textContent = text; o.dataset.value = String(value); } },
@@ -534,10 +541,92 @@ function drawHistory(values, shows) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Comparison mode: "Pin the curves" keeps the profile chart's curves of the set-up shown; every
+// later set-up of the same tab is drawn over them (dashed, "pinned: …" in the legend) until
+// "Unpin" or a tab switch.
+
+function togglePin() {
+  if (state.pinned) {
+    state.pinned = null;
+  } else {
+    const last = lastCharts.profile;
+    if (!last) return;
+    const what = (SCENES[state.scene].describe ? SCENES[state.scene].describe(state.values) : state.scene)
+      .split(",").slice(0, 3).join(",");
+    state.pinned = { scene: state.scene, what, series: last.series.filter((s) => !s.pinned && !s.points).map((s) => ({
+      x: [...s.x], y: [...s.y], colour: s.colour, label: `${s.label}, pinned (${what})`, dash: true, pinned: true })) };
+  }
+  page.pinned = state.pinned;
+  $("pin").textContent = state.pinned ? "Unpin the curves" : "Pin the curves";
+  if (state.lastDraw) draw(...state.lastDraw);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Exercises (exercises.js): choose one (the page opens its start), commit a prediction, reveal.
+
+const exercise = { current: null, before: null };
+
+function openExercise(id) {
+  const ex = EXERCISES.find((e) => e.id === id);
+  exercise.current = ex;
+  $("ex-question").textContent = ex.question;
+  $("ex-choices").replaceChildren(...CHOICES.map(([value, text]) => {
+    const label = document.createElement("label");
+    const input = Object.assign(document.createElement("input"), { type: "radio", name: "ex-choice", value });
+    label.append(input, ` ${text}`);
+    return label;
+  }));
+  $("ex-commit").disabled = false;
+  $("ex-reveal").disabled = true;
+  $("ex-answer").textContent = "";
+  delete $("ex-answer").dataset.right;
+  page.exercise = { id, committed: null, revealed: null };
+  showScene("flagship", { ...defaults("flagship"), ...ex.start, mag: state.values.mag, projector: state.values.projector },
+    state.scene !== "flagship");
+}
+
+function commitPrediction() {
+  const chosen = document.querySelector('input[name="ex-choice"]:checked');
+  if (!chosen) { $("ex-answer").textContent = "Choose a prediction first."; return; }
+  document.querySelectorAll('input[name="ex-choice"]').forEach((i) => { i.disabled = true; });
+  $("ex-commit").disabled = true;
+  $("ex-reveal").disabled = false;
+  $("ex-answer").textContent = "Prediction committed: now reveal.";
+  page.exercise.committed = chosen.value;
+}
+
+/** The solve of the set-up on screen is done (no solve running or scheduled). */
+async function solved() {
+  while (state.inflight || state.frame || state.queued || page.run !== "idle") await new Promise((r) => setTimeout(r, 50));
+}
+
+async function reveal() {
+  const ex = exercise.current;
+  if (!ex || !page.exercise.committed) return;
+  $("ex-reveal").disabled = true;
+  await solved();
+  const read = () => Number(document.querySelector(`td[data-key="${ex.key}"]`)?.dataset.value);
+  const before = read();
+  Object.assign(state.values, ex.change);
+  showValues();
+  schedule();
+  await solved();
+  const after = read();
+  const moved = outcome(before, after);
+  const right = moved === page.exercise.committed;
+  const said = Object.fromEntries(CHOICES)[moved];
+  $("ex-answer").textContent = `${right ? "Right" : "Not quite"}: ${ex.name} went from ${before.toPrecision(4)} to ` +
+    `${after.toPrecision(4)}: it ${said}. ${ex.explain}`;
+  $("ex-answer").dataset.right = right ? "1" : "0";
+  page.exercise.revealed = { before, after, moved, right };
+}
+
+// ---------------------------------------------------------------------------------------------
 // Scenes, presets, URL, reset, export, projector, files.
 
 function showScene(name, values, push = false) {
   cancelHistory();
+  if (state.pinned && name !== state.pinned.scene) { state.pinned = null; page.pinned = null; $("pin").textContent = "Pin the curves"; }
   // A tab chosen on the page is a new history entry (Back returns to the last tab).
   if (push && name !== state.scene) history.pushState(null, "", urlOf(name, values));
   state.scene = name;
@@ -690,6 +779,16 @@ function build() {
   $("export-png").addEventListener("click", exportPng);
   $("export-csv").addEventListener("click", exportCsv);
   $("export-svg").addEventListener("click", exportSvg);
+  $("pin").addEventListener("click", togglePin);
+  for (const ex of EXERCISES) $("ex-pick").add(new Option(ex.title, ex.id));
+  $("ex-pick").addEventListener("change", () => openExercise($("ex-pick").value));
+  $("exercises").addEventListener("toggle", () => { if ($("exercises").open && !exercise.current) openExercise($("ex-pick").value); });
+  $("exercises-toggle").addEventListener("click", () => { $("exercises").open = !$("exercises").open; });
+  $("exercises").addEventListener("toggle", () => {
+    $("exercises-toggle").textContent = $("exercises").open ? "Close the exercises" : "Exercises";
+  });
+  $("ex-commit").addEventListener("click", commitPrediction);
+  $("ex-reveal").addEventListener("click", reveal);
   $("user-input").addEventListener("change", (e) => takeFiles(e.target.files));
   document.addEventListener("dragover", (e) => e.preventDefault());
   document.addEventListener("drop", (e) => { e.preventDefault(); takeFiles(e.dataTransfer.files); });

@@ -154,7 +154,7 @@ export function niceTicks(a, b, most = 5) {
   return ticks;
 }
 
-/** A line chart: series {x, y, colour, label, points?, fill?}, vertical markers {x, label},
+/** A line chart: series {x, y, colour, label, points?, fill?, dash?}, vertical markers {x, label},
  * optional xrange / yrange [a, b] (fixed axes); every
  * label sits in a band of its own: tick labels under/left of the plot, axis titles outside
  * them, the legend above the plot, marker labels in a strip above the plot stacked into rows
@@ -243,6 +243,7 @@ export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange, yr
     if (s.points) {
       s.x.forEach((x, i) => { if (s.y[i] !== null) { ctx.beginPath(); ctx.arc(px(x), py(s.y[i]), 3.5, 0, 2 * Math.PI); ctx.fill(); } });
     } else {
+      ctx.setLineDash(s.dash ? [7, 5] : []);
       ctx.beginPath();
       let pen = false;
       s.x.forEach((x, i) => {
@@ -251,6 +252,7 @@ export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange, yr
         pen = true;
       });
       ctx.stroke();
+      ctx.setLineDash([]);
     }
   });
   ctx.restore();

@@ -6,6 +6,9 @@
 //   export (item 6)  one figure as PNG and SVG (every chart shown, the colour key, the key
 //                    numbers); the CSV holds the history's (w, l, b) and the cycle's whole loop;
 //                    the example scene files are the repository's bytes and solve as a user's scene
+//   exercises (item 5) predict-then-reveal: no reveal before a committed prediction; the page's
+//                    verdict against the docs' and the paper's trends; comparison mode pins a
+//                    curve (μ = 0's q ≡ 0) under the next set-up
 //
 // What is drawn is recorded by harness.mjs's instrument (the canvas calls), not by the page.
 // Usage: node web/tests/browser_present.mjs
@@ -158,6 +161,62 @@ try {
         const s = await page.evaluate(() => ({ status: window.contact2dPage.view.summary.status, error: window.contact2dPage.error }));
         check(!s.error && s.status === "converged", `the example pin_lug pair solves as a user's scene (status ${s.status})`);
       }
+    });
+    await section(`${tag} exercises: predict, then reveal`, async () => {
+      await open(page, viewport.width > 900 ? "?projector=1" : "");
+      // In projector mode the "Exercises" button over the figure opens them on screen.
+      if (viewport.width > 900) await page.click("#exercises-toggle");
+      else await page.evaluate(() => { document.getElementById("exercises").open = true; });
+      // Exercise 1: b grows with μ (docs/teaching.md on N = 16: b = 0.015 at μ = 0.1, 0.153 at
+      // 0.3; the paper 0.1485 at 0.3). Exercise 4: no gap, no friction: l does not move with w
+      // (the problem is linear in w, spec §5.2).
+      // Once, at 1366×768, exercises 2 and 3: b falls with a stiffer insert (docs: 0.206 at
+      // E2/E1 = 0.25 to 0.031 at 16), l falls with clearance (the paper's Table 2: l ≈ 0.15 at
+      // ε = 0.05 against ≈ 0.47 without).
+      const more = viewport.width === 1366 ? [["stiffness", "shrinks", "shrinks"], ["clearance", "stays", "shrinks"]] : [];
+      for (const [id, predict, truth] of [["friction", "grows", "grows"], ["linear", "grows", "stays"], ...more]) {
+        await page.select("#ex-pick", id);
+        await page.waitForFunction((x) => window.contact2dPage.exercise && window.contact2dPage.exercise.id === x
+          && window.contact2dPage.run === "idle" && window.contact2dPage.shows.kind === "solve", { timeout: 60000 }, id);
+        const early = await page.$eval("#ex-reveal", (b) => b.disabled);
+        await page.click(`input[name="ex-choice"][value="${predict}"]`);
+        await page.click("#ex-commit");
+        await page.click("#ex-reveal");
+        await page.waitForFunction(() => window.contact2dPage.exercise.revealed, { timeout: 60000 });
+        const r = await page.evaluate(() => ({ ...window.contact2dPage.exercise.revealed, text: document.getElementById("ex-answer").textContent }));
+        check(early && r.moved === truth && r.right === (predict === truth) && r.text.includes(r.right ? "Right" : "Not quite"),
+          `${tag} exercise ${id}: reveal locked until committed; the page finds "${r.moved}" ` +
+          `(${r.before.toPrecision(4)} → ${r.after.toPrecision(4)}), the prediction "${predict}" judged ${r.right ? "right" : "wrong"}`);
+      }
+      if (viewport.width > 900) {
+        const bottom = await page.$eval("#ex-answer", (e) => e.getBoundingClientRect().bottom);
+        const scrolled = await page.evaluate(() => window.scrollY);
+        check(scrolled === 0 && bottom <= viewport.height,
+          `${tag} projector mode: the exercise and its answer on screen without scrolling (answer ends at y ${bottom.toFixed(0)})`);
+      }
+      await page.screenshot({ path: join(out, `present_exercise_${viewport.width}.png`) });
+    });
+    await section(`${tag} comparison mode pins a curve`, async () => {
+      await open(page, "?mu=0");
+      await page.click("#pin");
+      await page.evaluate(() => { const e = document.getElementById("mu"); e.value = "0.3"; e.dispatchEvent(new Event("input")); });
+      await page.waitForFunction(() => window.contact2dPage.run === "idle" && window.contact2dPage.view
+        && document.getElementById("table-caption").textContent.includes("μ = 0.3"), { timeout: 60000 });
+      const r = await page.evaluate(() => {
+        const pinned = window.contact2dPage.pinned;
+        const qPinned = pinned.series.find((s) => s.label.startsWith("q "));
+        const legend = window.__canvasLog("profile").texts.map((t) => t.text).filter((t) => t.includes("pinned"));
+        return { qPinnedMax: Math.max(...qPinned.y.filter((v) => v !== null).map(Math.abs)), legend,
+          qLive: Math.max(...window.contact2dPage.view.hole.q.filter((v) => v !== null).map(Math.abs)) };
+      });
+      // Without friction the shear is zero everywhere (Coulomb: |q| ≤ μp = 0); at μ = 0.3 it is
+      // not. 1e-12 × the live shear: the pinned q is zero up to round-off (the edge's q is
+      // σ·n·t of the stress, a sum of terms of order 1e-1 that cancel to ~1e-17).
+      check(r.qPinnedMax <= 1e-12 * r.qLive && r.qLive > 0 && r.legend.length === 3,
+        `${tag}: μ = 0's curves pinned under μ = 0.3 (pinned max |q| = ${r.qPinnedMax}, live |q| up to ${r.qLive.toPrecision(3)}; ${r.legend.length} pinned legend entries)`);
+      await page.click("#pin");
+      const left = await page.evaluate(() => window.__canvasLog("profile").texts.filter((t) => t.text.includes("pinned")).length);
+      check(left === 0, `${tag}: Unpin removes them`);
     });
     await section(`${tag} the cycle plays at one scale`, async () => {
       await open(page, "?scene=cattaneo_mindlin");
