@@ -122,11 +122,10 @@ function meshBeta(views, magnification, focus) {
 function meshBounds(views, beta) {
   const b = [Infinity, Infinity, -Infinity, -Infinity];
   for (const { mesh: m } of views) {
-    for (let i = 0; i < m.points.length / 2; i++) {
-      for (const [x, y] of [[m.points[2 * i], m.points[2 * i + 1]],
-        [m.points[2 * i] + beta * m.displacement[2 * i], m.points[2 * i + 1] + beta * m.displacement[2 * i + 1]]]) {
-        b[0] = Math.min(b[0], x); b[2] = Math.max(b[2], x); b[1] = Math.min(b[1], y); b[3] = Math.max(b[3], y);
-      }
+    const p = m.points, u = m.displacement;
+    for (let i = 0; i < p.length; i += 2) {
+      const x = p[i], y = p[i + 1], X = x + beta * u[i], Y = y + beta * u[i + 1];
+      b[0] = Math.min(b[0], x, X); b[2] = Math.max(b[2], x, X); b[1] = Math.min(b[1], y, Y); b[3] = Math.max(b[3], y, Y);
     }
   }
   return b;

@@ -302,7 +302,8 @@ try {
     await cdp.send("Browser.setDownloadBehavior", { behavior: "allow", downloadPath: downloads });
     await page.click("#export-csv");
     await page.click("#export-png");
-    for (let i = 0; i < 50 && readdirSync(downloads).filter((f) => !f.endsWith(".crdownload")).length < 2; i++) await sleep(100);
+    // Up to 15 s: the one-figure PNG is composed and encoded first (seconds on a loaded machine).
+    for (let i = 0; i < 150 && readdirSync(downloads).filter((f) => !f.endsWith(".crdownload")).length < 2; i++) await sleep(100);
     const files = readdirSync(downloads);
     const csv = files.find((f) => f.endsWith(".csv"));
     const lCell = (await cell(page, "l")).value;
