@@ -13,7 +13,7 @@ import { PAPER_SCENES, PRESETS, flagshipParams, flagshipSteps } from "./scenes_p
 import { GENERIC_SCENES, readUserFiles } from "./scenes_generic.js";
 import { chart, chartCsv, drawMesh, fixedMeshScale, lastCharts, setFontPx } from "./chart.js";
 import { figureParts, figurePng, figureSvg } from "./figure.js";
-import { CHOICES, EXERCISES, outcome } from "./exercises.js";
+import { installExercises } from "./exercises.js";
 import { readUrl, urlOf } from "./url.js";
 import { EXPLAIN } from "./explain.js";
 import { drawCycleStep } from "./cycle.js";
@@ -562,66 +562,6 @@ function togglePin() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Exercises (exercises.js): choose one (the page opens its start), commit a prediction, reveal.
-
-const exercise = { current: null, before: null };
-
-function openExercise(id) {
-  const ex = EXERCISES.find((e) => e.id === id);
-  exercise.current = ex;
-  $("ex-question").textContent = ex.question;
-  $("ex-choices").replaceChildren(...CHOICES.map(([value, text]) => {
-    const label = document.createElement("label");
-    const input = Object.assign(document.createElement("input"), { type: "radio", name: "ex-choice", value });
-    label.append(input, ` ${text}`);
-    return label;
-  }));
-  $("ex-commit").disabled = false;
-  $("ex-reveal").disabled = true;
-  $("ex-answer").textContent = "";
-  delete $("ex-answer").dataset.right;
-  page.exercise = { id, committed: null, revealed: null };
-  showScene("flagship", { ...defaults("flagship"), ...ex.start, mag: state.values.mag, projector: state.values.projector },
-    state.scene !== "flagship");
-}
-
-function commitPrediction() {
-  const chosen = document.querySelector('input[name="ex-choice"]:checked');
-  if (!chosen) { $("ex-answer").textContent = "Choose a prediction first."; return; }
-  document.querySelectorAll('input[name="ex-choice"]').forEach((i) => { i.disabled = true; });
-  $("ex-commit").disabled = true;
-  $("ex-reveal").disabled = false;
-  $("ex-answer").textContent = "Prediction committed: now reveal.";
-  page.exercise.committed = chosen.value;
-}
-
-/** The solve of the set-up on screen is done (no solve running or scheduled). */
-async function solved() {
-  while (state.inflight || state.frame || state.queued || page.run !== "idle") await new Promise((r) => setTimeout(r, 50));
-}
-
-async function reveal() {
-  const ex = exercise.current;
-  if (!ex || !page.exercise.committed) return;
-  $("ex-reveal").disabled = true;
-  await solved();
-  const read = () => Number(document.querySelector(`td[data-key="${ex.key}"]`)?.dataset.value);
-  const before = read();
-  Object.assign(state.values, ex.change);
-  showValues();
-  schedule();
-  await solved();
-  const after = read();
-  const moved = outcome(before, after);
-  const right = moved === page.exercise.committed;
-  const said = Object.fromEntries(CHOICES)[moved];
-  $("ex-answer").textContent = `${right ? "Right" : "Not quite"}: ${ex.name} went from ${before.toPrecision(4)} to ` +
-    `${after.toPrecision(4)}: it ${said}. ${ex.explain}`;
-  $("ex-answer").dataset.right = right ? "1" : "0";
-  page.exercise.revealed = { before, after, moved, right };
-}
-
-// ---------------------------------------------------------------------------------------------
 // Scenes, presets, URL, reset, export, projector, files.
 
 function showScene(name, values, push = false) {
@@ -780,15 +720,16 @@ function build() {
   $("export-csv").addEventListener("click", exportCsv);
   $("export-svg").addEventListener("click", exportSvg);
   $("pin").addEventListener("click", togglePin);
-  for (const ex of EXERCISES) $("ex-pick").add(new Option(ex.title, ex.id));
-  $("ex-pick").addEventListener("change", () => openExercise($("ex-pick").value));
-  $("exercises").addEventListener("toggle", () => { if ($("exercises").open && !exercise.current) openExercise($("ex-pick").value); });
-  $("exercises-toggle").addEventListener("click", () => { $("exercises").open = !$("exercises").open; });
-  $("exercises").addEventListener("toggle", () => {
-    $("exercises-toggle").textContent = $("exercises").open ? "Close the exercises" : "Exercises";
+  // Exercises (exercises.js): the page's hooks to open a set-up and to make a change.
+  installExercises(page, {
+    open: (ex) => showScene("flagship", { ...defaults("flagship"), ...ex.start, mag: state.values.mag,
+      projector: state.values.projector }, state.scene !== "flagship"),
+    change: (values) => { Object.assign(state.values, values); showValues(); schedule(); },
+    // The solve of the set-up on screen is done (none running, scheduled or queued).
+    solved: async () => {
+      while (state.inflight || state.frame || state.queued || page.run !== "idle") await new Promise((r) => setTimeout(r, 50));
+    },
   });
-  $("ex-commit").addEventListener("click", commitPrediction);
-  $("ex-reveal").addEventListener("click", reveal);
   $("user-input").addEventListener("change", (e) => takeFiles(e.target.files));
   document.addEventListener("dragover", (e) => e.preventDefault());
   document.addEventListener("drop", (e) => { e.preventDefault(); takeFiles(e.dataTransfer.files); });

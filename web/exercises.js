@@ -2,6 +2,7 @@
 // exercise's start, the student commits to a prediction of how one number of the table moves
 // under one change, and only then can reveal: the page makes the change, solves, and compares
 // the number before and after (the solver decides, not a stored answer), then explains.
+// installExercises wires the panel of index.html (#exercises) to the page through three hooks.
 
 /** Each exercise: the flagship's start values, the change made on reveal, the table's key read
  * before and after, the question and the explanation. */
@@ -48,4 +49,65 @@ export const CHOICES = [["grows", "grows"], ["stays", "stays the same"], ["shrin
 export function outcome(before, after) {
   const tol = 1e-6 * Math.max(Math.abs(before), Math.abs(after), 1e-12);
   return after > before + tol ? "grows" : after < before - tol ? "shrinks" : "stays";
+}
+
+const $ = (id) => document.getElementById(id);
+
+/** Wires the exercises panel: `page` is the page's test state (page.exercise: {id, committed,
+ * revealed}); hooks {open(ex): show the exercise's start, change(values): apply the change and
+ * schedule its solve, solved(): resolves when the set-up on screen is solved}. */
+export function installExercises(page, hooks) {
+  let current = null;
+  const open = (id) => {
+    current = EXERCISES.find((e) => e.id === id);
+    $("ex-question").textContent = current.question;
+    $("ex-choices").replaceChildren(...CHOICES.map(([value, text]) => {
+      const label = document.createElement("label");
+      const input = Object.assign(document.createElement("input"), { type: "radio", name: "ex-choice", value });
+      label.append(input, ` ${text}`);
+      return label;
+    }));
+    $("ex-commit").disabled = false;
+    $("ex-reveal").disabled = true;
+    $("ex-answer").textContent = "";
+    delete $("ex-answer").dataset.right;
+    page.exercise = { id, committed: null, revealed: null };
+    hooks.open(current);
+  };
+  const commit = () => {
+    const chosen = document.querySelector('input[name="ex-choice"]:checked');
+    if (!chosen) { $("ex-answer").textContent = "Choose a prediction first."; return; }
+    document.querySelectorAll('input[name="ex-choice"]').forEach((i) => { i.disabled = true; });
+    $("ex-commit").disabled = true;
+    $("ex-reveal").disabled = false;
+    $("ex-answer").textContent = "Prediction committed: now reveal.";
+    page.exercise.committed = chosen.value;
+  };
+  const reveal = async () => {
+    const ex = current;
+    if (!ex || !page.exercise.committed) return;
+    $("ex-reveal").disabled = true;
+    await hooks.solved();
+    const read = () => Number(document.querySelector(`td[data-key="${ex.key}"]`)?.dataset.value);
+    const before = read();
+    hooks.change(ex.change);
+    await hooks.solved();
+    const after = read();
+    const moved = outcome(before, after);
+    const right = moved === page.exercise.committed;
+    const said = Object.fromEntries(CHOICES)[moved];
+    $("ex-answer").textContent = `${right ? "Right" : "Not quite"}: ${ex.name} went from ${before.toPrecision(4)} to ` +
+      `${after.toPrecision(4)}: it ${said}. ${ex.explain}`;
+    $("ex-answer").dataset.right = right ? "1" : "0";
+    page.exercise.revealed = { before, after, moved, right };
+  };
+  for (const ex of EXERCISES) $("ex-pick").add(new Option(ex.title, ex.id));
+  $("ex-pick").addEventListener("change", () => open($("ex-pick").value));
+  $("exercises").addEventListener("toggle", () => {
+    $("exercises-toggle").textContent = $("exercises").open ? "Close the exercises" : "Exercises";
+    if ($("exercises").open && !current) open($("ex-pick").value);
+  });
+  $("exercises-toggle").addEventListener("click", () => { $("exercises").open = !$("exercises").open; });
+  $("ex-commit").addEventListener("click", commit);
+  $("ex-reveal").addEventListener("click", reveal);
 }
