@@ -11,12 +11,12 @@
 import init, { bundled_json } from "./pkg/contact2d_web.js";
 import { PAPER_SCENES, PRESETS, flagshipParams, flagshipSteps } from "./scenes_paper.js";
 import { GENERIC_SCENES, readUserFiles } from "./scenes_generic.js";
-import { chart, chartCsv, drawMesh, fixedMeshScale, lastCharts, setFontPx } from "./chart.js";
+import { chart, chartCsv, drawMesh, lastCharts, setFontPx } from "./chart.js";
+import { makePlayer } from "./player.js";
 import { figureParts, figurePng, figureSvg } from "./figure.js";
 import { installExercises } from "./exercises.js";
 import { readUrl, urlOf } from "./url.js";
 import { EXPLAIN } from "./explain.js";
-import { drawCycleStep } from "./cycle.js";
 
 const $ = (id) => document.getElementById(id);
 const SCENES = { ...PAPER_SCENES, ...GENERIC_SCENES };
@@ -33,6 +33,9 @@ const page = { ready: null, view: null, timings: [], updates: 0, error: null, ru
 window.contact2dPage = page;
 
 const state = { scene: "flagship", values: {}, view: null, generation: 0, frame: 0, history: [], userFiles: null };
+// The player of a finished history's or cycle's steps (player.js).
+const player = makePlayer({ state, page, draw: (...args) => draw(...args),
+  drawFlagship: (view, ui, values) => SCENES.flagship.draw(view, ui, values) });
 
 // ---------------------------------------------------------------------------------------------
 // Controls: built from each scene's list; values live in state.values (strings, as in the URL).
@@ -140,7 +143,7 @@ const CYCLE_LABEL = "Mindlin–Deresiewicz cycle: +A → −A → +A";
 /** Stops a history or cycle in flight: its loop sees the new generation and never draws again. */
 function cancelHistory() {
   state.generation += 1;
-  stopPlay();
+  player.stop();
   if (page.run === "history" || page.run === "cycle") page.run = "idle";
   $("history").textContent = HISTORY_LABEL;
   $("cycle").textContent = CYCLE_LABEL;
@@ -151,7 +154,7 @@ function cancelHistory() {
  * value replaces a queued one. */
 function schedule() {
   cancelHistory();
-  clearPlayer();
+  player.clear();
   state.history = [];
   if (page.run === "solving") { state.queued = true; return; }
   if (!state.frame) {
@@ -255,7 +258,7 @@ async function runHistory() {
   state.starting = true;
   try { await settle(); } finally { state.starting = false; }
   const generation = ++state.generation;
-  clearPlayer();
+  player.clear();
   const frames = [];
   page.run = "history";
   $("history").textContent = "Stop the loading history";
@@ -297,8 +300,8 @@ async function runHistory() {
     $("history").textContent = "Loading history: step w from 0 and draw l(w), b(w)";
     // Complete: the steps can be played, stepped and scrubbed, all at the whole history's scale.
     if (frames.length === HISTORY_STEPS) {
-      setPlayer({ kind: "history", values, frames, first: 1, last: HISTORY_STEPS, interval: 400 });
-      showFrame(HISTORY_STEPS);
+      player.set({ kind: "history", values, frames, first: 1, last: HISTORY_STEPS, interval: 400 });
+      player.show(HISTORY_STEPS);
     }
   }
 }
@@ -331,104 +334,9 @@ async function runCycle() {
   }
   page.cycle = view;
   // Played once through (150 ms a step); then, or when paused, the player steps and scrubs it.
-  setPlayer({ kind: "cycle", values, view, first: 1, last: view.summary.steps.length - 1, interval: 150 });
-  await play();
+  player.set({ kind: "cycle", values, view, first: 1, last: view.summary.steps.length - 1, interval: 150 });
+  await player.play();
   if (generation === state.generation) cancelHistory();
-}
-
-// ---------------------------------------------------------------------------------------------
-// The player: play / pause / step / scrub through the steps of a finished history or a cycle,
-// every step drawn at one scale (the mesh's β and box, the charts' y axes) taken from the whole
-// run, so that frames are comparable and the deformation grows with the load. Any input clears it.
-
-/** Draws step k of a history or cycle with a recording `ui`: the scene's chart specs and the
- * mesh's focus, without drawing. */
-function specsOf(p, k) {
-  const got = { focus: null, charts: {} };
-  const add = (id, spec) => { (got.charts[id] = got.charts[id] || []).push(...spec.series.flatMap((s) => s.y.filter((v) => v !== null))); };
-  const ui = { mesh: (v, focus) => { got.focus = focus; }, chart: (spec) => add("profile", spec), output() {}, banner() {}, table() {} };
-  if (p.kind === "cycle") drawCycleStep(p.view, k, ui, { id: "history-plot" }, (c, spec) => add(c.id, spec));
-  else SCENES.flagship.draw(p.frames[k - 1].view, ui, p.values);
-  return got;
-}
-
-function setPlayer(p) {
-  p.k = p.last;
-  p.token = 0;
-  const views = p.kind === "cycle" ? [p.view] : p.frames.map((f) => f.view);
-  const ys = {};
-  let focus = null;
-  for (let k = p.first; k <= p.last; k++) {
-    const got = specsOf(p, k);
-    focus = got.focus;
-    for (const [id, y] of Object.entries(got.charts)) (ys[id] = ys[id] || []).push(...y);
-  }
-  if (p.kind === "history") ys["history-plot"] = state.history.flatMap((h) => [h.l, h.b]);
-  const yrange = Object.fromEntries(Object.entries(ys).map(([id, y]) => [id, [Math.min(...y), Math.max(...y)]]));
-  p.fixed = { mesh: fixedMeshScale(views, Number(p.values.mag), focus), yrange };
-  state.player = p;
-  const scrub = $("scrub");
-  Object.assign(scrub, { min: p.first, max: p.last, step: 1 });
-  scrub.value = p.k;
-  $("player").hidden = false;
-  $("player-what").textContent = p.kind === "cycle" ? "the cycle's steps:" : "the history's steps:";
-  page.player = { kind: p.kind, k: p.k, first: p.first, last: p.last, playing: false, fixed: p.fixed };
-}
-
-function clearPlayer() {
-  stopPlay();
-  state.player = null;
-  page.player = null;
-  $("player").hidden = true;
-}
-
-/** Shows step k (clamped to the run's steps) at the run's fixed scale. */
-function showFrame(k) {
-  const p = state.player;
-  if (!p) return;
-  k = Math.min(p.last, Math.max(p.first, k));
-  p.k = k;
-  $("scrub").value = k;
-  $("scrub-out").textContent = `step ${k} of ${p.last}`;
-  page.player.k = k;
-  if (p.kind === "cycle") {
-    const view = p.view, values = p.values;
-    const shows = { kind: "cycle", scene: "cattaneo_mindlin", step: k,
-      text: `Mindlin–Deresiewicz cycle, step ${k} of ${p.last}: the top at δ = ${view.cycle_shear[k]} × 0.01 mm ` +
-        `(press ${values.press}, amplitude ${values.amp}); the mesh's shape is the last step's.` };
-    draw(view, values, shows, (ui) => drawCycleStep(view, k, ui, $("history-plot"), (c, spec) =>
-      chart(c, { ...spec, yrange: p.fixed.yrange[c.id] })));
-    page.cycleStep = k;
-  } else {
-    const { view, shows } = p.frames[k - 1];
-    draw(view, p.values, shows);
-    page.view = view;
-  }
-}
-
-function stopPlay() {
-  const p = state.player;
-  if (!p) return;
-  p.token += 1;
-  if (page.player) page.player.playing = false;
-  $("play").textContent = "Play";
-}
-
-/** Plays from the step after the current one (from the first at the end) to the last; resolves
- * true when it reached the last step, false when paused or stopped. */
-async function play() {
-  const p = state.player;
-  if (!p) return false;
-  const token = ++p.token;
-  page.player.playing = true;
-  $("play").textContent = "Pause";
-  for (let k = p.k >= p.last ? p.first : p.k + 1; k <= p.last; k++) {
-    showFrame(k);
-    if (k < p.last) await new Promise((r) => setTimeout(r, p.interval));
-    if (token !== p.token || state.player !== p) return false;
-  }
-  stopPlay();
-  return true;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -700,12 +608,7 @@ function build() {
   $("history").addEventListener("click", runHistory);
   $("cancel").addEventListener("click", cancelSolve);
   $("cycle").addEventListener("click", runCycle);
-  $("play").addEventListener("click", () => {
-    if (page.player && page.player.playing) stopPlay(); else play();
-  });
-  $("step-back").addEventListener("click", () => { stopPlay(); showFrame(state.player.k - 1); });
-  $("step-fwd").addEventListener("click", () => { stopPlay(); showFrame(state.player.k + 1); });
-  $("scrub").addEventListener("input", () => { stopPlay(); showFrame(Number($("scrub").value)); });
+  player.wire();
   // Reset: the scene's defaults, in the same display mode (projector stays on or off).
   $("reset").addEventListener("click", () => {
     $("url-notes").hidden = true;
