@@ -11,10 +11,12 @@
 import init, { bundled_json } from "./pkg/contact2d_web.js";
 import { PAPER_SCENES, PRESETS, flagshipParams, flagshipSteps } from "./scenes_paper.js";
 import { GENERIC_SCENES, readUserFiles } from "./scenes_generic.js";
-import { chart, chartCsv, drawMesh, setFontPx } from "./chart.js";
+import { chart, chartCsv, drawMesh, lastCharts, setFontPx } from "./chart.js";
+import { makePlayer } from "./player.js";
+import { figureParts, figurePng, figureSvg } from "./figure.js";
+import { installExercises } from "./exercises.js";
 import { readUrl, urlOf } from "./url.js";
 import { EXPLAIN } from "./explain.js";
-import { drawCycleStep } from "./cycle.js";
 
 const $ = (id) => document.getElementById(id);
 const SCENES = { ...PAPER_SCENES, ...GENERIC_SCENES };
@@ -31,6 +33,9 @@ const page = { ready: null, view: null, timings: [], updates: 0, error: null, ru
 window.contact2dPage = page;
 
 const state = { scene: "flagship", values: {}, view: null, generation: 0, frame: 0, history: [], userFiles: null };
+// The player of a finished history's or cycle's steps (player.js).
+const player = makePlayer({ state, page, draw: (...args) => draw(...args),
+  drawFlagship: (view, ui, values) => SCENES.flagship.draw(view, ui, values) });
 
 // ---------------------------------------------------------------------------------------------
 // Controls: built from each scene's list; values live in state.values (strings, as in the URL).
@@ -138,6 +143,7 @@ const CYCLE_LABEL = "Mindlin–Deresiewicz cycle: +A → −A → +A";
 /** Stops a history or cycle in flight: its loop sees the new generation and never draws again. */
 function cancelHistory() {
   state.generation += 1;
+  player.stop();
   if (page.run === "history" || page.run === "cycle") page.run = "idle";
   $("history").textContent = HISTORY_LABEL;
   $("cycle").textContent = CYCLE_LABEL;
@@ -148,6 +154,7 @@ function cancelHistory() {
  * value replaces a queued one. */
 function schedule() {
   cancelHistory();
+  player.clear();
   state.history = [];
   if (page.run === "solving") { state.queued = true; return; }
   if (!state.frame) {
@@ -169,7 +176,29 @@ function setError(message) {
   }
 }
 
-async function solveNow() {
+/** Runs the scheduled solve; `state.inflight` is its promise while it runs (a history or cycle
+ * waits for it, see settle()). */
+function solveNow() {
+  const run = solveScheduled().finally(() => { if (state.inflight === run) state.inflight = null; });
+  state.inflight = run;
+  return run;
+}
+
+/** Before a history or cycle starts: no solve of the controls may run, be scheduled or queued
+ * (its answer would be drawn over the run's steps, or its end would reschedule a solve that
+ * cancels the run). A solve in flight is awaited; a scheduled or queued one is run now (its
+ * view gives the published case the run's steps show). Loops until nothing is pending, as a
+ * finished solve may reschedule a queued one. */
+async function settle() {
+  for (;;) {
+    if (state.inflight) { await state.inflight; continue; }
+    if (state.frame) { cancelAnimationFrame(state.frame); state.frame = 0; await solveNow(); continue; }
+    if (state.queued) { state.queued = false; await solveNow(); continue; }
+    return;
+  }
+}
+
+async function solveScheduled() {
   page.run = "solving";
   const sceneName = state.scene;
   const scene = SCENES[sceneName];
@@ -223,9 +252,14 @@ function record(view, timing) {
 // runs; any input, preset or tab switch stops it too.
 async function runHistory() {
   if (page.run === "history") { cancelHistory(); return; }
-  if (page.run === "solving") return;
-  if (state.frame) { cancelAnimationFrame(state.frame); state.frame = 0; await solveNow(); }
+  // A click while a solve of the controls runs or is scheduled is not lost: the history starts
+  // when that solve has been drawn (a second click meanwhile is the same request).
+  if (state.starting) return;
+  state.starting = true;
+  try { await settle(); } finally { state.starting = false; }
   const generation = ++state.generation;
+  player.clear();
+  const frames = [];
   page.run = "history";
   $("history").textContent = "Stop the loading history";
   const values = { ...state.values }, w = Number(values.load);
@@ -243,11 +277,13 @@ async function runHistory() {
       if (generation !== state.generation) return;
       state.history.push({ w: Number(load), l: view.summary.paper.l, b: view.summary.paper.b });
       const n = flagshipSteps({ ...base, steps });
-      draw(view, values, {
+      const shows = {
         kind: "history", scene: "flagship", step: k, published,
         text: `Loading history, step ${k} of ${HISTORY_STEPS}: w = ${load} reached in ${n} equal load step(s) ` +
           `(the controls: ${SCENES.flagship.describe(values)}).`,
-      });
+      };
+      frames.push({ view, shows });
+      draw(view, values, shows);
       record(view, { scene: "history", solve_ms: t1 - t0, total_ms: performance.now() - t0 });
       $("timing").textContent = `history step ${k}/${HISTORY_STEPS} (w = ${load}): ${(t1 - t0).toFixed(1)} ms`;
     } catch (e) {
@@ -262,6 +298,11 @@ async function runHistory() {
   if (generation === state.generation) {
     page.run = "idle";
     $("history").textContent = "Loading history: step w from 0 and draw l(w), b(w)";
+    // Complete: the steps can be played, stepped and scrubbed, all at the whole history's scale.
+    if (frames.length === HISTORY_STEPS) {
+      player.set({ kind: "history", values, frames, first: 1, last: HISTORY_STEPS, interval: 400 });
+      player.show(HISTORY_STEPS);
+    }
   }
 }
 
@@ -269,8 +310,9 @@ async function runHistory() {
 // 150 ms; stopped like a history.
 async function runCycle() {
   if (page.run === "cycle") { cancelHistory(); return; }
-  if (page.run === "solving") return;
-  if (state.frame) { cancelAnimationFrame(state.frame); state.frame = 0; await solveNow(); }
+  if (state.starting) return;
+  state.starting = true;
+  try { await settle(); } finally { state.starting = false; }
   const generation = ++state.generation;
   page.run = "cycle";
   $("cycle").textContent = "Stop the cycle";
@@ -291,16 +333,9 @@ async function runCycle() {
     return;
   }
   page.cycle = view;
-  const last = view.summary.steps.length - 1;
-  for (let k = 1; k <= last; k++) {
-    if (generation !== state.generation) return;
-    const shows = { kind: "cycle", scene: "cattaneo_mindlin", step: k,
-      text: `Mindlin–Deresiewicz cycle, step ${k} of ${last}: the top at δ = ${view.cycle_shear[k]} × 0.01 mm ` +
-        `(press ${values.press}, amplitude ${values.amp}); the mesh's shape is the last step's.` };
-    draw(view, values, shows, (ui) => drawCycleStep(view, k, ui, $("history-plot"), chart));
-    page.cycleStep = k;
-    await new Promise((r) => setTimeout(r, 150));
-  }
+  // Played once through (150 ms a step); then, or when paused, the player steps and scrubs it.
+  player.set({ kind: "cycle", values, view, first: 1, last: view.summary.steps.length - 1, interval: 150 });
+  await player.play();
   if (generation === state.generation) cancelHistory();
 }
 
@@ -326,7 +361,9 @@ function draw(view, values, shows, custom = null) {
   const published = shows.kind === "history" ? shows.published : view.published;
   const ui = {
     mesh: (v, focus) => {
-      const { counts, beta } = drawMesh($("mesh"), v, Number(values.mag), focus);
+      const fixed = shows.step && state.player ? state.player.fixed : null;
+      const { counts, beta } = drawMesh($("mesh"), v, Number(values.mag), focus, fixed && fixed.mesh);
+      page.beta = beta;
       const slip = (counts["slip+"] || 0) + (counts["slip-"] || 0);
       $("pair-counts").textContent = `— ${counts.stick || 0} stick, ${slip} slip (${counts["slip+"] || 0} +, ` +
         `${counts["slip-"] || 0} −), ${counts.contact || 0} contact, ` +
@@ -334,7 +371,17 @@ function draw(view, values, shows, custom = null) {
       Object.assign($("mesh").dataset, { stick: counts.stick || 0, slip, free: counts.free || 0,
         slipPlus: counts["slip+"] || 0, slipMinus: counts["slip-"] || 0 });
     },
-    chart: (spec, caption) => { chart($("profile"), spec); $("profile-caption").textContent = caption; },
+    chart: (spec, caption) => {
+      const fixed = shows.step && state.player ? state.player.fixed : null;
+      if (fixed) spec = { ...spec, yrange: fixed.yrange.profile };
+      // Comparison mode: the pinned curves (same tab) drawn dashed under the live ones.
+      if (state.pinned && state.pinned.scene === shows.scene) {
+        spec = { ...spec, series: [...spec.series, ...state.pinned.series] };
+        state.pinned.shown = true;
+      }
+      chart($("profile"), spec);
+      $("profile-caption").textContent = caption;
+    },
     output: (id, value, text) => { const o = $(id); if (o) { o.textContent = text; o.dataset.value = String(value); } },
     banner: (text) => { $("banner").hidden = !text; $("banner").textContent = text || ""; },
     table: (rows) => {
@@ -380,16 +427,19 @@ function draw(view, values, shows, custom = null) {
   $("banner").hidden = true;
   if (custom) { custom(ui); return; }
   SCENES[shows.scene].draw(view, ui, values);
-  if (shows.scene === "flagship") drawHistory(values);
+  if (shows.scene === "flagship") drawHistory(values, shows);
   if (shows.scene === "cattaneo_mindlin") {
     chart($("history-plot"), { series: [{ x: [], y: [], colour: "#6b4c9a", label: "Q(δ): run the cycle" }],
       xlabel: "δ: sideways displacement of the roller's top, mm", ylabel: "Q, N/mm" });
   }
 }
 
-function drawHistory(values) {
-  const h = state.history;
+/** l(w), b(w) of the history so far, or up to the step shown (the player), on its fixed axes. */
+function drawHistory(values, shows) {
+  const h = shows.kind === "history" ? state.history.slice(0, shows.step) : state.history;
+  const fixed = shows.kind === "history" && state.player ? state.player.fixed.yrange["history-plot"] : undefined;
   chart($("history-plot"), {
+    yrange: fixed,
     series: [
       { x: h.map((p) => p.w), y: h.map((p) => p.l), colour: "#d62728", label: "l(w)", points: h.length < 2 },
       { x: h.map((p) => p.w), y: h.map((p) => p.b), colour: "#1f77b4", label: "b(w)", points: h.length < 2 },
@@ -399,10 +449,32 @@ function drawHistory(values) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Comparison mode: "Pin the curves" keeps the profile chart's curves of the set-up shown; every
+// later set-up of the same tab is drawn over them (dashed, "pinned: …" in the legend) until
+// "Unpin" or a tab switch.
+
+function togglePin() {
+  if (state.pinned) {
+    state.pinned = null;
+  } else {
+    const last = lastCharts.profile;
+    if (!last) return;
+    const what = (SCENES[state.scene].describe ? SCENES[state.scene].describe(state.values) : state.scene)
+      .split(",").slice(0, 3).join(",");
+    state.pinned = { scene: state.scene, what, series: last.series.filter((s) => !s.pinned && !s.points).map((s) => ({
+      x: [...s.x], y: [...s.y], colour: s.colour, label: `${s.label}, pinned (${what})`, dash: true, pinned: true })) };
+  }
+  page.pinned = state.pinned;
+  $("pin").textContent = state.pinned ? "Unpin the curves" : "Pin the curves";
+  if (state.lastDraw) draw(...state.lastDraw);
+}
+
+// ---------------------------------------------------------------------------------------------
 // Scenes, presets, URL, reset, export, projector, files.
 
 function showScene(name, values, push = false) {
   cancelHistory();
+  if (state.pinned && name !== state.pinned.scene) { state.pinned = null; page.pinned = null; $("pin").textContent = "Pin the curves"; }
   // A tab chosen on the page is a new history entry (Back returns to the last tab).
   if (push && name !== state.scene) history.pushState(null, "", urlOf(name, values));
   state.scene = name;
@@ -439,18 +511,41 @@ function download(name, blob) {
   setTimeout(() => URL.revokeObjectURL(a.href), 10000);
 }
 
+/** The CSV: what is shown, the table, the profile chart's series, and the whole run when one
+ * was made: the loading history's (w, l, b) or the cycle's (step, δ, Q) loop. */
 function exportCsv() {
   const rows = [...$("summary").tBodies[0].rows].map((r) => [r.cells[0].textContent, r.cells[1].dataset.value,
     r.cells[2].textContent]);
   const quote = (s) => `"${String(s).replaceAll('"', '""')}"`;
+  const run = [];
+  if (state.scene === "flagship" && state.history.length) {
+    run.push(`${quote("loading history")}`, "w,l,b", ...state.history.map((h) => `${h.w},${h.l},${h.b}`), "");
+  }
+  if (state.scene === "cattaneo_mindlin" && page.cycle && state.player && state.player.kind === "cycle") {
+    const v = page.cycle;
+    run.push(`${quote("Mindlin–Deresiewicz cycle (the whole loop)")}`, "step,delta_mm,Q_N_per_mm",
+      ...v.summary.steps.map((st, k) => `${k},${v.cycle_shear[k] * 0.01},${st.reactions.cylinder_top[0]}`), "");
+  }
   const text = [`${quote("shows")},${quote($("table-caption").textContent)}`, `${quote("url")},${quote(location.href)}`, "",
-    "quantity,live,published", ...rows.map((r) => r.map(quote).join(",")), "", chartCsv("profile")].join("\n");
+    "quantity,live,published", ...rows.map((r) => r.map(quote).join(",")), "", chartCsv("profile"), ...run].join("\n");
   download(`contact2d_${state.scene}.csv`, new Blob([text], { type: "text/csv" }));
 }
 
+/** The figures shown, as one figure: title, key numbers, the mesh with its colour key, the
+ * profile and (when shown) the history or loop chart, each with its legend. */
+function shownFigure() {
+  const canvases = ["mesh", "profile", "history-plot"].map($).filter((c) => !c.closest("[hidden]") && c.width > 0);
+  const numbers = [...$("summary").tBodies[0].rows].slice(0, 4).map((r) => `${r.cells[0].textContent} = ${r.cells[1].textContent}`);
+  return figureParts({ title: `contact2d — ${SCENES[state.scene].title}`, caption: $("table-caption").textContent,
+    numbers, canvases });
+}
+
 function exportPng() {
-  $("mesh").toBlob((mesh) => download(`contact2d_${state.scene}_mesh.png`, mesh));
-  $("profile").toBlob((profile) => download(`contact2d_${state.scene}_profile.png`, profile));
+  figurePng(shownFigure()).toBlob((png) => download(`contact2d_${state.scene}_figure.png`, png));
+}
+
+function exportSvg() {
+  download(`contact2d_${state.scene}_figure.svg`, new Blob([figureSvg(shownFigure())], { type: "image/svg+xml" }));
 }
 
 async function takeFiles(files) {
@@ -513,6 +608,7 @@ function build() {
   $("history").addEventListener("click", runHistory);
   $("cancel").addEventListener("click", cancelSolve);
   $("cycle").addEventListener("click", runCycle);
+  player.wire();
   // Reset: the scene's defaults, in the same display mode (projector stays on or off).
   $("reset").addEventListener("click", () => {
     $("url-notes").hidden = true;
@@ -525,6 +621,18 @@ function build() {
   });
   $("export-png").addEventListener("click", exportPng);
   $("export-csv").addEventListener("click", exportCsv);
+  $("export-svg").addEventListener("click", exportSvg);
+  $("pin").addEventListener("click", togglePin);
+  // Exercises (exercises.js): the page's hooks to open a set-up and to make a change.
+  installExercises(page, {
+    open: (ex) => showScene("flagship", { ...defaults("flagship"), ...ex.start, mag: state.values.mag,
+      projector: state.values.projector }, state.scene !== "flagship"),
+    change: (values) => { Object.assign(state.values, values); showValues(); schedule(); },
+    // The solve of the set-up on screen is done (none running, scheduled or queued).
+    solved: async () => {
+      while (state.inflight || state.frame || state.queued || page.run !== "idle") await new Promise((r) => setTimeout(r, 50));
+    },
+  });
   $("user-input").addEventListener("change", (e) => takeFiles(e.target.files));
   document.addEventListener("dragover", (e) => e.preventDefault());
   document.addEventListener("drop", (e) => { e.preventDefault(); takeFiles(e.dataTransfer.files); });
@@ -542,6 +650,14 @@ async function main() {
   startWorker();
   const bundled = JSON.parse(bundled_json());
   $("user-limits").textContent = `limits: scene ≤ ${bundled.max_scene_bytes} bytes, mesh ≤ ${bundled.max_mesh_bytes} bytes`;
+  // The bundled scenes' files (web/build.sh copies them to pkg/examples) as examples to download.
+  for (const [i, { name, mesh_file: mesh }] of bundled.generic.entries()) {
+    for (const [j, file] of [`${name}.toml`, mesh].entries()) {
+      const a = document.createElement("a");
+      Object.assign(a, { href: `pkg/examples/${file}`, download: file, textContent: file });
+      $("examples").append(i || j ? (j ? " + " : "; ") : "", a);
+    }
+  }
   build();
   const { scene, values, notes } = readUrl(location.search, SCENES, COMMON, "flagship");
   if (notes.length) {

@@ -31,4 +31,9 @@ CARGO_PROFILE_RELEASE_DEBUG=false \
 echo "== wasm-bindgen --target web -> web/pkg"
 wasm-bindgen --target web --no-typescript --out-dir web/pkg \
     "$target_dir/wasm32-unknown-unknown/release/contact2d_web.wasm"
+# The bundled generic scenes' files (those compiled into the module), offered on the "Your
+# scene" tab as example .toml + .msh pairs to download.
+mkdir -p web/pkg/examples
+grep -o 'include_[a-z]*!("../../../\(scenes\|meshes\)/generic/[^"]*")' crates/web/src/generic_scene.rs |
+    sed 's|.*"\.\./\.\./\.\./\(.*\)")|\1|' | while read -r f; do cp "$f" web/pkg/examples/; done
 ls -l web/pkg/contact2d_web_bg.wasm | awk '{printf "web/pkg/contact2d_web_bg.wasm: %.2f MB\n", $5 / 1e6}'

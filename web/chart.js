@@ -49,32 +49,17 @@ export const lastCharts = {};
 /** The deformed mesh X = x + β u fitted to the canvas: the drawing's bounds are those of the
  * deformed nodes (and `focus`, a box [x0, y0, x1, y1] to zoom on, when given: then only the
  * focus is framed and the rest is clipped). β is `magnification` times the scale that makes
- * the largest displacement 5 % of the undeformed drawing. Returns the pair counts and β. */
-export function drawMesh(canvas, view, magnification, focus = null) {
+ * the largest displacement 5 % of the undeformed drawing; `fixed` (fixedMeshScale) gives one β
+ * and box for all steps of a history instead. Returns the pair counts and β. */
+export function drawMesh(canvas, view, magnification, focus = null, fixed = null) {
   const m = view.mesh;
   const n = m.points.length / 2;
   const { ctx, W, H } = prepare(canvas);
   if (n === 0) return { counts: {}, beta: 0 };
-  let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
-  for (let i = 0; i < n; i++) {
-    x0 = Math.min(x0, m.points[2 * i]); x1 = Math.max(x1, m.points[2 * i]);
-    y0 = Math.min(y0, m.points[2 * i + 1]); y1 = Math.max(y1, m.points[2 * i + 1]);
-  }
-  const umax = m.displacement.reduce((a, v) => Math.max(a, Math.abs(v)), 0);
-  const size = focus ? Math.max(focus[2] - focus[0], focus[3] - focus[1]) : Math.max(x1 - x0, y1 - y0);
-  const beta = umax > 0 ? magnification * 0.05 * size / umax : 0;
+  const beta = fixed ? fixed.beta : meshBeta([view], magnification, focus);
   const X = new Float64Array(2 * n);
   for (let i = 0; i < 2 * n; i++) X[i] = m.points[i] + beta * m.displacement[i];
-  let bounds = focus;
-  if (!bounds) {
-    bounds = [Infinity, Infinity, -Infinity, -Infinity];
-    for (let i = 0; i < n; i++) {
-      bounds[0] = Math.min(bounds[0], X[2 * i], m.points[2 * i]);
-      bounds[2] = Math.max(bounds[2], X[2 * i], m.points[2 * i]);
-      bounds[1] = Math.min(bounds[1], X[2 * i + 1], m.points[2 * i + 1]);
-      bounds[3] = Math.max(bounds[3], X[2 * i + 1], m.points[2 * i + 1]);
-    }
-  }
+  const bounds = focus || (fixed ? fixed.bounds : meshBounds([view], beta));
   const pad = 8;
   const [bx0, by0, bx1, by1] = bounds;
   const scale = Math.min((W - 2 * pad) / Math.max(bx1 - bx0, 1e-300), (H - 2 * pad) / Math.max(by1 - by0, 1e-300));
@@ -119,6 +104,41 @@ export function drawMesh(canvas, view, magnification, focus = null) {
   return { counts, beta };
 }
 
+/** β for the views drawn together: `magnification` times the scale that makes the largest
+ * displacement of all of them 5 % of the undeformed drawing (of `focus` when given). */
+function meshBeta(views, magnification, focus) {
+  const pts = views[0].mesh.points;
+  let [x0, y0, x1, y1] = [Infinity, Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < pts.length / 2; i++) {
+    x0 = Math.min(x0, pts[2 * i]); x1 = Math.max(x1, pts[2 * i]);
+    y0 = Math.min(y0, pts[2 * i + 1]); y1 = Math.max(y1, pts[2 * i + 1]);
+  }
+  const umax = views.reduce((a, v) => v.mesh.displacement.reduce((b, u) => Math.max(b, Math.abs(u)), a), 0);
+  const size = focus ? Math.max(focus[2] - focus[0], focus[3] - focus[1]) : Math.max(x1 - x0, y1 - y0);
+  return umax > 0 ? magnification * 0.05 * size / umax : 0;
+}
+
+/** The box [x0, y0, x1, y1] holding every view's undeformed and deformed (X = x + β u) nodes. */
+function meshBounds(views, beta) {
+  const b = [Infinity, Infinity, -Infinity, -Infinity];
+  for (const { mesh: m } of views) {
+    const p = m.points, u = m.displacement;
+    for (let i = 0; i < p.length; i += 2) {
+      const x = p[i], y = p[i + 1], X = x + beta * u[i], Y = y + beta * u[i + 1];
+      b[0] = Math.min(b[0], x, X); b[2] = Math.max(b[2], x, X); b[1] = Math.min(b[1], y, Y); b[3] = Math.max(b[3], y, Y);
+    }
+  }
+  return b;
+}
+
+/** One drawing scale for the steps of a history or cycle (frames comparable: the deformation
+ * grows with the load): β from the largest displacement of all `views`, the bounds of all of
+ * them. Pass the result to drawMesh as `fixed`. */
+export function fixedMeshScale(views, magnification, focus = null) {
+  const beta = meshBeta(views, magnification, focus);
+  return { beta, bounds: focus || meshBounds(views, beta) };
+}
+
 /** Round tick values: the multiples of a step 1, 2, 2.5 or 5 × 10^k in [a, b], the step the
  * smallest of these giving at most `most` intervals over [a, b]; labels with the step's decimals. */
 export function niceTicks(a, b, most = 5) {
@@ -133,11 +153,12 @@ export function niceTicks(a, b, most = 5) {
   return ticks;
 }
 
-/** A line chart: series {x, y, colour, label, points?}, vertical markers {x, label}; every
+/** A line chart: series {x, y, colour, label, points?, fill?, dash?}, vertical markers {x, label},
+ * optional xrange / yrange [a, b] (fixed axes); every
  * label sits in a band of its own: tick labels under/left of the plot, axis titles outside
  * them, the legend above the plot, marker labels in a strip above the plot stacked into rows
  * so that no two overlap. */
-export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange }) {
+export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange, yrange }) {
   const { ctx, W, H } = prepare(canvas);
   lastCharts[canvas.id] = { series, xlabel, ylabel };
   const f = fontPx, line = Math.round(1.3 * f);
@@ -145,7 +166,8 @@ export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange }) 
   const xs = series.flatMap((s) => s.x.filter((_, i) => s.y[i] !== null));
   const ys = series.flatMap((s) => s.y.filter((v) => v !== null));
   let [xa, xb] = xrange || [Math.min(...xs), Math.max(...xs)];
-  let [ya, yb] = [Math.min(0, ...ys), Math.max(0, ...ys)];
+  // yrange: a fixed y axis (a history's frames share one), else the series' extent and 0.
+  let [ya, yb] = yrange ? [Math.min(0, yrange[0]), Math.max(0, yrange[1])] : [Math.min(0, ...ys), Math.max(0, ...ys)];
   if (!(yb > ya)) { ya -= 1; yb += 1; }
   if (!(xb > xa)) { xa -= 1; xb += 1; }
   const margin = 0.05 * (yb - ya);
@@ -220,6 +242,7 @@ export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange }) 
     if (s.points) {
       s.x.forEach((x, i) => { if (s.y[i] !== null) { ctx.beginPath(); ctx.arc(px(x), py(s.y[i]), 3.5, 0, 2 * Math.PI); ctx.fill(); } });
     } else {
+      ctx.setLineDash(s.dash ? [7, 5] : []);
       ctx.beginPath();
       let pen = false;
       s.x.forEach((x, i) => {
@@ -228,6 +251,7 @@ export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange }) 
         pen = true;
       });
       ctx.stroke();
+      ctx.setLineDash([]);
     }
   });
   ctx.restore();

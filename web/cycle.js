@@ -72,7 +72,8 @@ export function drawCycleStep(view, k, ui, loopCanvas, chart) {
       { x: [delta[k]], y: [Q[k]], colour: "#d62728", label: "now", points: true },
     ],
     xlabel: "δ: sideways displacement of the roller's top, mm", ylabel: "Q, N/mm",
-    xrange: [-1.1 * Math.abs(delta[1]), 1.1 * Math.abs(delta[1])],
+    // Fixed axes: the whole cycle's δ and Q, so the loop grows inside a frame that stays put.
+    xrange: [-1.1 * Math.abs(delta[1]), 1.1 * Math.abs(delta[1])], yrange: [Math.min(...Q), Math.max(...Q)],
   });
   const count = (s) => profile.state.filter((t) => t === s).length;
   // The ratio beside the slider follows the cycle (not the slider's own solve).

@@ -41,3 +41,6 @@ timeout 900 node web/tests/browser_page.mjs web/out/reference.json
 
 echo "== headless Chromium: issue 42 (the smaller items, each scene's limits)"
 timeout 600 node web/tests/browser_teaching.mjs
+
+echo "== headless Chromium: issue 42 (the player of histories and cycles)"
+timeout 600 node web/tests/browser_present.mjs

@@ -181,7 +181,12 @@ try {
   await page.select("#refinement", "16");
   await page.click('[data-preset="gap_v1_mu03"]');
   await page.click("#history");
-  await page.waitForFunction(() => document.querySelector("#timing").textContent.includes("step 10/10"), { timeout: 120000 });
+  // Waits on the state the page exposes (the run over, its last step shown), not on a text
+  // that a later solve could replace; then the timing line must name that step.
+  await page.waitForFunction(() => window.contact2dPage.run === "idle" && window.contact2dPage.shows
+    && window.contact2dPage.shows.kind === "history" && window.contact2dPage.shows.step === 10, { timeout: 120000 });
+  check((await page.$eval("#timing", (p) => p.textContent)).includes("step 10/10"),
+    "the loading history after a preset ran to step 10/10 (the click is not lost to the preset's solve)");
   await page.screenshot({ path: join(out, "history.png"), fullPage: true });
 
   check(errors.length === 0, `no console or page error${errors.length ? ": " + errors.join("; ") : ""}`);

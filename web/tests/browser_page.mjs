@@ -91,6 +91,39 @@ try {
     check(published === "published" && caption.includes("step 10 of 10") && label.includes("load steps"),
       `after a history the table says so ("${caption.slice(0, 60)}…") and keeps the published column with the load-step caveat`);
   });
+  await section("history clicked while a solve runs", async () => {
+    // Before: a click on History while a solve of the controls ran (a preset chosen a frame
+    // earlier, on a busy machine) was dropped: no history, and CI's wait for "step 10/10" timed
+    // out. Now the history starts when that solve has been drawn. The click is made in the
+    // page at a moment the page reports a solve in flight (and, second, one scheduled for the
+    // next frame with another queued behind a running one), so both orders are exercised
+    // every run, not by chance.
+    for (const when of ["solving", "scheduled"]) {
+      await open(page, "?eps=0.05&mu=0.3&load=0.3838");
+      const at = await page.evaluate(async (w) => {
+        const fire = (id, v) => { const e = document.getElementById(id); e.value = v; e.dispatchEvent(new Event("input")); };
+        fire("load", "0.3");
+        if (w === "solving") {
+          // The scheduled solve starts in the next frame; the worker's answer is a later task.
+          await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+        } else {
+          await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+          fire("load", "0.3838"); // queued behind the running solve
+        }
+        const run = window.contact2dPage.run;
+        document.getElementById("history").click();
+        return run;
+      }, when);
+      await page.waitForFunction(() => window.contact2dPage.run === "idle" && window.contact2dPage.shows.kind === "history"
+        && window.contact2dPage.shows.step === 10, { timeout: 60000 });
+      s = await pageState(page);
+      const timing = await page.$eval("#timing", (p) => p.textContent);
+      const last = when === "solving" ? 0.3 : 0.3838; // the controls' load when History was clicked
+      check(at === "solving" && s.history.length === 10 && s.history[9].w === last && timing.includes("step 10/10"),
+        `History clicked while a solve ${when === "solving" ? "runs" : "runs and another is queued"} (page: ${at}): ` +
+        `the history runs to w = ${s.history[9] && s.history[9].w} (${s.history.length} points, "${timing.slice(0, 24)}…")`);
+    }
+  });
   await section("control moved during a history", async () => {
     // Before: moving a control during a run left the table showing the run's answer (ε = 0.05's
     // l = 0.154 under a slider at ε = 0).
@@ -269,12 +302,13 @@ try {
     await cdp.send("Browser.setDownloadBehavior", { behavior: "allow", downloadPath: downloads });
     await page.click("#export-csv");
     await page.click("#export-png");
-    for (let i = 0; i < 50 && readdirSync(downloads).filter((f) => !f.endsWith(".crdownload")).length < 3; i++) await sleep(100);
+    // Up to 15 s: the one-figure PNG is composed and encoded first (seconds on a loaded machine).
+    for (let i = 0; i < 150 && readdirSync(downloads).filter((f) => !f.endsWith(".crdownload")).length < 2; i++) await sleep(100);
     const files = readdirSync(downloads);
     const csv = files.find((f) => f.endsWith(".csv"));
     const lCell = (await cell(page, "l")).value;
     check(csv && readFileSync(join(downloads, csv), "utf8").includes(`"contact end l","${lCell}"`)
-      && files.some((f) => f.endsWith("_mesh.png")) && files.some((f) => f.endsWith("_profile.png")),
+      && files.some((f) => f.endsWith("_figure.png")),
     `export: ${files.join(", ")} (the CSV holds the table's exact l)`);
   });
   await section("file://", async () => {
