@@ -93,6 +93,7 @@ function startWorker() {
   solver.worker.onmessage = ({ data }) => {
     const p = solver.pending.get(data.id);
     if (!p) return;
+    p.arrived = performance.now();
     solver.pending.delete(data.id);
     if (data.error) p.reject(new Error(data.error)); else p.resolve(data);
   };
@@ -113,13 +114,17 @@ function solveInWorker(request) {
     $("busy").hidden = false;
     $("busy-time").textContent = `solving… ${s.toFixed(1)} s`;
   }, 100);
+  const entry = {};
   return new Promise((resolve, reject) => {
-    solver.pending.set(id, { resolve, reject });
+    Object.assign(entry, { resolve, reject });
+    solver.pending.set(id, entry);
     solver.worker.postMessage({ ...request, id });
   }).finally(() => {
     clearInterval(busy);
     if (!solver.pending.size) $("busy").hidden = true;
-    page.solveWindows.push([t0, performance.now()]);
+    // The solve's window ends when the worker's answer reaches this thread (its handling and
+    // drawing follow, and are timed apart).
+    page.solveWindows.push([t0, entry.arrived ?? performance.now()]);
   });
 }
 

@@ -200,7 +200,10 @@ try {
       const m = await page.evaluate(() => {
         cancelAnimationFrame(window.__frame);
         const w = window.contact2dPage.solveWindows;
-        const during = (a, b) => w.some(([t0, t1]) => a < t1 && b > t0);
+        // A task that blocked during the solve started before the answer arrived (it delays the
+        // arrival's stamp until it ends); the task that handles the answer starts with the
+        // stamp, within a fraction of a millisecond, and is the drawing's (reported below).
+        const during = (a, b) => w.some(([t0, t1]) => a < t1 - 2 && b > t0);
         const inside = (a, b) => w.some(([t0, t1]) => a >= t0 && b <= t1);
         const long = window.__long.filter(([s, d]) => during(s, s + d)).map(([, d]) => d);
         const gaps = window.__gaps.filter(([a, b]) => inside(a, b)).map(([a, b]) => b - a);
