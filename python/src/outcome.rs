@@ -165,8 +165,9 @@ impl Outcome {
                 let model = s.model(k).ok_or_else(|| PyIndexError::new_err(format!("step {step}: no model")))?;
                 let n = model.mesh.num_nodes();
                 let mut out = vec![f64::NAN; 4 * n];
-                for (b, body) in model.bodies.iter().enumerate() {
-                    let nodal = contact2d::fem::nodal_stresses(
+                for b in 0..model.bodies.len() {
+                    // σ33 in the plane, σθθ for a body of revolution.
+                    let nodal = contact2d::fem::nodal_stress_states(
                         model,
                         contact2d::fem::BodyId(b),
                         u,
@@ -175,12 +176,7 @@ impl Outcome {
                     .map_err(|e| ContactError::new_err(e.to_string()))?;
                     for (i, s) in nodal.iter().enumerate() {
                         if let Some(s) = s {
-                            out[4 * i..4 * i + 4].copy_from_slice(&[
-                                s[0],
-                                s[1],
-                                s[2],
-                                body.material.out_of_plane_stress(s),
-                            ]);
+                            out[4 * i..4 * i + 4].copy_from_slice(s);
                         }
                     }
                 }

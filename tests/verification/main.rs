@@ -6,6 +6,7 @@
 
 mod verify_augmented_lagrangian;
 mod verify_axisymmetric_lame;
+mod verify_axisymmetric_shrink_fit;
 mod verify_boussinesq_agrees;
 mod verify_boussinesq_placed;
 mod verify_cattaneo_mindlin;

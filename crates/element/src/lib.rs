@@ -45,4 +45,5 @@ pub use shape::{EdgeType, ElementType, MAX_NODES, ShapeEval};
 pub use stiffness::{element_area, element_stiffness, element_stiffness_with};
 pub use stress::{
     gauss_to_node_extrapolation, hoop_strain_at, strain_at, strain_at_with, stress_at, stress_at_with, stress_state_at,
+    von_mises,
 };

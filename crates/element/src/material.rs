@@ -106,9 +106,7 @@ impl Material {
 
     /// The von Mises equivalent stress of an in-plane stress state (with σ33 from the plane condition).
     pub fn von_mises(&self, stress: &[f64; 3]) -> f64 {
-        let [s11, s22, s12] = *stress;
-        let s33 = self.out_of_plane_stress(stress);
-        (0.5 * ((s11 - s22).powi(2) + (s22 - s33).powi(2) + (s33 - s11).powi(2)) + 3.0 * s12 * s12).sqrt()
+        crate::stress::von_mises(&[stress[0], stress[1], stress[2], self.out_of_plane_stress(stress)])
     }
 }
 

@@ -204,6 +204,14 @@ pub fn stress_state_at(
     Ok([s[0] + lambda * hoop, s[1] + lambda * hoop, s[2], lambda * (e[0] + e[1]) + diagonal * hoop])
 }
 
+/// The von Mises equivalent stress of a whole stress state `[σ11, σ22, σ12, σ_out]` (σ_out the
+/// out-of-plane normal stress, σ33 or σθθ, a principal stress):
+/// `√(½ [(σ11 − σ22)² + (σ22 − σ_out)² + (σ_out − σ11)²] + 3 σ12²)`.
+pub fn von_mises(state: &[f64; 4]) -> f64 {
+    let [s11, s22, s12, s33] = *state;
+    (0.5 * ((s11 - s22).powi(2) + (s22 - s33).powi(2) + (s33 - s11).powi(2)) + 3.0 * s12 * s12).sqrt()
+}
+
 /// Monomial exponents of the extrapolation space for a rule of `len` points on `element`'s cell.
 fn extrapolation_basis(element: ElementType, len: usize) -> Result<Vec<(i32, i32)>, ElementError> {
     let unsupported =

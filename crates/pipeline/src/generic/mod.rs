@@ -157,6 +157,9 @@ pub struct GenericReport {
     /// The algorithm (its scene key).
     #[serde(serialize_with = "crate::schema::serialize_algorithm")]
     pub algorithm: contact2d_contact::ContactAlgorithm,
+    /// The kinematics that ran, as the scene key spells it: `plane_stress`, `plane_strain`,
+    /// `axisymmetric`, or `plane` for plane bodies of both conditions.
+    pub kinematics: &'static str,
     /// Free DOFs.
     pub dofs: usize,
     /// Contact pairs.
@@ -228,6 +231,7 @@ impl GenericReport {
             failed_check: self.failed_check.clone(),
             not_held: self.not_held.clone(),
             algorithm: self.algorithm,
+            kinematics: self.kinematics,
             dofs: self.dofs,
             pairs: self.pairs,
             iterations: self.iterations,

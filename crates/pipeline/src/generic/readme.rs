@@ -84,8 +84,9 @@ pub fn method_line(report: &GenericReport) -> String {
     let history =
         if report.scaled { "solved once and scaled (no gap, proportional loads)" } else { "solved step by step" };
     format!(
-        "Method: {}, {history}; pairing {}; {}.",
+        "Method: {}, {}, {history}; pairing {}; {}.",
         report.algorithm.key(),
+        report.kinematics.replace('_', " "),
         pairings.join(", "),
         linear_phrase(report)
     )

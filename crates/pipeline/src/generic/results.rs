@@ -720,7 +720,8 @@ pub fn contact_result_about(
 ) -> ContactResult {
     let problem = &built.problem;
     let order = sorted_pairs(built, iface);
-    let thickness = problem.model.body(&iface.master_region).map_or(1.0, |(_, b)| b.kinematics.pair_area_factor());
+    let kinematics = problem.model.body(&iface.master_region).map(|(_, b)| b.kinematics);
+    let thickness = kinematics.map_or(1.0, |k| k.pair_area_factor());
     let area = |k: usize| problem.pairs[k].weight * thickness;
     let arc: Vec<f64> = order.iter().map(|&k| problem.pairs[k].master_arc_length).collect();
     let in_contact: Vec<bool> = order.iter().map(|&k| s.state[k] != PairState::Free).collect();
@@ -757,7 +758,7 @@ pub fn contact_result_about(
         tangential_force: order.iter().map(|&k| s.tangential_force[k]).sum(),
         contact_length,
         stick_length,
-        mean_pressure: mean_pressure(normal_force, contact_length, thickness),
+        mean_pressure: mean_pressure(normal_force, contact_length, zone_width(problem, &order, s, kinematics)),
         max_pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).fold(0.0, f64::max),
         dissipation,
         resultant: slave_resultant(built, iface, s),
@@ -771,6 +772,26 @@ pub fn contact_result_about(
         profile,
         fretting: None,
     }
+}
+
+/// What turns the contact length into the contact area: the thickness `t` in the plane; for a
+/// body of revolution the circumference `2π r̄` at the mean radius of the pairs in contact,
+/// `r̄ = Σ w_k r_k / Σ w_k` (`w_k` their ring areas; `r̄ = b` on a bore of radius b).
+fn zone_width(
+    problem: &contact2d_contact::ContactProblem,
+    order: &[usize],
+    s: &ContactSolution,
+    kinematics: Option<contact2d_element::Kinematics>,
+) -> f64 {
+    let Some(kinematics) = kinematics.filter(|k| k.thickness().is_none()) else {
+        return kinematics.map_or(1.0, |k| k.pair_area_factor());
+    };
+    let in_contact = order.iter().filter(|&&k| s.state[k] != PairState::Free);
+    let (sum_w, sum_wr) = in_contact.fold((0.0, 0.0), |(w, wr), &k| {
+        let pair = &problem.pairs[k];
+        (w + pair.weight, wr + pair.weight * problem.model.mesh.points[pair.master.0][0])
+    });
+    if sum_w > 0.0 { kinematics.pairing_measure([sum_wr / sum_w, 0.0]) } else { 1.0 }
 }
 
 /// `normal_force / (contact_length t)`, the mean pressure over the contact length (`None` where

@@ -146,3 +146,27 @@ fn stages_are_the_runs_of_steps_with_the_same_fixes() {
     let s = GenericScene::from_toml_str(SCENE, path, &["fix.1.from_step=2".into()]).unwrap();
     assert_eq!(s.fix_stages().unwrap(), vec![(0..1, vec![true, true, false]), (1..2, vec![true, true, true])]);
 }
+
+#[test]
+fn the_kinematics_key_and_what_it_refuses() {
+    let path = Path::new("scenes/t.toml");
+    let parse = |sets: &[&str]| {
+        let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+        GenericScene::from_toml_str(SCENE, path, &sets)
+    };
+    let key_of = |sets: &[&str]| match parse(sets) {
+        Err(SceneError::Value { key, .. }) => key,
+        other => panic!("{sets:?}: {other:?}"),
+    };
+    let s = parse(&["kinematics=axisymmetric"]).unwrap();
+    assert!(s.is_axisymmetric());
+    assert_eq!(s.body_kinematics(&s.body[0]), contact2d_element::Kinematics::Axisymmetric);
+    let strain = parse(&["kinematics=plane_strain", "body.b.thickness=2"]).unwrap();
+    assert_eq!(strain.body_kinematics(&strain.body[1]), contact2d_element::Kinematics::PlaneStrain { thickness: 2.0 });
+    assert_eq!(key_of(&["kinematics=axisymmetric", "body.a.thickness=2"]), "body.0.thickness");
+    assert_eq!(key_of(&["kinematics=axisymmetric", "plane=strain"]), "plane");
+    assert_eq!(key_of(&["kinematics=axisymmetric", "body.b.plane=stress"]), "body.1.plane");
+    assert_eq!(key_of(&["kinematics=plane_strain", "plane=stress"]), "plane");
+    assert_eq!(key_of(&["body.a.thickness=-1"]), "body.0.thickness");
+    assert!(parse(&["kinematics=spherical"]).is_err(), "an unknown kinematics is refused");
+}

@@ -13,6 +13,18 @@
 
 use contact2d_contact::{BuiltProblem, nodes_face_each_other};
 
+/// A note on a body of revolution's axis: how many nodes lie on it, held at `u_r = 0`
+/// ([`contact2d_fem::Model::fix_axis_nodes`]).
+pub fn axis_notes(model: &contact2d_fem::Model) -> Option<String> {
+    let count = model.axis_nodes().len();
+    (count > 0).then(|| {
+        format!(
+            "axisymmetric: {count} node{} on the axis r = 0 hold u_r = u1 = 0 (a point of the axis cannot leave it)",
+            if count == 1 { "" } else { "s" }
+        )
+    })
+}
+
 /// A note per pair of bodies that share nodes, naming both and the number of nodes.
 /// `regions` are the scene's body regions in order; an unknown region is left to the build,
 /// which reports it.

@@ -184,6 +184,7 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
     let regions: Vec<String> = scene.body.iter().map(|b| b.region.clone()).collect();
     notes.extend(setup_notes::shared_node_notes(&built.problem.model.mesh, &regions));
     notes.extend(setup_notes::deep_interference_notes(initial));
+    notes.extend(setup_notes::axis_notes(&built.problem.model));
     notes.extend(setup_notes::held_pair_notes(initial, &last_step.solution.gap));
     let node_to_segment: Vec<bool> =
         scene.contact.iter().map(|c| c.pairing == scene::PairingKey::NodeToSegment).collect();
@@ -238,6 +239,7 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
         failed_check,
         not_held: summary_steps.iter().find_map(|s| s.not_held.clone()),
         algorithm: scene.solver.algorithm,
+        kinematics: kinematics_used(&built.problem.model),
         dofs: built.problem.system.dofs.num_free(),
         pairs: built.problem.num_pairs(),
         iterations: summary_steps.iter().map(|s| s.iterations).sum(),
@@ -343,4 +345,16 @@ fn certified_status(
         }
     }
     ("converged", None)
+}
+
+/// The kinematics of the model's bodies as the scene key spells it (`plane` where plane bodies
+/// differ in their condition).
+fn kinematics_used(model: &contact2d_fem::Model) -> &'static str {
+    let key = |b: &contact2d_fem::Body| match b.kinematics {
+        contact2d_element::Kinematics::PlaneStress { .. } => "plane_stress",
+        contact2d_element::Kinematics::PlaneStrain { .. } => "plane_strain",
+        contact2d_element::Kinematics::Axisymmetric => "axisymmetric",
+    };
+    let first = model.bodies.first().map_or("plane_stress", key);
+    if model.bodies.iter().all(|b| key(b) == first) { first } else { "plane" }
 }

@@ -10,7 +10,7 @@
 
 use std::path::Path;
 
-use contact2d_element::{ElementType, map_point, stress_at_with};
+use contact2d_element::{ElementType, map_point, stress_state_at, von_mises};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -47,12 +47,13 @@ pub fn von_mises_cells(step: &StepView) -> Result<Vec<SubCell>, OutputError> {
             for corners in reference_subcells(element) {
                 let n = corners.len() as f64;
                 let centre = corners.iter().fold([0.0, 0.0], |a, p| [a[0] + p[0] / n, a[1] + p[1] / n]);
-                let stress = stress_at_with(element, &coords, &body.material, &ue, centre, body.formulation)?;
+                let state =
+                    stress_state_at(element, &coords, &body.material, &body.kinematics, &ue, centre, body.formulation)?;
                 let mapped = corners
                     .iter()
                     .map(|xi| map_point(element, &coords, *xi).map(|m| (m.x[0], m.x[1])))
                     .collect::<Result<Vec<_>, _>>()?;
-                cells.push(SubCell { corners: mapped, value: body.material.von_mises(&stress) });
+                cells.push(SubCell { corners: mapped, value: von_mises(&state) });
             }
         }
     }

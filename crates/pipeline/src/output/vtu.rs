@@ -18,7 +18,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use contact2d_element::ElementType;
-use contact2d_fem::{BodyId, StressRecovery, nodal_stresses};
+use contact2d_fem::{BodyId, StressRecovery, nodal_stress_states};
 use vtkio::model::{
     Attribute, Attributes, ByteOrder, CellType, Cells, DataSet, UnstructuredGridPiece, Version, VertexNumbers, Vtk,
 };
@@ -68,12 +68,12 @@ pub fn write_step_vtu(path: &Path, step: &StepView) -> Result<(), OutputError> {
     let mut von_mises = vec![0.0; n];
     let (mut connectivity, mut offsets, mut types, mut body_ids) = (vec![], vec![], vec![], vec![]);
     for (b, body) in model.bodies.iter().enumerate() {
-        let nodal = nodal_stresses(model, BodyId(b), u, StressRecovery::Extrapolated)?;
+        // The whole state: σ33 in the plane, σθθ for a body of revolution (its third axis).
+        let nodal = nodal_stress_states(model, BodyId(b), u, StressRecovery::Extrapolated)?;
         for (i, s) in nodal.iter().enumerate() {
             if let Some(s) = s {
-                let s33 = body.material.out_of_plane_stress(s);
-                stress[9 * i..9 * i + 9].copy_from_slice(&[s[0], s[2], 0.0, s[2], s[1], 0.0, 0.0, 0.0, s33]);
-                von_mises[i] = body.material.von_mises(s);
+                stress[9 * i..9 * i + 9].copy_from_slice(&[s[0], s[2], 0.0, s[2], s[1], 0.0, 0.0, 0.0, s[3]]);
+                von_mises[i] = contact2d_element::von_mises(s);
             }
         }
         for c in 0..body.num_cells() {

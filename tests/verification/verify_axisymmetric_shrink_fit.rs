@@ -1,0 +1,57 @@
+//! Verification: a shrink fit of a solid shaft in a hub as bodies of revolution
+//! (`scenes/generic/shrink_fit_axisymmetric.toml`, `kinematics = "axisymmetric"`), through the
+//! scene, the pairing and every contact algorithm that solves it exactly.
+//!
+//! Citation: S. P. Timoshenko, J. N. Goodier (1970), Theory of Elasticity, 3rd ed., §28–§30
+//! (thick cylinders, shrink fits); the shaft under external pressure is in the uniform state
+//! u_r = −p r (1 + ν)(1 − 2ν)/E (plane strain along the axis), the hub Lamé's.
+//!
+//! Set-up: shaft 0 ≤ r ≤ b = 10, hub b ≤ r ≤ c = 20, length L = 10, both ends of both bodies held
+//! axially (u_z = 0), E = 200 000, ν = 0.3, radial interference δ = 0.01 (the contact's gap),
+//! frictionless; Q9, 8 × 8 cells per body. With the ends held the fit is Lamé's along its whole
+//! length (no end effect):
+//!
+//! ```text
+//! p = E δ / (b (1 + ν) [((1 − 2ν) b² + c²)/(c² − b²) + (1 − 2ν)]) = 82.4176
+//! normal force (a total over the circumference) N = p 2π b L = 51 784
+//! ```
+//!
+//! Tolerance: 1e-4 relative on N, on every pair's pressure and on the mean pressure. The shaft's
+//! exact field is in the Q9 space; the hub's u_r = A r + B/r is not, and its interpolation
+//! error on 8 cells across the wall is O(h³) ≈ 1e-5 relative (measured 3e-6); a wrong measure
+//! (a pair weight without 2πr, or a load or stiffness without it) is an O(1) error.
+
+use std::path::Path;
+
+use contact2d::generic::{GenericReport, load_scene, solve_generic};
+
+const SCENE: &str = "scenes/generic/shrink_fit_axisymmetric.toml";
+
+fn run(sets: &[&str]) -> GenericReport {
+    let sets: Vec<String> = sets.iter().map(|s| s.to_string()).collect();
+    solve_generic(&load_scene(Path::new(SCENE), &sets).unwrap(), &mut |_, _| {}).unwrap().report
+}
+
+#[test]
+fn the_shrink_fit_carries_lames_pressure_over_the_whole_circumference() {
+    let (e, nu, delta, b, c, length) = (200_000.0, 0.3, 0.01, 10.0, 20.0, 10.0);
+    let p = e * delta / (b * (1.0 + nu) * (((1.0 - 2.0 * nu) * b * b + c * c) / (c * c - b * b) + (1.0 - 2.0 * nu)));
+    let force = p * 2.0 * std::f64::consts::PI * b * length;
+    for algorithm in ["active_set", "clarabel", "augmented_lagrangian"] {
+        for pairing in ["segment_to_segment", "node_to_segment"] {
+            let r = run(&[&format!("solver.algorithm={algorithm}"), &format!("contact.0.pairing={pairing}")]);
+            let tag = format!("{algorithm} × {pairing}");
+            assert_eq!(r.status, "converged", "{tag}");
+            assert_eq!(r.kinematics, "axisymmetric");
+            let fit = &r.contacts["fit"];
+            assert!((fit.normal_force - force).abs() < 1e-4 * force, "{tag}: N {} against {force}", fit.normal_force);
+            let mean = fit.mean_pressure.unwrap();
+            assert!((mean - p).abs() < 1e-4 * p, "{tag}: mean pressure {mean} against {p}");
+            let profile = fit.profile.as_ref().unwrap();
+            for q in &profile.pressure {
+                assert!((q - p).abs() < 1e-4 * p, "{tag}: a pair's pressure {q} against {p}");
+            }
+            assert!(r.notes.iter().any(|n| n.contains("17 nodes on the axis")), "{tag}: {:?}", r.notes);
+        }
+    }
+}
