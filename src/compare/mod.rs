@@ -161,7 +161,7 @@ pub struct CompareRow {
     /// The quantities' values.
     pub values: BTreeMap<String, f64>,
     /// Their relative errors against the references (on one mesh: relative differences from
-    /// the reference method, [`ReferenceKind::SameMesh`]).
+    /// the reference method, [`Deviation::Difference`]).
     pub errors: BTreeMap<String, f64>,
 }
 

@@ -153,7 +153,7 @@ fn reference_level(levels: &[Level]) -> usize {
 }
 
 /// The rows of each algorithm × pairing, in run order, each indexed by level.
-fn combinations<'a>(rows: &'a [CompareRow], levels: usize) -> Vec<Vec<Option<&'a CompareRow>>> {
+fn combinations(rows: &[CompareRow], levels: usize) -> Vec<Vec<Option<&CompareRow>>> {
     let mut out: Vec<Vec<Option<&CompareRow>>> = vec![];
     for r in rows.iter().filter(|r| r.level < levels) {
         let same = |c: &&mut Vec<Option<&CompareRow>>| {
