@@ -75,7 +75,8 @@ def compare(
     ``contact2d compare SCENE`` does, and return its table: one row per combination with the
     columns of ``compare.csv`` (algorithm, pairing, level, mesh, pairs, status, reason, time_s,
     solve_time_s, iterations, max_penetration, max_complementarity, max_cone_violation, then for
-    each quantity ``q`` its value ``q`` and relative error ``error_q``).
+    each quantity ``q`` its value ``q`` and relative error ``error_q`` — on one mesh, where the
+    reference is the most accurate method's value there, ``difference_q``).
 
     ``meshes`` are the mesh levels, coarse to fine (default: the scene's own; for the paper's
     case its N = 16, 32, 64 meshes); ``repeat`` runs per combination (the median time is
@@ -83,9 +84,11 @@ def compare(
     ``time_limit`` seconds per combination (a slower one is ``timed_out``). A combination the
     library refuses is a row with status ``skipped`` and its reason.
 
-    The reference of each quantity (the closed form, the published value, a Richardson
-    extrapolation or the baseline's finest value) is in ``frame.attrs["references"]``:
-    ``{quantity: {"values": [...], "kind": "..."}}``.
+    The reference of each quantity is in ``frame.attrs["reference"]``, as compare.json's
+    ``reference``: ``{quantity: {"quantity", "kind", "from", "value", "how", "deviation"}}`` with
+    ``kind`` one of ``closed_form``, ``published``, ``richardson`` (the most accurate method's
+    three finest levels extrapolated), ``finest`` (its value on the finest level), ``from`` the
+    source or method and meshes, and ``deviation`` ``error`` or ``difference``.
 
     Raises SceneError / MeshError with the CLI's message for a bad scene or mesh, ValueError for
     a malformed reference or time limit.
@@ -96,10 +99,10 @@ def compare(
             path, sets, [Path(m) for m in meshes], int(repeat), refs, float(time_limit)
         )
     columns = list(COMPARE_COLUMNS)
-    for q in refs_out:
-        columns += [q, f"error_{q}"]
+    for q, ref in refs_out.items():
+        columns += [q, f"{ref['deviation']}_{q}"]
     frame = pd.DataFrame(rows, columns=columns)
-    frame.attrs["references"] = {q: {"values": list(v), "kind": kind} for q, (v, kind) in refs_out.items()}
+    frame.attrs["reference"] = {q: dict(ref) for q, ref in refs_out.items()}
     return frame
 
 

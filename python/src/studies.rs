@@ -11,8 +11,9 @@ use pyo3::types::PyDict;
 
 use crate::errors::{Contact2dError, ContactError, MeshError, generic_error, scene_error};
 
-/// A compared quantity's reference: (values, one per mesh level or a single one; how obtained).
-type ReferenceRow = (Vec<f64>, String);
+/// A compared quantity's reference as compare.json's `reference` object: quantity, kind, from,
+/// value, how, deviation.
+type ReferenceRow<'py> = Bound<'py, PyDict>;
 
 /// Table rows, one dict per row.
 type Rows<'py> = Vec<Bound<'py, PyDict>>;
@@ -32,7 +33,7 @@ pub fn compare<'py>(
     repeat: usize,
     references: Vec<String>,
     time_limit: f64,
-) -> PyResult<(Rows<'py>, BTreeMap<String, ReferenceRow>)> {
+) -> PyResult<(Rows<'py>, BTreeMap<String, ReferenceRow<'py>>)> {
     let args =
         contact2d::compare::CompareArgs { scene, meshes, repeat, references, sets, out: PathBuf::new(), time_limit };
     let comparison = py.detach(|| contact2d::compare::compare(&args, &mut |_, _, _| {})).map_err(compare_error)?;
@@ -54,15 +55,29 @@ pub fn compare<'py>(
             d.set_item("max_penetration", r.kkt[0])?;
             d.set_item("max_complementarity", r.kkt[1])?;
             d.set_item("max_cone_violation", r.kkt[2])?;
-            // compare.csv's quantity columns: those with a reference, each value and its error.
-            for q in comparison.references.keys() {
+            // compare.csv's quantity columns: those with a reference, each value and its error
+            // (`error_q`, or on one mesh `difference_q`).
+            for (q, reference) in &comparison.references {
                 d.set_item(q, r.values.get(q).copied())?;
-                d.set_item(format!("error_{q}"), r.errors.get(q).copied())?;
+                d.set_item(contact2d::compare::deviation_column(q, reference), r.errors.get(q).copied())?;
             }
             Ok(d)
         })
         .collect::<PyResult<Vec<_>>>()?;
-    let references = comparison.references.into_iter().map(|(q, r)| (q, (r.values, r.kind))).collect();
+    let references = comparison
+        .references
+        .iter()
+        .map(|(q, r)| {
+            let d = PyDict::new(py);
+            d.set_item("quantity", &r.quantity)?;
+            d.set_item("kind", r.kind.key())?;
+            d.set_item("from", &r.from)?;
+            d.set_item("value", r.value)?;
+            d.set_item("how", &r.how)?;
+            d.set_item("deviation", r.deviation.key())?;
+            Ok((q.clone(), d))
+        })
+        .collect::<PyResult<_>>()?;
     Ok((rows, references))
 }
 

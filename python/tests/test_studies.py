@@ -65,8 +65,15 @@ def test_compare_equals_the_cli_compare_csv() -> None:
         for column in header:
             if column not in TIMES:
                 assert same(got[column].iloc[i], row[column]), (i, column, got[column].iloc[i], row[column])
-    refs = got.attrs["references"]
-    assert refs["contacts.fit.max_pressure"] == {"values": [P_LAME], "kind": "closed form"}
+    refs = got.attrs["reference"]
+    assert refs["contacts.fit.max_pressure"]["value"] == P_LAME
+    assert refs["contacts.fit.max_pressure"]["kind"] == "closed_form"
+    assert refs["contacts.fit.max_pressure"]["deviation"] == "error"
+    # energy has no closed form here: on one mesh it is a difference from the most accurate
+    # method (segment to segment, active set), named as such.
+    assert refs["energy"]["kind"] == "finest" and refs["energy"]["deviation"] == "difference"
+    assert refs["energy"]["from"] == "active_set × segment_to_segment on (scene)"
+    assert "difference_energy" in header
     # Every combination converges to the Lamé pressure within 0.5 % (verify's tolerance).
     converged = got[got.status == "converged"]
     assert len(converged) > 0

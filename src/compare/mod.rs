@@ -15,16 +15,15 @@
 //!             the paper's case: P, l, b (with friction), Phi_E1, Phi_E2, sigma_star, and each
 //!             again as `published:<q>` against the published value; and every path given with
 //!             --reference (dotted keys into the JSON summary)
-//! reference   per quantity, stated in the table:
-//!             closed form   the value given with --reference path=value
-//!             published     Solodovnikov (1998), for the `published:` quantities
-//!             Richardson    three or more meshes: Aitken's Δ² extrapolation of the baseline
-//!                           (the first algorithm × pairing that runs) on the three finest,
-//!                           q∞ = q₃ − (q₃ − q₂)² / ((q₃ − q₂) − (q₂ − q₁)), when the differences
-//!                           shrink monotonically; otherwise the baseline's finest value
-//!             finest mesh   two meshes: the baseline's value on the finest
-//!             same mesh     one mesh: the baseline on the same mesh (the method's error alone)
-//! error       |q − q_ref| / |q_ref|
+//! reference   per quantity, named in every output (`reference.rs`: the order of preference):
+//!             a closed form (--reference path=value), the published value, or from the most
+//!             accurate method that ran on the most accurate level (quadratic before linear,
+//!             then the most nodes; segment-to-segment before node-to-segment, exact
+//!             algorithms before regularised ones) a Richardson extrapolation of its three
+//!             finest levels when the rate is clean (kind `richardson`), else its value there
+//!             (kind `finest`)
+//! error       |q − q_ref| / |q_ref|; on one mesh with a reference from the runs it is the
+//!             relative difference from the reference method, labelled "difference from X"
 //! time limit  --time-limit seconds per combination (all its repeats), checked before each load
 //!             step: a combination past it stops and is listed as `timed_out`
 //! progress    one line per combination, reported through the caller's callback (the CLI
@@ -33,17 +32,28 @@
 //! Every mesh (the `--mesh` levels, or the scene's own) is read before the first combination: a
 //! missing or malformed mesh is an error, not a table of failed rows.
 //!
-//! Writes `compare.csv`, `compare.md` and one work-precision figure per quantity
+//! Writes `compare.json` (the references and the rows), `compare.csv`, `compare_reference.csv`,
+//! `compare.md` (`tables.rs`) and one work-precision figure per quantity
 //! (`compare_<quantity>.png`: error against whole-run time, one line per algorithm × pairing
-//! through its mesh levels).
+//! through its mesh levels, the legend beside the plot).
+
+mod reference;
+mod tables;
+
+pub use reference::{
+    Deviation, Extrapolation, Level, RATE_BAND, RATE_CONSISTENCY, RATIO_CONSISTENCY, Reference, ReferenceKind,
+    richardson,
+};
+pub use tables::{csv, deviation_column, json, markdown, reference_csv, reference_json};
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use contact2d_contact::ContactAlgorithm;
+use contact2d_mesh::CellKind;
 use serde_json::Value;
 
-use crate::output::chart::{Axes, Series, line_chart};
+use crate::output::chart::{Axes, Series, line_chart_legend_beside};
 use crate::output::{OutputDir, OutputError};
 use crate::schema::SceneError;
 
@@ -150,17 +160,9 @@ pub struct CompareRow {
     pub kkt: [f64; 3],
     /// The quantities' values.
     pub values: BTreeMap<String, f64>,
-    /// Their relative errors against the references.
+    /// Their relative errors against the references (on one mesh: relative differences from
+    /// the reference method, [`Deviation::Difference`]).
     pub errors: BTreeMap<String, f64>,
-}
-
-/// A quantity's reference and how it was obtained.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Reference {
-    /// The value (per mesh level for "same mesh").
-    pub values: Vec<f64>,
-    /// "closed form", "Richardson (…)", "finest mesh" or "same mesh".
-    pub kind: String,
 }
 
 /// The outcome of a comparison.
@@ -187,11 +189,13 @@ pub fn run_command(
     let comparison = compare(args, on_row)?;
     let markdown = markdown(&comparison);
     out.write_bytes("compare.md", markdown.as_bytes())?;
+    out.write_bytes("compare.json", json(&comparison).as_bytes())?;
     out.write_bytes("compare.csv", csv(&comparison).as_bytes())?;
-    for quantity in comparison.references.keys() {
+    out.write_bytes("compare_reference.csv", reference_csv(&comparison).as_bytes())?;
+    for (quantity, reference) in &comparison.references {
         let name = format!("compare_{}.png", quantity.replace('.', "_"));
         if has_points(quantity, &comparison.rows) {
-            out.write_with(&name, |path| draw(path, quantity, &comparison.rows))?;
+            out.write_with(&name, |path| draw(path, reference, &comparison.rows))?;
         }
     }
     out.close()?;
@@ -241,18 +245,20 @@ pub fn compare(
     } else {
         args.meshes.iter().map(|m| Some(std::path::absolute(m).unwrap_or_else(|_| m.clone()))).collect()
     };
+    let mut levels = vec![];
     for mesh in &meshes {
         let path = mesh.clone().unwrap_or_else(|| base.mesh_path());
-        check_mesh(&path)?;
+        let (nodes, order) = check_mesh(&path)?;
+        levels.push(Level { mesh: mesh_name(mesh.as_deref()), nodes, order });
     }
     let mut quantities = base.quantities();
     quantities.extend(closed.iter().map(|(p, _)| p.clone()).filter(|p| !quantities.contains(p)).collect::<Vec<_>>());
-    let mut fixed: Vec<(String, f64, String)> =
-        closed.into_iter().map(|(q, v)| (q, v, "closed form".to_string())).collect();
+    let mut fixed: Vec<(String, f64, ReferenceKind, String)> =
+        closed.into_iter().map(|(q, v)| (q, v, ReferenceKind::ClosedForm, "--reference".to_string())).collect();
     for (q, v) in base.published() {
         let name = format!("{PUBLISHED}{q}");
         quantities.push(name.clone());
-        fixed.push((name, v, "published (Solodovnikov 1998)".into()));
+        fixed.push((name, v, ReferenceKind::Published, "Solodovnikov (1998)".into()));
     }
     let pairings = base.pairings();
     let mut rows = vec![];
@@ -267,23 +273,36 @@ pub fn compare(
             }
         }
     }
-    let references = references(&quantities, &fixed, &rows, meshes.len());
+    let references = reference::references(&quantities, &fixed, &rows, &levels);
     for row in &mut rows {
         for (q, r) in &references {
-            let reference = if r.values.len() == 1 { r.values[0] } else { r.values[row.level] };
             if let Some(v) = row.values.get(q) {
-                row.errors.insert(q.clone(), (v - reference).abs() / reference.abs().max(f64::MIN_POSITIVE));
+                row.errors.insert(q.clone(), (v - r.value).abs() / r.value.abs().max(f64::MIN_POSITIVE));
             }
         }
     }
     Ok(Comparison { rows, references })
 }
 
-/// Reads `path` as a mesh (the reader's checks: size, FIFO, syntax).
-fn check_mesh(path: &Path) -> Result<(), CompareError> {
+/// Reads `path` as a mesh (the reader's checks: size, FIFO, syntax); returns its nodes and its
+/// element order (the lowest of its 2D cells': 1 linear, 2 quadratic).
+fn check_mesh(path: &Path) -> Result<(usize, u8), CompareError> {
     let fail = |reason: String| CompareError::Mesh { path: path.to_path_buf(), reason };
     crate::input_file::check_input_file(path, crate::input_file::MAX_MESH_BYTES).map_err(|e| fail(e.reason()))?;
-    contact2d_mesh::read_msh(path).map(drop).map_err(|e| fail(e.to_string()))
+    let mesh = contact2d_mesh::read_msh(path).map_err(|e| fail(e.to_string()))?;
+    let order = mesh
+        .blocks
+        .iter()
+        .filter(|b| b.kind.dim() == 2)
+        .map(|b| if matches!(b.kind, CellKind::Tri3 | CellKind::Quad4) { 1 } else { 2 })
+        .min()
+        .unwrap_or(1);
+    Ok((mesh.points.len(), order))
+}
+
+/// The name of a mesh level in the rows: the file's name, or `(scene)` for the scene's own.
+fn mesh_name(mesh: Option<&Path>) -> String {
+    mesh.map_or_else(|| "(scene)".into(), |m| m.file_name().unwrap_or_default().to_string_lossy().into_owned())
 }
 
 /// One algorithm × pairing × mesh level.
@@ -306,9 +325,7 @@ fn run_one(args: &CompareArgs, base: &Scene, case: &Case, quantities: &[String])
         algorithm: case.algorithm.key(),
         pairing: case.pairing,
         level: case.level,
-        mesh: case
-            .mesh
-            .map_or_else(|| "(scene)".into(), |m| m.file_name().unwrap_or_default().to_string_lossy().into_owned()),
+        mesh: mesh_name(case.mesh),
         status: "skipped".into(),
         reason: None,
         time: f64::NAN,
@@ -374,130 +391,17 @@ fn median(mut v: Vec<f64>) -> f64 {
     v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
 }
 
-/// The reference of each quantity (module docs).
-fn references(
-    quantities: &[String],
-    fixed: &[(String, f64, String)],
-    rows: &[CompareRow],
-    levels: usize,
-) -> BTreeMap<String, Reference> {
-    // The baseline: the first combination that ran at every level.
-    let ran = |r: &CompareRow| r.status != "skipped" && !r.values.is_empty();
-    let baseline: Vec<&CompareRow> =
-        rows.chunks(levels).find(|chunk| chunk.iter().all(ran)).map(|chunk| chunk.iter().collect()).unwrap_or_default();
-    let name = baseline.first().map_or_else(String::new, |r| format!("{} × {}", r.algorithm, r.pairing));
-    let mut out = BTreeMap::new();
-    for q in quantities {
-        if let Some((_, v, kind)) = fixed.iter().find(|(p, _, _)| p == q) {
-            out.insert(q.clone(), Reference { values: vec![*v], kind: kind.clone() });
-            continue;
-        }
-        let values: Vec<f64> = baseline.iter().filter_map(|r| r.values.get(q).copied()).collect();
-        if values.len() != levels || values.is_empty() {
-            continue;
-        }
-        let reference = match levels {
-            1 => Reference { values, kind: format!("same mesh ({name})") },
-            2 => Reference { values: vec![values[1]], kind: format!("finest mesh ({name})") },
-            _ => {
-                let (q1, q2, q3) = (values[levels - 3], values[levels - 2], values[levels - 1]);
-                let (d1, d2) = (q2 - q1, q3 - q2);
-                if d1 != 0.0 && d2 * d1 > 0.0 && d2.abs() < d1.abs() {
-                    Reference {
-                        values: vec![q3 - d2 * d2 / (d2 - d1)],
-                        kind: format!("Richardson (Aitken Δ², {name}, ratio {:.2})", d2 / d1),
-                    }
-                } else {
-                    Reference {
-                        values: vec![q3],
-                        kind: format!("finest mesh ({name}; differences not monotone, no extrapolation)"),
-                    }
-                }
-            }
-        };
-        out.insert(q.clone(), reference);
-    }
-    out
-}
-
-fn markdown(c: &Comparison) -> String {
-    let quantities: Vec<&String> = c.references.keys().collect();
-    let mut s = String::from("References:\n\n| quantity | reference | how |\n|---|---|---|\n");
-    for (q, r) in &c.references {
-        let shown = if r.values.len() == 1 { format!("{:.6e}", r.values[0]) } else { "per mesh".into() };
-        s += &format!("| {q} | {shown} | {} |\n", r.kind);
-    }
-    s += "\n| algorithm | pairing | mesh | pairs | status | time s | solve s | iterations | penetration | complementarity |";
-    for q in &quantities {
-        s += &format!(" error {q} |");
-    }
-    s += "\n|---|---|---|---|---|---|---|---|---|---|";
-    s += &"---|".repeat(quantities.len());
-    s += "\n";
-    for r in &c.rows {
-        if r.status == "skipped" || r.status == "timed_out" {
-            let reason = r.reason.as_deref().unwrap_or("").replace('|', "/");
-            s += &format!("| {} | {} | {} | | {}: {reason} |", r.algorithm, r.pairing, r.mesh, r.status);
-            s += &" |".repeat(5 + quantities.len());
-            s += "\n";
-            continue;
-        }
-        s += &format!(
-            "| {} | {} | {} | {} | {} | {:.3} | {:.3} | {} | {:.1e} | {:.1e} |",
-            r.algorithm, r.pairing, r.mesh, r.pairs, r.status, r.time, r.solve_time, r.iterations, r.kkt[0], r.kkt[1]
-        );
-        for q in &quantities {
-            s += &r.errors.get(*q).map_or(" — |".into(), |e| format!(" {e:.2e} |"));
-        }
-        s += "\n";
-    }
-    s
-}
-
-fn csv(c: &Comparison) -> String {
-    let quantities: Vec<&String> = c.references.keys().collect();
-    let mut s = String::from(
-        "algorithm,pairing,level,mesh,pairs,status,reason,time_s,solve_time_s,iterations,max_penetration,max_complementarity,max_cone_violation",
-    );
-    for q in &quantities {
-        s += &format!(",{q},error_{q}");
-    }
-    s += "\n";
-    let quote = |t: &str| format!("\"{}\"", t.replace('"', "\"\""));
-    for r in &c.rows {
-        s += &format!(
-            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
-            r.algorithm,
-            r.pairing,
-            r.level,
-            quote(&r.mesh),
-            r.pairs,
-            r.status,
-            quote(r.reason.as_deref().unwrap_or("")),
-            r.time,
-            r.solve_time,
-            r.iterations,
-            r.kkt[0],
-            r.kkt[1],
-            r.kkt[2]
-        );
-        for q in &quantities {
-            let v = r.values.get(*q).map_or(String::new(), |v| v.to_string());
-            let e = r.errors.get(*q).map_or(String::new(), |v| v.to_string());
-            s += &format!(",{v},{e}");
-        }
-        s += "\n";
-    }
-    s
-}
-
 /// Whether any row has a point of `quantity` to draw.
 fn has_points(quantity: &str, rows: &[CompareRow]) -> bool {
     rows.iter().any(|r| r.errors.get(quantity).is_some_and(|e| *e > 0.0) && r.time > 0.0)
 }
 
-/// Error against whole-run time, one line per algorithm × pairing through its mesh levels.
-fn draw(path: &Path, quantity: &str, rows: &[CompareRow]) -> Result<(), OutputError> {
+/// Error against whole-run time, one line per algorithm × pairing through its mesh levels (in
+/// level order), the legend beside the plot; on one mesh the vertical axis is the relative
+/// difference from the reference method. A point of zero error (the reference's own row) has
+/// no place on the log axis and is left out.
+pub(crate) fn draw(path: &Path, reference: &Reference, rows: &[CompareRow]) -> Result<(), OutputError> {
+    let quantity = reference.quantity.as_str();
     let mut series: Vec<Series> = vec![];
     for r in rows.iter().filter(|r| r.status != "skipped") {
         let Some(e) = r.errors.get(quantity).copied().filter(|e| *e > 0.0 && r.time > 0.0) else { continue };
@@ -510,20 +414,27 @@ fn draw(path: &Path, quantity: &str, rows: &[CompareRow]) -> Result<(), OutputEr
     if series.is_empty() {
         return Ok(());
     }
+    let y_label = match reference.deviation {
+        Deviation::Error => format!("relative error of {quantity}"),
+        Deviation::Difference => {
+            format!("relative difference from {}", reference.from.split(" on ").next().unwrap_or(&reference.from))
+        }
+    };
     let axes = Axes {
         title: format!("work-precision: {quantity}"),
         x_label: "whole-run wall time (s, median)".into(),
-        y_label: format!("relative error of {quantity}"),
+        y_label,
         log_x: true,
         log_y: true,
     };
-    line_chart(path, &axes, &series)
+    line_chart_legend_beside(path, &axes, &series)
 }
 
 #[cfg(test)]
 #[allow(clippy::unwrap_used)]
 mod tests {
     use super::*;
+    use crate::output::chart::FIGURE_SIZE;
 
     fn row(algorithm: &'static str, level: usize, value: Option<f64>) -> CompareRow {
         CompareRow {
@@ -543,23 +454,96 @@ mod tests {
         }
     }
 
+    /// The (x, y, text, font size, anchor) of every `<text>` and the (cx, cy, r) of every
+    /// `<circle>` of an SVG written by the chart module (attributes in double quotes).
+    #[allow(clippy::type_complexity)]
+    fn svg_items(svg: &str) -> (Vec<(f64, f64, String, f64, String)>, Vec<(f64, f64, f64)>, Vec<[f64; 4]>) {
+        let attr = |tag: &str, name: &str| -> Option<f64> {
+            let start = tag.find(&format!(" {name}=\""))? + name.len() + 3;
+            tag[start..].split('"').next()?.parse().ok()
+        };
+        let (mut texts, mut circles, mut boxes) = (vec![], vec![], vec![]);
+        for piece in svg.split('<').skip(1) {
+            let (tag, rest) = piece.split_once('>').unwrap_or((piece, ""));
+            if tag.starts_with("text ") {
+                let anchor = ["end", "middle"].into_iter().find(|a| tag.contains(&format!("text-anchor=\"{a}\"")));
+                let kind =
+                    format!("{}{}", anchor.unwrap_or("start"), if tag.contains("rotate(") { " rotated" } else { "" });
+                let size = attr(tag, "font-size").unwrap();
+                texts.push((attr(tag, "x").unwrap(), attr(tag, "y").unwrap(), rest.trim().to_string(), size, kind));
+            } else if tag.starts_with("circle ") {
+                circles.push((attr(tag, "cx").unwrap(), attr(tag, "cy").unwrap(), attr(tag, "r").unwrap()));
+            } else if tag.starts_with("rect ") && tag.contains("stroke=\"#000000\"") {
+                let (x, y) = (attr(tag, "x").unwrap(), attr(tag, "y").unwrap());
+                boxes.push([x, y, x + attr(tag, "width").unwrap(), y + attr(tag, "height").unwrap()]);
+            }
+        }
+        (texts, circles, boxes)
+    }
+
     #[test]
-    fn aitken_extrapolation_is_exact_for_geometric_convergence() {
-        // q_n = 2 + 3 · 4^(−n): Aitken's Δ² recovers the limit 2 exactly (to round-off); the
-        // first combination is skipped, so the baseline is the second.
-        let q = |n: i32| 2.0 + 3.0 * 4f64.powi(-n);
-        let mut rows: Vec<CompareRow> = (0..3).map(|l| row("skipped_one", l, None)).collect();
-        rows.extend((0..3).map(|l| row("second", l, Some(q(l as i32 + 1)))));
-        let r = references(&["q".to_string()], &[], &rows, 3);
-        assert!((r["q"].values[0] - 2.0).abs() < 1e-13, "{:?}", r["q"]);
-        assert!(r["q"].kind.starts_with("Richardson") && r["q"].kind.contains("second"));
-        // A closed form takes precedence; differences that do not shrink are not extrapolated.
-        let r = references(&["q".to_string()], &[("q".to_string(), 2.5, "closed form".to_string())], &rows, 3);
-        assert_eq!((r["q"].values[0], r["q"].kind.as_str()), (2.5, "closed form"));
-        let rows: Vec<CompareRow> = [1.0, 2.0, 4.0].iter().enumerate().map(|(l, v)| row("a", l, Some(*v))).collect();
-        let r = references(&["q".to_string()], &[], &rows, 3);
-        assert_eq!(r["q"].values[0], 4.0);
-        assert!(r["q"].kind.contains("not monotone"));
+    fn the_work_precision_figure_keeps_its_texts_on_the_canvas_and_its_legend_off_the_points() {
+        // Every algorithm × pairing of a generic scene on three levels, errors filling
+        // [9.99e-6, 1.2e-3] (the issue's range) against times of 0.05 s to 60 s.
+        let mut rows = vec![];
+        for (a, algorithm) in ContactAlgorithm::ALL.iter().enumerate() {
+            for (p, pairing) in ["node_to_segment", "node_to_node", "segment_to_segment"].into_iter().enumerate() {
+                for level in 0..3 {
+                    let k = (3 * a + p) as f64;
+                    let mut r = row(algorithm.key(), level, Some(1.0));
+                    r.pairing = pairing;
+                    r.time = 0.05 * 4f64.powi(level as i32) * (1.0 + k / 3.0);
+                    r.errors.insert(
+                        "q".into(),
+                        1.2e-3 * 0.3f64.powi(level as i32) / (1.0 + k) + 9.99e-6 * (k - 14.0).abs().min(1.0),
+                    );
+                    rows.push(r);
+                }
+            }
+        }
+        let reference = Reference {
+            quantity: "q".into(),
+            kind: ReferenceKind::Richardson,
+            from: "active_set × segment_to_segment on L0, L1, L2".into(),
+            value: 1.0,
+            how: String::new(),
+            deviation: Deviation::Error,
+        };
+        let dir = std::env::temp_dir().join(format!("contact2d_compare_figure_{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("wp.svg");
+        draw(&path, &reference, &rows).unwrap();
+        let svg = std::fs::read_to_string(&path).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        let (texts, circles, boxes) = svg_items(&svg);
+        let (w, h) = (f64::from(FIGURE_SIZE.0), f64::from(FIGURE_SIZE.1));
+        // Every text on the canvas: its anchor point, and its extent along its line by an upper
+        // bound of DejaVu Sans' advance (under 0.62 em a character for these labels).
+        for (x, y, text, size, kind) in &texts {
+            let width = 0.62 * size * text.chars().count() as f64;
+            let (lo, hi) = match kind.split(' ').next().unwrap() {
+                "end" => (x - width, *x),
+                "middle" => (x - width / 2.0, x + width / 2.0),
+                _ => (*x, x + width),
+            };
+            let (along, length) = if kind.ends_with("rotated") { (*y, h) } else { (*x, w) };
+            let (lo, hi) = (lo - x + along, hi - x + along);
+            assert!((0.0..=w).contains(x) && (0.0..=h).contains(y), "{text:?} at ({x}, {y})");
+            assert!(lo >= 0.0 && hi <= length, "{text:?} spans [{lo}, {hi}] of {length}");
+        }
+        // Round tick labels only (no "9999999998e-5").
+        assert!(texts.iter().all(|t| !t.2.contains("9999") && !t.2.contains("0000")), "{texts:?}");
+        // One legend box (the only framed rectangle right of the plot); its sample markers sit
+        // in it, every data marker (15 lines × 3 levels) outside it.
+        let legend = *boxes.iter().max_by(|a, b| a[0].total_cmp(&b[0])).unwrap();
+        let inside = |c: &&(f64, f64, f64)| {
+            c.0 + c.2 >= legend[0] && c.0 - c.2 <= legend[2] && c.1 + c.2 >= legend[1] && c.1 - c.2 <= legend[3]
+        };
+        let (in_legend, data): (Vec<&(f64, f64, f64)>, Vec<_>) = circles.iter().partition(inside);
+        assert_eq!((data.len(), in_legend.len()), (45, 15), "legend {legend:?}: {circles:?}");
+        assert!(in_legend.iter().all(|c| c.0 > legend[0] && c.0 < legend[2]));
+        // The legend names each algorithm × pairing once; each is one line through its levels.
+        assert!(texts.iter().filter(|t| t.2 == "augmented_lagrangian × segment_to_segment").count() == 1);
     }
 
     #[test]

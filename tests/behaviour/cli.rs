@@ -158,9 +158,11 @@ fn compare_runs_every_algorithm_and_pairing_and_says_why_it_skips() {
     assert!(rows.iter().any(|r| r.starts_with("| boussinesq | node_to_segment") && r.contains("proportional")));
     assert!(rows.iter().filter(|r| r.contains("| node_to_node |")).all(|r| r.contains("skipped")));
     assert!(rows.iter().any(|r| r.starts_with("| augmented_lagrangian | node_to_segment") && r.contains("converged")));
-    for file in ["compare.csv", "compare.md", "compare_energy.png"] {
+    for file in ["compare.csv", "compare.json", "compare_reference.csv", "compare.md", "compare_energy.png"] {
         assert!(out.join(file).is_file(), "{file} missing");
     }
+    // One mesh: the reference is named and the columns are differences from it, not errors.
+    assert!(stdout.contains("energy: difference from active_set × segment_to_segment"), "{stdout}");
     std::fs::remove_dir_all(&out).ok();
 }
 

@@ -11,6 +11,7 @@ mod bad_inputs;
 mod clarabel_agrees;
 mod cli;
 mod closed_interfaces;
+mod compare_reference;
 mod contact_sides;
 mod corner_contacts;
 mod corners_and_quadratic_edges;
