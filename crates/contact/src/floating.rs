@@ -354,6 +354,10 @@ const FAR_IMBALANCE: f64 = 1e-3;
 /// The fraction of a step's load increment at which a piece free at the step's start lands.
 const LANDING_FRACTION: f64 = 1e-3;
 
+/// Halvings of the Newton step on the engaged piece's Jacobian (`balance_pins`), down to
+/// 2⁻²⁰ ≈ 1e-6 of the step.
+const ENGAGED_HALVINGS: usize = 20;
+
 /// The Newton iteration of the module docs at pattern factors `factors`: `α` such that the pins
 /// carry no force, from `start`. The pairs open at `start` measure their slip from where the
 /// rigid travel of each landing brings them: `s_ref = s_start + B_T R (α_landing − α_start)`.
@@ -431,6 +435,7 @@ fn balance_pins(
         // one-sided derivative that matters at a pair that has just landed (gap 0, no force).
         let force = modes.modal_force(&s);
         let mut jacobian = DMatrix::<f64>::zeros(s.len(), modes.len());
+        let mut sides = vec![];
         for j in 0..modes.len() {
             let hj = if force[j] < 0.0 { -h } else { h };
             let mut shifted = alpha.clone();
@@ -439,8 +444,9 @@ fn balance_pins(
             for (i, (a, b)) in sj.iter().zip(&s).enumerate() {
                 jacobian[(i, j)] = (a - b) / hj;
             }
+            sides.push(hj);
         }
-        let svd = jacobian.svd(true, true);
+        let svd = jacobian.clone().svd(true, true);
         let (Some(u), Some(v_t)) = (svd.u.as_ref(), svd.v_t.as_ref()) else {
             solution.status = ContactStatus::Numerical;
             return Ok(finish(solution, iterations, &s, engaged_from));
@@ -501,6 +507,48 @@ fn balance_pins(
             }
             fraction *= 0.5;
         }
+        // A Newton direction that no step along lowers ‖s‖₁ was taken on a Jacobian whose
+        // one-sided differences straddle a kink: a pair that has just landed (gap 0, no force)
+        // seen closed in one column and open in another, so that J mixes two linear pieces of
+        // `s` and is near singular along the landing (measured: a block on its corner pair after
+        // landing on the next one, a Newton step of 2.4 of the model's size along the landing
+        // direction, every backtracked step worse). The engaged piece's Jacobian instead: each
+        // column the stiffer of the two one-sided differences (a pair closing on one side adds
+        // its stiffness there), and Newton again from it, backtracked further.
+        if !improved && residual > 1e-8 * scale {
+            let mut stiffer = jacobian.clone();
+            for (j, hj) in sides.iter().enumerate() {
+                let mut shifted = alpha.clone();
+                shifted[j] -= hj;
+                let (_, sj) = evaluate(loaded, interface, &shifted, &start, Some(&guess), false)?;
+                let other: Vec<f64> = sj.iter().zip(&s).map(|(a, b)| (a - b) / -hj).collect();
+                let norm = |c: &[f64]| c.iter().map(|v| v * v).sum::<f64>();
+                let current: Vec<f64> = stiffer.column(j).iter().copied().collect();
+                if norm(&other) > norm(&current) {
+                    other.iter().enumerate().for_each(|(i, v)| stiffer[(i, j)] = *v);
+                }
+            }
+            let svd = stiffer.svd(true, true);
+            if let (Some(u), Some(v_t)) = (svd.u.as_ref(), svd.v_t.as_ref()) {
+                let mut delta = DVector::<f64>::zeros(modes.len());
+                for (k, sigma) in svd.singular_values.iter().enumerate() {
+                    if engaged(*sigma) {
+                        delta -= v_t.row(k).transpose() * (u.column(k).dot(&s_vec) / sigma);
+                    }
+                }
+                let mut fraction = 1.0;
+                for _ in 0..ENGAGED_HALVINGS {
+                    let trial: Vec<f64> = alpha.iter().zip(delta.iter()).map(|(a, d)| a + fraction * d).collect();
+                    let (trial_solution, trial_s) = evaluate(loaded, interface, &trial, &start, Some(&guess), far)?;
+                    if norm1(&trial_s) < residual {
+                        improved = true;
+                        best = Some((trial, trial_solution, trial_s));
+                        break;
+                    }
+                    fraction *= 0.5;
+                }
+            }
+        }
         // No step of Newton's direction lowers a residual already at 1e-8 of the force scale:
         // it is the solve's round-off (a condensed solve is accurate to about 1e-12 of the
         // displacements, and the pins' forces are k times them), and the answer stands.
@@ -552,10 +600,10 @@ fn landing_distance(
     let zeros = vec![0.0; problem.system.dofs.num_constrained()];
     let scale = rigid.iter().fold(0.0f64, |a, v| a.max(v.abs()));
     let mut best: Option<f64> = None;
-    for (row, gap) in problem.normal_rows.iter().zip(&solution.gap) {
+    for ((row, gap), lambda) in problem.normal_rows.iter().zip(&solution.gap).zip(&solution.normal_force) {
         let closing = -row.dot(&rigid, &zeros);
         // A row that does not see the travel (to round-off of the unit motion) cannot stop it.
-        if closing > 1e-9 * scale {
+        if *lambda == 0.0 && closing > 1e-9 * scale {
             let t = gap.max(0.0) / closing;
             best = Some(best.map_or(t, |b: f64| b.min(t)));
         }
