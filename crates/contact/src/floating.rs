@@ -15,11 +15,14 @@
 //! a finite-difference Jacobian `J = ∂s/∂α` ends in a few steps:
 //!
 //! ```text
-//! range of J:      α ← α − J⁺ s                      (backtracked on ‖s‖₁)
+//! range of J:      α ← α − J⁺ s                      (backtracked on ‖s‖₁; where no halving
+//!                  lowers it, again from J with each column the stiffer of its two one-sided
+//!                  differences: the engaged piece at a pair that has just landed)
 //! null space of J: the pieces move freely there (no contact engages): the unbalanced modal
 //!                  force F = Rᵀ s, projected on the null space, gives the direction d of travel,
-//!                  and the landing α ← α + t d with t = min_i gap_i / (−B_N R d)_i closes the
-//!                  first pair exactly; no pair ahead → the body is not held (an error)
+//!                  and the landing α ← α + t d with t = min_i gap_i / (−B_N R d)_i over the
+//!                  open pairs (λ_i = 0) closes the first of them exactly; no pair ahead → the
+//!                  body is not held (an error)
 //! ```
 //!
 //! Any load lands in one step, however small, whatever the mesh; at zero load a body stays
@@ -354,6 +357,10 @@ const FAR_IMBALANCE: f64 = 1e-3;
 /// The fraction of a step's load increment at which a piece free at the step's start lands.
 const LANDING_FRACTION: f64 = 1e-3;
 
+/// Halvings of the Newton step on the engaged piece's Jacobian (`balance_pins`), down to
+/// 2⁻²⁰ ≈ 1e-6 of the step.
+const ENGAGED_HALVINGS: usize = 20;
+
 /// The Newton iteration of the module docs at pattern factors `factors`: `α` such that the pins
 /// carry no force, from `start`. The pairs open at `start` measure their slip from where the
 /// rigid travel of each landing brings them: `s_ref = s_start + B_T R (α_landing − α_start)`.
@@ -431,6 +438,7 @@ fn balance_pins(
         // one-sided derivative that matters at a pair that has just landed (gap 0, no force).
         let force = modes.modal_force(&s);
         let mut jacobian = DMatrix::<f64>::zeros(s.len(), modes.len());
+        let mut sides = vec![];
         for j in 0..modes.len() {
             let hj = if force[j] < 0.0 { -h } else { h };
             let mut shifted = alpha.clone();
@@ -439,8 +447,9 @@ fn balance_pins(
             for (i, (a, b)) in sj.iter().zip(&s).enumerate() {
                 jacobian[(i, j)] = (a - b) / hj;
             }
+            sides.push(hj);
         }
-        let svd = jacobian.svd(true, true);
+        let svd = jacobian.clone().svd(true, true);
         let (Some(u), Some(v_t)) = (svd.u.as_ref(), svd.v_t.as_ref()) else {
             solution.status = ContactStatus::Numerical;
             return Ok(finish(solution, iterations, &s, engaged_from));
@@ -455,9 +464,13 @@ fn balance_pins(
                 travel += &v * v.dot(&force);
             }
         }
-        if travel.norm() > allowed {
-            let direction = travel.normalize();
-            if let Some(t) = landing_distance(loaded, modes, &solution, direction.as_slice()) {
+        let direction = travel.normalize();
+        let landing =
+            (travel.norm() > allowed).then(|| landing_distance(loaded, modes, &solution, direction.as_slice()));
+        // An open pair touching ahead (t = 0) is no travel: J did not see it closing (its
+        // one-sided differences went the other way), and Newton's engaged Jacobian below does.
+        if travel.norm() > allowed && landing != Some(Some(0.0)) {
+            if let Some(Some(t)) = landing {
                 let t = t * (1.0 + 1e-6);
                 alpha.iter_mut().zip(direction.iter()).for_each(|(a, d)| *a += t * d);
                 anchor_open_pairs(loaded, modes, &open_at_start, step_start, &alpha_start, alpha, &mut start);
@@ -501,6 +514,48 @@ fn balance_pins(
             }
             fraction *= 0.5;
         }
+        // A Newton direction that no step along lowers ‖s‖₁ was taken on a Jacobian whose
+        // one-sided differences straddle a kink: a pair that has just landed (gap 0, no force)
+        // seen closed in one column and open in another, so that J mixes two linear pieces of
+        // `s` and is near singular along the landing (measured: a block on its corner pair after
+        // landing on the next one, a Newton step of 2.4 of the model's size along the landing
+        // direction, every backtracked step worse). The engaged piece's Jacobian instead: each
+        // column the stiffer of the two one-sided differences (a pair closing on one side adds
+        // its stiffness there), and Newton again from it, backtracked further.
+        if !improved && residual > 1e-8 * scale {
+            let mut stiffer = jacobian.clone();
+            for (j, hj) in sides.iter().enumerate() {
+                let mut shifted = alpha.clone();
+                shifted[j] -= hj;
+                let (_, sj) = evaluate(loaded, interface, &shifted, &start, Some(&guess), false)?;
+                let other: Vec<f64> = sj.iter().zip(&s).map(|(a, b)| (a - b) / -hj).collect();
+                let norm = |c: &[f64]| c.iter().map(|v| v * v).sum::<f64>();
+                let current: Vec<f64> = stiffer.column(j).iter().copied().collect();
+                if norm(&other) > norm(&current) {
+                    other.iter().enumerate().for_each(|(i, v)| stiffer[(i, j)] = *v);
+                }
+            }
+            let svd = stiffer.svd(true, true);
+            if let (Some(u), Some(v_t)) = (svd.u.as_ref(), svd.v_t.as_ref()) {
+                let mut delta = DVector::<f64>::zeros(modes.len());
+                for (k, sigma) in svd.singular_values.iter().enumerate() {
+                    if engaged(*sigma) {
+                        delta -= v_t.row(k).transpose() * (u.column(k).dot(&s_vec) / sigma);
+                    }
+                }
+                let mut fraction = 1.0;
+                for _ in 0..ENGAGED_HALVINGS {
+                    let trial: Vec<f64> = alpha.iter().zip(delta.iter()).map(|(a, d)| a + fraction * d).collect();
+                    let (trial_solution, trial_s) = evaluate(loaded, interface, &trial, &start, Some(&guess), far)?;
+                    if norm1(&trial_s) < residual {
+                        improved = true;
+                        best = Some((trial, trial_solution, trial_s));
+                        break;
+                    }
+                    fraction *= 0.5;
+                }
+            }
+        }
         // No step of Newton's direction lowers a residual already at 1e-8 of the force scale:
         // it is the solve's round-off (a condensed solve is accurate to about 1e-12 of the
         // displacements, and the pins' forces are k times them), and the answer stands.
@@ -540,8 +595,11 @@ fn length_scale(problem: &ContactProblem) -> f64 {
 }
 
 /// How far the pieces travel rigidly along `direction` (in `α`) until the first open pair
-/// closes: `min gap_i / c_i` over the pairs that close, `c_i = −B_N,i R d`; `None` when no pair
-/// lies ahead.
+/// closes: `min gap_i / c_i` over the open pairs (no normal force) that close,
+/// `c_i = −B_N,i R d`; `None` when no pair lies ahead. A closed pair is not ahead: `d` lies in
+/// the null space of `J`, which its stiffness is in, so its closing rate is round-off (measured
+/// 7e-9 on a gap of −3e-17 for a block turning about its corner pair), and taking it would end
+/// the travel at `t = 0` over and over.
 fn landing_distance(
     problem: &ContactProblem,
     modes: &RigidModes,
@@ -552,10 +610,10 @@ fn landing_distance(
     let zeros = vec![0.0; problem.system.dofs.num_constrained()];
     let scale = rigid.iter().fold(0.0f64, |a, v| a.max(v.abs()));
     let mut best: Option<f64> = None;
-    for (row, gap) in problem.normal_rows.iter().zip(&solution.gap) {
+    for ((row, gap), lambda) in problem.normal_rows.iter().zip(&solution.gap).zip(&solution.normal_force) {
         let closing = -row.dot(&rigid, &zeros);
         // A row that does not see the travel (to round-off of the unit motion) cannot stop it.
-        if closing > 1e-9 * scale {
+        if *lambda == 0.0 && closing > 1e-9 * scale {
             let t = gap.max(0.0) / closing;
             best = Some(best.map_or(t, |b: f64| b.min(t)));
         }
