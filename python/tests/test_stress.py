@@ -30,7 +30,14 @@ def cli_vtu_stress(scene: Path) -> np.ndarray:
         return meshio.read(last).point_data["stress"]
 
 
-@pytest.mark.parametrize("scene", ["scenes/generic/pin_lug.toml", "scenes/plate_insert_nogap_mu03.toml"])
+@pytest.mark.parametrize(
+    "scene",
+    [
+        "scenes/generic/pin_lug.toml",
+        "scenes/plate_insert_nogap_mu03.toml",
+        "scenes/generic/shrink_fit_axisymmetric.toml",
+    ],
+)
 def test_stress_equals_the_cli_vtu(scene: str) -> None:
     path = ROOT / scene
     result = contact2d.solve(contact2d.Scene.load(path))
@@ -59,6 +66,31 @@ def test_interference_fit_disk_stress_is_minus_p() -> None:
     assert disk.sum() > 10
     assert np.allclose(stress[disk, :2], -p, rtol=5e-3, atol=0)
     assert (stress[:, 3][~np.isnan(stress[:, 3])] == 0.0).all()  # plane stress: σ33 = 0
+
+
+def test_a_body_of_revolution_from_a_dict_gives_lames_shrink_fit() -> None:
+    # The axisymmetric shrink fit posed from a dict with the scene file's keys (kinematics =
+    # "axisymmetric"): the CLI's summary, and Lamé's closed forms (plane strain along the axis,
+    # the ends held): p = E δ / (b (1 + ν) [((1 − 2ν) b² + c²)/(c² − b²) + (1 − 2ν)]), the hub's
+    # bore σθθ = p (c² + b²)/(c² − b²), the shaft's σ_rr = σθθ = −p, within 0.5 % (the
+    # verification gallery's tolerance for this mesh; docs/verification.md).
+    import tomllib
+
+    path = ROOT / "scenes" / "generic" / "shrink_fit_axisymmetric.toml"
+    scene = contact2d.Scene.from_dict(tomllib.loads(path.read_text()), base_dir=path.parent)
+    result = contact2d.solve(scene)
+    drop = lambda s: {k: v for k, v in s.items() if k != "time_s"}  # noqa: E731
+    assert drop(result.json) == drop(cli_json(path))
+    assert result.json["kinematics"] == "axisymmetric"
+    e, nu, delta, b, c = 2e5, 0.3, 0.01, 10.0, 20.0
+    p = e * delta / (b * (1 + nu) * (((1 - 2 * nu) * b * b + c * c) / (c * c - b * b) + (1 - 2 * nu)))
+    stress = result.stress()
+    points = result.mesh.points
+    shaft = points[:, 0] < b - 1e-9
+    assert np.allclose(stress[shaft][:, [0, 3]], -p, rtol=5e-3, atol=0)
+    bore = np.isclose(points[:, 0], b) & ~np.isnan(stress[:, 3]) & (stress[:, 3] > 0)
+    assert bore.sum() > 5
+    assert np.allclose(stress[bore, 3], p * (c * c + b * b) / (c * c - b * b), rtol=5e-3, atol=0)
 
 
 @pytest.mark.parametrize("threads", [1, 2])

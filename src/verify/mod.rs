@@ -27,6 +27,7 @@ pub mod pin_lug;
 pub mod press_fit;
 mod profile;
 pub mod report;
+pub mod shrink_fit_axisymmetric;
 pub mod sliding_patch;
 
 use std::path::{Path, PathBuf};
@@ -157,13 +158,14 @@ pub enum VerifyError {
 }
 
 /// The names of the gallery's cases, in the order they run.
-pub const CASES: [&str; 13] = [
+pub const CASES: [&str; 14] = [
     "contact_patch",
     "hertz",
     "cattaneo_mindlin",
     "mindlin_deresiewicz",
     "hills_nowell",
     "interference_fit",
+    "shrink_fit_axisymmetric",
     "incline",
     "pin_lug",
     "flagship",
@@ -185,6 +187,7 @@ pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, Ver
         "mindlin_deresiewicz" => mindlin_deresiewicz::run(root, level),
         "hills_nowell" => hills_nowell::run(root, level),
         "interference_fit" => interference_fit::run(root, level),
+        "shrink_fit_axisymmetric" => shrink_fit_axisymmetric::run(root, level),
         "incline" => incline::run(root, level),
         "pin_lug" => pin_lug::run(root, level),
         "flagship" => flagship::run(root, level),
@@ -207,7 +210,8 @@ pub struct VerifyArgs {
     #[cfg_attr(feature = "cli", arg(long, default_value = "fast", value_parser = ["fast", "full"]))]
     pub level: String,
     /// Cases to run, comma separated (default: all of contact_patch, hertz, cattaneo_mindlin,
-    /// mindlin_deresiewicz, hills_nowell, interference_fit, incline, pin_lug, flagship, sliding_patch,
+    /// mindlin_deresiewicz, hills_nowell, interference_fit, shrink_fit_axisymmetric, incline, pin_lug,
+    /// flagship, sliding_patch,
     /// press_fit, moving_roller, clamped_block).
     #[cfg_attr(feature = "cli", arg(long, value_delimiter = ','))]
     pub cases: Vec<String>,
