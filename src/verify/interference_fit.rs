@@ -15,7 +15,7 @@ use std::path::Path;
 
 use contact2d_fem::{StressRecovery, nodal_stresses};
 
-use super::{CaseReport, Check, Level, Tolerance, VerifyError, gallery_scene, scene_path};
+use super::{CaseReport, Check, Level, VerifyError, gallery_scene, scene_path};
 use crate::generic::solve_generic;
 
 const SCENE: &str = "scenes/generic/interference_fit.toml";
@@ -49,20 +49,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
         })
         .collect();
     let disk_normal: Vec<f64> = disk.iter().flatten().flat_map(|s| [-s[0], -s[1]]).collect();
-    let worst = |values: &[f64], reference: f64| {
-        values
-            .iter()
-            .copied()
-            .max_by(|x, y| (x - reference).abs().total_cmp(&(y - reference).abs()))
-            .unwrap_or(f64::NAN)
-    };
-    let check = |q: &str, values: &[f64], reference: f64| Check {
-        quantity: q.into(),
-        mesh: "bundled".into(),
-        measured: worst(values, reference),
-        reference,
-        tolerance: Tolerance::Relative(0.005),
-    };
+    let check = |q: &str, values: &[f64], reference: f64| Check::worst_of(q, values, reference, 0.005);
     Ok(CaseReport {
         name: "interference_fit".into(),
         source: "Lamé thick-walled cylinders (Timoshenko & Goodier §30)".into(),

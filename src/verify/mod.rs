@@ -70,6 +70,23 @@ pub struct Check {
 }
 
 impl Check {
+    /// The check of the value among `values` farthest from `reference` (NaN when there is none,
+    /// which fails), on the bundled mesh, within `relative` of the reference.
+    pub fn worst_of(quantity: &str, values: &[f64], reference: f64, relative: f64) -> Check {
+        let measured = values
+            .iter()
+            .copied()
+            .max_by(|x, y| (x - reference).abs().total_cmp(&(y - reference).abs()))
+            .unwrap_or(f64::NAN);
+        Check {
+            quantity: quantity.into(),
+            mesh: "bundled".into(),
+            measured,
+            reference,
+            tolerance: Tolerance::Relative(relative),
+        }
+    }
+
     /// The deviation in the tolerance's own measure (relative or absolute).
     pub fn error(&self) -> f64 {
         let d = (self.measured - self.reference).abs();

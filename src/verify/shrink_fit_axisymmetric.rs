@@ -17,7 +17,7 @@ use std::path::Path;
 
 use contact2d_fem::{StressRecovery, nodal_stress_states};
 
-use super::{CaseReport, Check, Level, Tolerance, VerifyError, gallery_scene, scene_path};
+use super::{CaseReport, Check, Level, VerifyError, gallery_scene, scene_path};
 use crate::generic::solve_generic;
 
 const SCENE: &str = "scenes/generic/shrink_fit_axisymmetric.toml";
@@ -44,20 +44,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
     let bore = model.mesh.group_nodes("hub_bore").map_err(|e| missing(e.to_string()))?;
     let hoops: Vec<f64> = bore.iter().filter_map(|n| hub[n.0].map(|s| s[3])).collect();
     let shaft_normal: Vec<f64> = shaft.iter().flatten().flat_map(|s| [-s[0], -s[3]]).collect();
-    let worst = |values: &[f64], reference: f64| {
-        values
-            .iter()
-            .copied()
-            .max_by(|x, y| (x - reference).abs().total_cmp(&(y - reference).abs()))
-            .unwrap_or(f64::NAN)
-    };
-    let check = |q: &str, values: &[f64], reference: f64| Check {
-        quantity: q.into(),
-        mesh: "bundled".into(),
-        measured: worst(values, reference),
-        reference,
-        tolerance: Tolerance::Relative(0.005),
-    };
+    let check = |q: &str, values: &[f64], reference: f64| Check::worst_of(q, values, reference, 0.005);
     Ok(CaseReport {
         name: "shrink_fit_axisymmetric".into(),
         source: "Lamé thick-walled cylinders, shrink fits (Timoshenko & Goodier §28–§30)".into(),
