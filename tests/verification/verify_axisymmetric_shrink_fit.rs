@@ -55,3 +55,39 @@ fn the_shrink_fit_carries_lames_pressure_over_the_whole_circumference() {
         }
     }
 }
+
+/// `tests/scenes/shrink_fit_axisymmetric_pull.toml`: the shaft held only by the fit (μ = 0.3),
+/// whose one free rigid motion as a body of revolution is the axial translation, pulled by a total
+/// axial force F = 0, 5 000, 10 000, 15 000. Statics and Coulomb: the fit carries the pull exactly
+/// (Σ τ = F, 1e-9 relative: the floating body's equilibrium is solved to round-off) while F < μN,
+/// and where F > μN the run ends `not_held` at that step, its available force being μN of that
+/// state (1e-9) and its ratio F / (μN) (1e-6: the demanded force is the pull as the statics LP
+/// returns it, to its tolerance).
+#[test]
+fn a_shaft_held_only_by_the_fit_holds_below_mu_n_and_is_not_held_above() {
+    let mu = 0.3;
+    let sets: Vec<String> = vec![];
+    let scene = load_scene(Path::new("tests/scenes/shrink_fit_axisymmetric_pull.toml"), &sets).unwrap();
+    let r = solve_generic(&scene, &mut |_, _| {}).unwrap().report;
+    assert_eq!(r.status, "not_held", "{:?}", r.failed_check);
+    let pulls = [0.0, 5000.0, 10000.0, 15000.0];
+    for (row, pull) in r.steps.iter().zip(pulls) {
+        let fit = &row.contacts["fit"];
+        if pull < mu * fit.normal_force {
+            assert_eq!(row.status, "converged", "pull {pull}");
+            assert!(
+                (fit.tangential_force - pull).abs() <= 1e-9 * pull.max(1.0),
+                "pull {pull}: Σ τ {}",
+                fit.tangential_force
+            );
+        } else {
+            assert_eq!(row.status, "not_held", "pull {pull}");
+        }
+    }
+    let not_held = r.not_held.as_ref().unwrap();
+    assert_eq!(not_held.step, 4);
+    let fit = &r.steps[3].contacts["fit"];
+    assert!((not_held.available - mu * fit.normal_force).abs() <= 1e-9 * not_held.available);
+    let ratio = pulls[3] / (mu * fit.normal_force);
+    assert!((not_held.ratio - ratio).abs() <= 1e-6 * ratio, "ratio {} against F/(μN) {ratio}", not_held.ratio);
+}

@@ -516,7 +516,7 @@ impl ProblemDescription {
             let mine = || self.loads.iter().filter(|l| l.pattern == *name);
             let loads: Vec<EdgeLoad> = mine()
                 .filter(|l| !matches!(l.kind, EdgeLoadKind::BodyForce(_)))
-                .map(|l| edge_load(&model.mesh, l))
+                .map(|l| edge_load(&model.mesh, l, &model.pairing_kinematics()))
                 .collect::<Result<_, _>>()?;
             let body_forces: Vec<(String, [f64; 2])> = mine()
                 .filter_map(|l| match l.kind {
@@ -567,8 +567,10 @@ pub fn pattern_order<'a>(used: impl Iterator<Item = &'a str>) -> Vec<String> {
     names
 }
 
-/// The fem edge load of a description (a total force becomes a uniform traction).
-fn edge_load(mesh: &Mesh, load: &LoadDescription) -> Result<EdgeLoad, ContactError> {
+/// The fem edge load of a description (a total force becomes a uniform traction: `F / L` per unit
+/// thickness in the plane, `F / A` over the group's ring area `A = ∫ 2πr ds` for a body of
+/// revolution, whose forces are totals over the circumference).
+fn edge_load(mesh: &Mesh, load: &LoadDescription, kinematics: &Kinematics) -> Result<EdgeLoad, ContactError> {
     let group = load.group.clone();
     let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
     let bad = || ContactError::InvalidInput(format!("load on \"{}\" is not finite", load.group));
@@ -577,10 +579,14 @@ fn edge_load(mesh: &Mesh, load: &LoadDescription) -> Result<EdgeLoad, ContactErr
             if !finite(&f) {
                 return Err(bad());
             }
-            let length = group_length(mesh, &load.group)?;
+            let length = if kinematics.thickness().is_some() {
+                group_length(mesh, &load.group)?
+            } else {
+                group_area(mesh, &load.group, kinematics)?
+            };
             if length.is_nan() || length <= 0.0 {
                 return Err(ContactError::InvalidInput(format!(
-                    "force on \"{}\": the group has no length",
+                    "force on \"{}\": the group has no length (or, on a body of revolution, lies on the axis)",
                     load.group
                 )));
             }
@@ -621,6 +627,40 @@ pub fn group_length(mesh: &Mesh, group: &str) -> Result<f64, ContactError> {
         }
     }
     Ok(length)
+}
+
+/// The surface of revolution a 1D group sweeps, `∫ m ds` with `m` the kinematics'
+/// [`Kinematics::pairing_measure`] (`2πr`), by 5-point Gauss on each line cell.
+///
+/// # Errors
+/// An unknown group, or one that is not 1D.
+pub fn group_area(mesh: &Mesh, group: &str, kinematics: &Kinematics) -> Result<f64, ContactError> {
+    if mesh.group(group)?.dim != 1 {
+        return Err(ContactError::InvalidInput(format!("\"{group}\" is not a 1D group (a curve)")));
+    }
+    let mut area = 0.0;
+    for block in mesh.blocks_in_group(group)? {
+        for cell in block.cells() {
+            let p: Vec<[f64; 2]> = cell.iter().map(|n| mesh.points[n.0]).collect();
+            for (xi, w) in contact2d_mesh::GAUSS5 {
+                // Line2: N = ((1 − ξ)/2, (1 + ξ)/2); Line3 (start, end, mid): (ξ(ξ−1)/2, ξ(ξ+1)/2, 1 − ξ²).
+                let (n, dn): (Vec<f64>, Vec<f64>) = match (block.kind, p.len()) {
+                    (contact2d_mesh::CellKind::Line3, 3..) => (
+                        vec![0.5 * xi * (xi - 1.0), 0.5 * xi * (xi + 1.0), 1.0 - xi * xi],
+                        vec![xi - 0.5, xi + 0.5, -2.0 * xi],
+                    ),
+                    (contact2d_mesh::CellKind::Line2, 2..) => {
+                        (vec![0.5 * (1.0 - xi), 0.5 * (1.0 + xi)], vec![-0.5, 0.5])
+                    }
+                    _ => continue,
+                };
+                let at = |d: &[f64], k: usize| d.iter().zip(&p).map(|(s, q)| s * q[k]).sum::<f64>();
+                let ds = at(&dn, 0).hypot(at(&dn, 1));
+                area += w * ds * kinematics.pairing_measure([at(&n, 0), at(&n, 1)]);
+            }
+        }
+    }
+    Ok(area)
 }
 
 /// The 2D physical group whose cells hold every node of the curve `group` (the body or
