@@ -278,15 +278,14 @@ impl Model {
     }
 
     /// The nodes on the axis `r = x = 0` of the bodies of revolution (none in a plane model), in
-    /// node order. "On the axis" is `|x| ≤ 1e-12 L`, `L` the mesh's extent: a mesh generator
-    /// writes the axis as exact zeros, and an offset at the round-off of the coordinates is
-    /// still the axis.
+    /// node order. "On the axis" is `|x| ≤ 1e-12 L` ([`AXIS_TOLERANCE`]), `L` the mesh's extent: a
+    /// mesh generator writes the axis as zeros or at the round-off of its coordinates.
     pub fn axis_nodes(&self) -> Vec<NodeId> {
         let mut on_axis = vec![false; self.mesh.num_nodes()];
         let extent = self.mesh.points.iter().fold(0.0f64, |a, p| a.max(p[0].abs()).max(p[1].abs()));
         for body in self.bodies.iter().filter(|b| b.kinematics.has_hoop_strain()) {
             for n in &body.nodes {
-                on_axis[n.0] |= self.mesh.points[n.0][0].abs() <= 1e-12 * extent;
+                on_axis[n.0] |= self.mesh.points[n.0][0].abs() <= AXIS_TOLERANCE * extent;
             }
         }
         (0..on_axis.len()).filter(|&n| on_axis[n]).map(NodeId).collect()
@@ -569,6 +568,10 @@ type Condition = ([f64; 2], f64, String, bool);
 /// Below this `|a × b|` two unit directions are one (1e-8 rad).
 const PARALLEL: f64 = 1e-8;
 
+/// Nodes of a body of revolution within this fraction of the mesh's extent of `x = 0` are on
+/// the axis ([`Model::axis_nodes`]).
+pub const AXIS_TOLERANCE: f64 = 1e-12;
+
 fn check_formulation(body: &Body, formulation: Formulation) -> Result<(), FemError> {
     if formulation != Formulation::Standard && body.kinematics.uniform_weight().is_none() {
         return Err(FemError::Element {
@@ -593,10 +596,12 @@ fn check_formulation(body: &Body, formulation: Formulation) -> Result<(), FemErr
     }
 }
 
-/// A body of revolution lives at `r = x ≥ 0`: its first node at `r < 0` is refused by tag.
+/// A body of revolution lives at `r = x ≥ 0`: its first node at `r < 0` is refused by tag (a node
+/// at `−1e-12 L` or above is on the axis, as [`Model::axis_nodes`] says).
 fn check_radii(mesh: &Mesh, body: &Body) -> Result<(), FemError> {
+    let extent = mesh.points.iter().fold(0.0f64, |a, p| a.max(p[0].abs()).max(p[1].abs()));
     if body.kinematics.has_hoop_strain()
-        && let Some(n) = body.nodes.iter().find(|n| mesh.points[n.0][0] < 0.0)
+        && let Some(n) = body.nodes.iter().find(|n| mesh.points[n.0][0] < -AXIS_TOLERANCE * extent)
     {
         return Err(FemError::InvalidRegion {
             group: body.name.clone(),

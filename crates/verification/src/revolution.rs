@@ -218,6 +218,12 @@ mod tests {
         let m = Material::new(1.0, 0.3, PlaneCondition::Strain).unwrap();
         let err = model.add_body_in("domain", m, Kinematics::Axisymmetric, Default::default()).unwrap_err();
         assert!(err.to_string().contains("r = x = -0.1 < 0"), "{err}");
+        // A node at the round-off of the coordinates left of the axis is on the axis.
+        let mut mesh = rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 2, 2);
+        mesh.points.iter_mut().filter(|p| p[0] == 0.0).for_each(|p| p[0] = -1e-17);
+        let mut model = Model::new(mesh);
+        model.add_body_in("domain", m, Kinematics::Axisymmetric, Default::default()).unwrap();
+        assert_eq!(model.fix_axis_nodes(), 3);
     }
 
     #[test]
