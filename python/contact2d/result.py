@@ -185,7 +185,8 @@ class Result:
         """The recovered nodal stresses at solved step ``step``, an (n_nodes, 4) array of
         (σ11, σ22, σ12, σ33) per node (MPa for the bundled scenes): the Gauss-point stresses
         extrapolated to the nodes and averaged over each body's cells, the ``stress`` of the VTU
-        files. σ33 is the out-of-plane stress (0 in plane stress, ν(σ11 + σ22) in plane strain).
+        files. σ33 is the out-of-plane stress (0 in plane stress, ν(σ11 + σ22) in plane
+        strain, the hoop stress σθθ for a body of revolution).
         A node of no body is NaN; a node shared by two bodies holds the later body's value."""
         return self._outcome.stress(step)
 
