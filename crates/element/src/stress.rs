@@ -157,6 +157,13 @@ pub fn stress_at_with(
 /// As [`strain_at`].
 pub fn hoop_strain_at(element: ElementType, coords: &[[f64; 2]], u: &[f64], xi: [f64; 2]) -> Result<f64, ElementError> {
     let p = map_point(element, coords, xi)?;
+    if u.len() != 2 * p.len {
+        return Err(ElementError::WrongNodeCount {
+            element: "displacement vector",
+            expected: 2 * p.len,
+            got: u.len() / 2,
+        });
+    }
     let radial: f64 = (0..p.len).map(|a| p.n[a] * u[2 * a]).sum();
     // "On the axis" relative to the cell's size, so the limit is taken only where r/h is round-off.
     let size = p.det_j.sqrt();
