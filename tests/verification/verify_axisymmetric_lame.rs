@@ -61,3 +61,38 @@ fn the_tube_converges_to_lame_at_the_a_priori_rate_with_both_ends() {
         }
     }
 }
+
+/// B-bar in a body of revolution (the hoop strain in the projected dilatation, every integral
+/// weighed by 2πr), nearly incompressible: ν = 0.4999, closed ends. Lamé's displacement stays
+/// finite as ν → ½ (u_r → p a² b² (1 + ν) / (E (b² − a²) r), isochoric), so a locking-free
+/// element converges to it at its a priori rate, while the standard elements' error is set by
+/// `λ div u_h` with λ = 5 000 E: the B-bar L2 error must reach rate k + 1 − 0.15 (the bound of
+/// the compressible study above) and, on the finest mesh, be below a tenth of the standard
+/// element's, and so must its inner-wall σθθ error (locking leaves the standard elements' wall
+/// stress wrong by 12–57 times Lamé's, measured: docs/verification.md). Tri3 has no B-bar variant.
+#[test]
+fn bbar_tubes_of_revolution_do_not_lock() {
+    use contact2d_element::Formulation;
+    let nearly_incompressible = |formulation| LameSetup { poissons_ratio: 0.4999, formulation, ..LameSetup::default() };
+    for kind in [CellKind::Tri6, CellKind::Quad4, CellKind::Quad8, CellKind::Quad9] {
+        let (l2_rate, _) = theoretical_rates(kind);
+        let bbar = nearly_incompressible(Formulation::BBar);
+        let study: Vec<TubeLevel> =
+            levels(kind).iter().map(|&n| solve_tube(kind, TubeEnds::Closed, n, &bbar).unwrap().0).collect();
+        let [_, coarse, fine] = [study[0], study[1], study[2]];
+        let rate = (coarse.relative_l2 / fine.relative_l2).ln() / (coarse.h / fine.h).ln();
+        let finest = levels(kind)[2];
+        let standard =
+            solve_tube(kind, TubeEnds::Closed, finest, &nearly_incompressible(Formulation::Standard)).unwrap().0;
+        eprintln!(
+            "{kind:?} ν = 0.4999: B-bar L2 {:.3e} (rate {rate:.2}), wall σθθ {:.2e}; standard L2 {:.3e}, wall σθθ {:.2e}",
+            fine.relative_l2, fine.inner_hoop_stress_error, standard.relative_l2, standard.inner_hoop_stress_error
+        );
+        assert!(rate >= l2_rate - 0.15, "{kind:?}: B-bar L2 rate {rate:.3} < {l2_rate} − 0.15 ({study:?})");
+        assert!(fine.relative_l2 < 0.1 * standard.relative_l2, "{kind:?}: B-bar {fine:?}, standard {standard:?}");
+        assert!(
+            fine.inner_hoop_stress_error < 0.1 * standard.inner_hoop_stress_error,
+            "{kind:?}: wall σθθ, B-bar {fine:?}, standard {standard:?}"
+        );
+    }
+}

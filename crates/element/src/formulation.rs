@@ -26,6 +26,26 @@
 //! σ   = D ε̄ = D_d ε + κ θ̄ m
 //! ```
 //!
+//! A body of revolution ([`Kinematics::Axisymmetric`]) splits the whole 3D dilatation, hoop
+//! strain included, with every integral weighed by `2πr` (Hughes 1980, §4; Simo, Taylor &
+//! Pister 1985 for the axisymmetric mean dilatation):
+//!
+//! ```text
+//! ε = [ε_rr, ε_zz, γ_rz, ε_θθ],  m = [1, 1, 0, 1],  θ = ε_rr + ε_zz + ε_θθ = b · u,
+//! b_a = [∂N_a/∂r + N_a/r, ∂N_a/∂z]
+//! D = D_d + K m mᵀ,  K = λ + 2μ/3 (the bulk modulus),
+//! D_d = μ [ 4/3 -2/3  0 -2/3 ]   (D_d m = 0)
+//!         [-2/3  4/3  0 -2/3 ]
+//!         [ 0    0    1  0   ]
+//!         [-2/3 -2/3  0  4/3 ]
+//! M = ∫ q qᵀ 2πr dA,  G = ∫ q bᵀ 2πr dA,  B̄ = B + ⅓ m (b̄ - b)ᵀ
+//! K_e = ∫ Bᵀ D_d B 2πr dA + K Gᵀ M⁻¹ G,   σ = D_d ε + K θ̄ m
+//! ```
+//!
+//! (`mᵀ m = 3` makes `mᵀ B̄ = b̄ᵀ`.) The in-plane block of `D_d` and its hoop coupling
+//! `(−2μ/3, 4μ/3)` enter the stiffness exactly as `D_pp` and `(λ, λ + 2μ)` do in the
+//! standard formulation ([`VolumetricSplit`]).
+//!
 //! This is the mixed u–p formulation with the discontinuous pressure `p = κ θ̄ ∈ P_e` condensed at
 //! element level (Malkus & Hughes 1978): `∫ ε(v)ᵀ D_d ε(u) + ∫ p div v = f(v)`,
 //! `∫ q (div u − p/κ) = 0 ∀ q ∈ P_e`. Its pairs are the inf-sup stable Q2/P1 (Quad9), P2/P0
@@ -44,12 +64,15 @@
 //! nonlinear media, IJNME 15, 1413–1418, eq. (14)–(20). D. S. Malkus, T. J. R. Hughes (1978),
 //! Mixed finite element methods — reduced and selective integration techniques: a unification of
 //! concepts, CMAME 15, 63–81. D. Boffi, F. Brezzi, M. Fortin (2013), Mixed Finite Element Methods
-//! and Applications, §8.6–8.7 (Q2/P1, P2/P0).
+//! and Applications, §8.6–8.7 (Q2/P1, P2/P0). J. C. Simo, R. L. Taylor, K. S. Pister (1985),
+//! Variational and projection methods for the volume constraint in finite deformation
+//! elasto-plasticity, CMAME 51, 177–208 (the axisymmetric mean dilatation).
 
 use nalgebra::{DMatrix, Matrix3};
 
 use crate::error::ElementError;
 use crate::isoparametric::{check_node_count, map_point};
+use crate::kinematics::Kinematics;
 use crate::material::{Material, PlaneCondition};
 use crate::quadrature::GaussRule;
 use crate::shape::ElementType;
@@ -154,6 +177,38 @@ pub fn deviatoric_split(material: &Material) -> (Matrix3<f64>, f64) {
     (Matrix3::new(mu, -mu, 0.0, -mu, mu, 0.0, 0.0, 0.0, mu), lambda + mu)
 }
 
+/// The split `D = D_d + κ m mᵀ` of a body's [`Kinematics`] (module docs): the in-plane block
+/// of `D_d`, its hoop coupling for a body of revolution, and `κ`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VolumetricSplit {
+    /// The `[ε11, ε22, γ12]` block of `D_d`.
+    pub deviatoric: Matrix3<f64>,
+    /// `(D_d[rr, θθ], D_d[θθ, θθ]) = (−2μ/3, 4μ/3)` for a body of revolution; `None` in the
+    /// plane.
+    pub hoop: Option<(f64, f64)>,
+    /// `κ`: `λ̂ + μ` in the plane (`m = [1, 1, 0]`), the bulk modulus `λ + 2μ/3` for a body of
+    /// revolution (`m = [1, 1, 0, 1]`).
+    pub bulk: f64,
+}
+
+/// The [`VolumetricSplit`] of `material` in `kinematics`: [`deviatoric_split`] in the plane;
+/// for a body of revolution the 3D split with `λ = Eν/((1 + ν)(1 − 2ν))`.
+pub fn volumetric_split(material: &Material, kinematics: &Kinematics) -> VolumetricSplit {
+    if !kinematics.has_hoop_strain() {
+        let (deviatoric, bulk) = deviatoric_split(material);
+        return VolumetricSplit { deviatoric, hoop: None, bulk };
+    }
+    let (e, nu) = (material.youngs_modulus(), material.poissons_ratio());
+    let mu = e / (2.0 * (1.0 + nu));
+    let lambda = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+    let (diagonal, off) = (4.0 * mu / 3.0, -2.0 * mu / 3.0);
+    VolumetricSplit {
+        deviatoric: Matrix3::new(diagonal, off, 0.0, off, diagonal, 0.0, 0.0, 0.0, mu),
+        hoop: Some((off, diagonal)),
+        bulk: lambda + 2.0 * mu / 3.0,
+    }
+}
+
 /// The L2 projection of the dilatation onto an element's pressure space: `θ̄(x) = q(x)ᵀ P u_e`
 /// with `P = M⁻¹ G` (module docs).
 #[derive(Debug, Clone, PartialEq)]
@@ -173,6 +228,22 @@ impl DilatationProjection {
     /// [`ElementError::UnsupportedFormulation`] for Tri3, the map's errors, or
     /// [`ElementError::UnsupportedRule`] when `rule` is too small to make `M` invertible.
     pub fn new(element: ElementType, coords: &[[f64; 2]], rule: &GaussRule) -> Result<Self, ElementError> {
+        Self::new_in(element, coords, rule, &Kinematics::PlaneStrain { thickness: 1.0 })
+    }
+
+    /// The projection in a body of the given [`Kinematics`]: in the plane as [`Self::new`] (the
+    /// weight `t` is applied by [`Self::volumetric_stiffness`]); for a body of revolution `M`
+    /// and `G` weighed by `2πr` and the divergence row with the hoop term `N_a / r` (module
+    /// docs).
+    ///
+    /// # Errors
+    /// As [`Self::new`].
+    pub fn new_in(
+        element: ElementType,
+        coords: &[[f64; 2]],
+        rule: &GaussRule,
+        kinematics: &Kinematics,
+    ) -> Result<Self, ElementError> {
         Formulation::BBar.check(element)?;
         check_node_count(element, coords)?;
         let m_dim = pressure_space_dim(element).unwrap_or(1);
@@ -192,14 +263,20 @@ impl DilatationProjection {
         let mut m = DMatrix::zeros(m_dim, m_dim);
         for (xi, w) in rule.points.iter().zip(&rule.weights) {
             let pt = map_point(element, coords, *xi)?;
-            let f = w * pt.det_j;
+            // × 1.0 exactly in the plane; Gauss points lie inside the cell, so r > 0.
+            let f = w * pt.det_j * kinematics.varying_weight(pt.x);
+            let hoop = kinematics.has_hoop_strain().then_some(pt.x[0]);
             let q = proj.basis(pt.x);
             for i in 0..m_dim {
                 for j in 0..m_dim {
                     m[(i, j)] += f * q[i] * q[j];
                 }
                 for a in 0..pt.len {
-                    proj.g[(i, 2 * a)] += f * q[i] * pt.dn_dx[a][0];
+                    let radial = match hoop {
+                        None => pt.dn_dx[a][0],
+                        Some(r) => pt.dn_dx[a][0] + pt.n[a] / r,
+                    };
+                    proj.g[(i, 2 * a)] += f * q[i] * radial;
                     proj.g[(i, 2 * a + 1)] += f * q[i] * pt.dn_dx[a][1];
                 }
             }
@@ -227,7 +304,8 @@ impl DilatationProjection {
         self.projected_divergence(x).iter().zip(u).map(|(b, u)| b * u).sum()
     }
 
-    /// The volumetric stiffness `κ t Gᵀ M⁻¹ G = κ t Gᵀ P` (2n × 2n).
+    /// The volumetric stiffness `κ t Gᵀ M⁻¹ G = κ t Gᵀ P` (2n × 2n); `t` is 1 for a body of
+    /// revolution, whose `G` carries the `2πr` ([`Kinematics::uniform_factor`]).
     pub fn volumetric_stiffness(&self, kappa: f64, thickness: f64) -> DMatrix<f64> {
         (self.g.transpose() * &self.p) * (kappa * thickness)
     }

@@ -102,28 +102,35 @@ impl Kinematics {
         self.volume_weight(x)
     }
 
-    /// The measure of the contact pairs' boundary integrals (tributary lengths, segment-to-segment
-    /// weights) at `x`: `1` in the plane, where a pair's weight is per unit thickness and
-    /// [`Kinematics::pair_area_factor`] (`t`) turns it into an area; `2πr` for a body of
-    /// revolution, whose pair weight is the area of the node's ring itself.
-    pub fn pairing_measure(&self, x: [f64; 2]) -> f64 {
+    /// The part of the volume weight that varies over a cell: `1` in the plane, `2πr` for a body
+    /// of revolution, so that `volume_weight(x) = uniform_factor() · varying_weight(x)`. The
+    /// B-bar projection's `M` and `G` are integrated with it ([`crate::DilatationProjection`]).
+    pub fn varying_weight(&self, x: [f64; 2]) -> f64 {
         match self {
             Kinematics::PlaneStress { .. } | Kinematics::PlaneStrain { .. } => 1.0,
             Kinematics::Axisymmetric => 2.0 * PI * x[0],
         }
     }
 
-    /// What turns a contact pair's weight into its contact area (pressure `p = λ / (w f)`): the
-    /// thickness `t` in the plane, `1` for a body of revolution.
-    pub fn pair_area_factor(&self) -> f64 {
+    /// The part of the volume weight that is the same everywhere: the thickness `t` in the
+    /// plane, `1` for a body of revolution.
+    pub fn uniform_factor(&self) -> f64 {
         self.thickness().unwrap_or(1.0)
     }
 
-    /// The weight of an integral whose integrand does not vary across the element, such as the
-    /// B-bar volumetric term `κ t Gᵀ M⁻¹ G` (`t` in the plane); `None` for a body of revolution,
-    /// whose weight `2πr` varies everywhere.
-    pub fn uniform_weight(&self) -> Option<f64> {
-        self.thickness()
+    /// The measure of the contact pairs' boundary integrals (tributary lengths, segment-to-segment
+    /// weights) at `x`: `1` in the plane, where a pair's weight is per unit thickness and
+    /// [`Kinematics::pair_area_factor`] (`t`) turns it into an area; `2πr` for a body of
+    /// revolution, whose pair weight is the area of the node's ring itself
+    /// ([`Kinematics::varying_weight`]).
+    pub fn pairing_measure(&self, x: [f64; 2]) -> f64 {
+        self.varying_weight(x)
+    }
+
+    /// What turns a contact pair's weight into its contact area (pressure `p = λ / (w f)`): the
+    /// thickness `t` in the plane, `1` for a body of revolution ([`Kinematics::uniform_factor`]).
+    pub fn pair_area_factor(&self) -> f64 {
+        self.uniform_factor()
     }
 
     /// Whether the strain has the hoop row `ε_θθ = u_r / r` (a body of revolution).

@@ -33,8 +33,8 @@ pub mod stress;
 
 pub use error::ElementError;
 pub use formulation::{
-    DilatationProjection, Formulation, LOCKING_POISSON_THRESHOLD, deviatoric_split, lame_parameters, locking_warning,
-    pressure_space_dim,
+    DilatationProjection, Formulation, LOCKING_POISSON_THRESHOLD, VolumetricSplit, deviatoric_split, lame_parameters,
+    locking_warning, pressure_space_dim, volumetric_split,
 };
 pub use isoparametric::{EdgePoint, MappedPoint, jacobian_determinant, map_edge_point, map_point};
 pub use kinematics::Kinematics;

@@ -16,7 +16,7 @@
 use nalgebra::DMatrix;
 
 use crate::error::ElementError;
-use crate::formulation::{DilatationProjection, Formulation, deviatoric_split};
+use crate::formulation::{DilatationProjection, Formulation, deviatoric_split, volumetric_split};
 use crate::isoparametric::map_point;
 use crate::kinematics::Kinematics;
 use crate::material::Material;
@@ -181,11 +181,11 @@ pub fn hoop_strain_at(element: ElementType, coords: &[[f64; 2]], u: &[f64], xi: 
 /// ```text
 /// plane:         [σ11, σ22, σ12] = stress_at_with(…),  σ33 = Kinematics::out_of_plane_stress
 /// axisymmetric:  [σ_rr, σ_zz, σ_rz] = D_pp ε + λ ε_θθ [1, 1, 0],  σθθ = λ (ε_rr + ε_zz) + (λ + 2μ) ε_θθ
+///   B-bar:       σ = D_d ε + K θ̄ [1, 1, 0, 1]   (D_d, K, θ̄ with the hoop term: crate::formulation)
 /// ```
 ///
 /// # Errors
-/// As [`stress_at_with`]; [`ElementError::UnsupportedFormulation`] for B-bar in a body of
-/// revolution.
+/// As [`stress_at_with`].
 pub fn stress_state_at(
     element: ElementType,
     coords: &[[f64; 2]],
@@ -195,20 +195,31 @@ pub fn stress_state_at(
     xi: [f64; 2],
     formulation: Formulation,
 ) -> Result<[f64; 4], ElementError> {
-    let Some((lambda, diagonal)) = kinematics.hoop_elasticity(material) else {
+    if !kinematics.has_hoop_strain() {
         let s = stress_at_with(element, coords, material, u, xi, formulation)?;
         return Ok([s[0], s[1], s[2], kinematics.out_of_plane_stress(material, &s).unwrap_or(0.0)]);
-    };
-    if formulation != Formulation::Standard {
-        return Err(ElementError::UnsupportedFormulation {
-            element: format!("{element:?}"),
-            formulation: format!("{formulation:?} in a body of revolution"),
-        });
     }
     let e = strain_at(element, coords, u, xi)?;
     let hoop = hoop_strain_at(element, coords, u, xi)?;
-    let s = kinematics.in_plane_elasticity(material) * nalgebra::Vector3::new(e[0], e[1], e[2]);
-    Ok([s[0] + lambda * hoop, s[1] + lambda * hoop, s[2], lambda * (e[0] + e[1]) + diagonal * hoop])
+    let (d, (lambda, diagonal), theta_bar) = match formulation {
+        Formulation::Standard => {
+            let coupling = kinematics.hoop_elasticity(material).unwrap_or_default();
+            (kinematics.in_plane_elasticity(material), coupling, None)
+        }
+        Formulation::BBar => {
+            let split = volumetric_split(material, kinematics);
+            let projection =
+                DilatationProjection::new_in(element, coords, &kinematics.stiffness_rule(element), kinematics)?;
+            let x = map_point(element, coords, xi)?.x;
+            (split.deviatoric, split.hoop.unwrap_or_default(), Some(split.bulk * projection.dilatation(x, u)))
+        }
+    };
+    let s = d * nalgebra::Vector3::new(e[0], e[1], e[2]);
+    let state = [s[0] + lambda * hoop, s[1] + lambda * hoop, s[2], lambda * (e[0] + e[1]) + diagonal * hoop];
+    Ok(match theta_bar {
+        None => state,
+        Some(p) => [state[0] + p, state[1] + p, state[2], state[3] + p],
+    })
 }
 
 /// The von Mises equivalent stress of a whole stress state `[σ11, σ22, σ12, σ_out]` (σ_out the

@@ -211,8 +211,7 @@ impl Model {
     ///
     /// # Errors
     /// As [`Model::add_body_with`]; [`FemError::InvalidRegion`] naming the first node at `r < 0`
-    /// of a body of revolution; [`FemError::Element`] for B-bar in a body of revolution (its
-    /// volumetric term is written for a uniform weight).
+    /// of a body of revolution.
     pub fn add_body_in(
         &mut self,
         region: &str,
@@ -573,16 +572,6 @@ const PARALLEL: f64 = 1e-8;
 pub const AXIS_TOLERANCE: f64 = 1e-12;
 
 fn check_formulation(body: &Body, formulation: Formulation) -> Result<(), FemError> {
-    if formulation != Formulation::Standard && body.kinematics.uniform_weight().is_none() {
-        return Err(FemError::Element {
-            body: body.name.clone(),
-            cell: body.cell_tags[0],
-            source: ElementError::UnsupportedFormulation {
-                element: format!("{:?}", body.elements[0]),
-                formulation: format!("{formulation:?} in a body of revolution"),
-            },
-        });
-    }
     match body.elements.iter().position(|e| !formulation.supports(*e)) {
         None => Ok(()),
         Some(i) => Err(FemError::Element {
