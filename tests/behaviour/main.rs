@@ -33,6 +33,7 @@ mod pairing_closed_forms;
 mod paper_case_every_algorithm;
 mod points_and_couplings;
 mod reaction_balance_scenes;
+mod revolution_studies;
 mod robustness;
 mod scene_errors;
 mod scene_robustness;

@@ -37,19 +37,26 @@ fn the_shrink_fit_carries_lames_pressure_over_the_whole_circumference() {
     let (e, nu, delta, b, c, length) = (200_000.0, 0.3, 0.01, 10.0, 20.0, 10.0);
     let p = e * delta / (b * (1.0 + nu) * (((1.0 - 2.0 * nu) * b * b + c * c) / (c * c - b * b) + (1.0 - 2.0 * nu)));
     let force = p * 2.0 * std::f64::consts::PI * b * length;
-    for algorithm in ["active_set", "clarabel", "augmented_lagrangian"] {
+    for algorithm in ["active_set", "clarabel", "augmented_lagrangian", "boussinesq", "penalty"] {
+        // The penalty answer penetrates by about 1e-3 of its pairs' displacement (δ/2 here), so
+        // its pressure may be low by up to ~1e-3: bound 2e-3 for it (measured 1.7e-5).
+        let tolerance = if algorithm == "penalty" { 2e-3 } else { 1e-4 };
         for pairing in ["segment_to_segment", "node_to_segment"] {
             let r = run(&[&format!("solver.algorithm={algorithm}"), &format!("contact.0.pairing={pairing}")]);
             let tag = format!("{algorithm} × {pairing}");
             assert_eq!(r.status, "converged", "{tag}");
             assert_eq!(r.kinematics, "axisymmetric");
             let fit = &r.contacts["fit"];
-            assert!((fit.normal_force - force).abs() < 1e-4 * force, "{tag}: N {} against {force}", fit.normal_force);
+            assert!(
+                (fit.normal_force - force).abs() < tolerance * force,
+                "{tag}: N {} against {force}",
+                fit.normal_force
+            );
             let mean = fit.mean_pressure.unwrap();
-            assert!((mean - p).abs() < 1e-4 * p, "{tag}: mean pressure {mean} against {p}");
+            assert!((mean - p).abs() < tolerance * p, "{tag}: mean pressure {mean} against {p}");
             let profile = fit.profile.as_ref().unwrap();
             for q in &profile.pressure {
-                assert!((q - p).abs() < 1e-4 * p, "{tag}: a pair's pressure {q} against {p}");
+                assert!((q - p).abs() < tolerance * p, "{tag}: a pair's pressure {q} against {p}");
             }
             assert!(r.notes.iter().any(|n| n.contains("17 nodes on the axis")), "{tag}: {:?}", r.notes);
         }
@@ -59,35 +66,48 @@ fn the_shrink_fit_carries_lames_pressure_over_the_whole_circumference() {
 /// `tests/scenes/shrink_fit_axisymmetric_pull.toml`: the shaft held only by the fit (μ = 0.3),
 /// whose one free rigid motion as a body of revolution is the axial translation, pulled by a total
 /// axial force F = 0, 5 000, 10 000, 15 000. Statics and Coulomb: the fit carries the pull exactly
-/// (Σ τ = F, 1e-9 relative: the floating body's equilibrium is solved to round-off) while F < μN,
+/// (Σ τ = F to 1e-9 of the larger of F and μN, the contact's force scale: the floating body's
+/// equilibrium is solved to round-off; the augmented Lagrangian leaves 1.6e-12 of N at F = 0) while F < μN,
 /// and where F > μN the run ends `not_held` at that step, its available force being μN of that
 /// state (1e-9) and its ratio F / (μN) (1e-6: the demanded force is the pull as the statics LP
-/// returns it, to its tolerance).
+/// returns it, to its tolerance). Active set, Clarabel, the augmented Lagrangian and the penalty
+/// (its own N: the available force is μN of the state it solved) alike.
 #[test]
 fn a_shaft_held_only_by_the_fit_holds_below_mu_n_and_is_not_held_above() {
+    // Every algorithm that solves friction on a body held only by contact: the same statics.
+    for algorithm in ["active_set", "clarabel", "augmented_lagrangian", "penalty"] {
+        pull_out(algorithm);
+    }
+}
+
+fn pull_out(algorithm: &str) {
     let mu = 0.3;
-    let sets: Vec<String> = vec![];
+    let sets = vec![format!("solver.algorithm={algorithm}")];
     let scene = load_scene(Path::new("tests/scenes/shrink_fit_axisymmetric_pull.toml"), &sets).unwrap();
     let r = solve_generic(&scene, &mut |_, _| {}).unwrap().report;
-    assert_eq!(r.status, "not_held", "{:?}", r.failed_check);
+    assert_eq!(r.status, "not_held", "{algorithm}: {:?}", r.failed_check);
     let pulls = [0.0, 5000.0, 10000.0, 15000.0];
     for (row, pull) in r.steps.iter().zip(pulls) {
         let fit = &row.contacts["fit"];
         if pull < mu * fit.normal_force {
-            assert_eq!(row.status, "converged", "pull {pull}");
+            assert_eq!(row.status, "converged", "{algorithm}: pull {pull}");
             assert!(
-                (fit.tangential_force - pull).abs() <= 1e-9 * pull.max(1.0),
-                "pull {pull}: Σ τ {}",
+                (fit.tangential_force - pull).abs() <= 1e-9 * pull.max(mu * fit.normal_force),
+                "{algorithm}: pull {pull}: Σ τ {}",
                 fit.tangential_force
             );
         } else {
-            assert_eq!(row.status, "not_held", "pull {pull}");
+            assert_eq!(row.status, "not_held", "{algorithm}: pull {pull}");
         }
     }
     let not_held = r.not_held.as_ref().unwrap();
     assert_eq!(not_held.step, 4);
     let fit = &r.steps[3].contacts["fit"];
-    assert!((not_held.available - mu * fit.normal_force).abs() <= 1e-9 * not_held.available);
+    assert!((not_held.available - mu * fit.normal_force).abs() <= 1e-9 * not_held.available, "{algorithm}");
     let ratio = pulls[3] / (mu * fit.normal_force);
-    assert!((not_held.ratio - ratio).abs() <= 1e-6 * ratio, "ratio {} against F/(μN) {ratio}", not_held.ratio);
+    assert!(
+        (not_held.ratio - ratio).abs() <= 1e-6 * ratio,
+        "{algorithm}: ratio {} against F/(μN) {ratio}",
+        not_held.ratio
+    );
 }
