@@ -27,6 +27,7 @@ mod verify_path_error;
 mod verify_pin_lug;
 mod verify_placed_zone_ends;
 mod verify_press_fit;
+mod verify_press_fit_axisymmetric;
 mod verify_reaction_balance;
 mod verify_rigid_insert;
 mod verify_slider_long_steps;
