@@ -10,7 +10,9 @@
 #                                    # long_interface_{96,190,380}.msh,
 #                                    # pad_on_base_thin_{032,016}.msh,
 #                                    # sliding_block_{matching,nonmatching}.msh,
-#                                    # press_fit_L{1,2}.msh, moving_roller_L{1,3}.msh
+#                                    # press_fit_L{1,2}.msh, moving_roller_L{1,3}.msh,
+#                                    # hertz_sphere_axisymmetric_{T3,T6,Q4,Q8,Q9}_L{1,2}.msh,
+#                                    # punch_axisymmetric_{T3,T6,Q4,Q8,Q9}_L{1,2}.msh
 #   meshes/generic/generate.sh --no-check
 #
 # Environment: GMSH (default: gmsh), PYTHON (default: python3, must import gmsh for the check).
@@ -82,5 +84,17 @@ done
 for h in 032 016; do
   mesh pad_on_base.geo "pad_on_base_thin_$h.msh" base,pad base_bottom,base_top,pad_bottom,pad_top \
     -- -setnumber h "0.$h" -setnumber n_base_height 2 -setnumber n_pad_height 1
+done
+# Every element type (T3 T6 Q4 Q8 Q9): the .geo sets the order, the recombination and the
+# incomplete second order from `kind`, so no -order here; check_mesh.py checks Quad9 files only,
+# these are read by the tests (tests/verification/verify_axisymmetric_contact.rs).
+kinds=(T3 T6 Q4 Q8 Q9)
+for level in 1 2; do
+  for k in 1 2 3 4 5; do
+    for geo in hertz_sphere_axisymmetric punch_axisymmetric; do
+      "$GMSH" "$here/$geo.geo" -2 -format msh41 -v 1 -setnumber kind "$k" -setnumber level "$level" \
+        -o "$here/${geo}_${kinds[$((k - 1))]}_L$level.msh"
+    done
+  done
 done
 exit $status

@@ -18,6 +18,7 @@ pub mod clamped_block;
 pub mod contact_patch;
 pub mod flagship;
 pub mod hertz;
+pub mod hertz_sphere_axisymmetric;
 pub mod hills_nowell;
 pub mod incline;
 pub mod interference_fit;
@@ -26,6 +27,7 @@ pub mod moving_roller;
 pub mod pin_lug;
 pub mod press_fit;
 mod profile;
+pub mod punch_axisymmetric;
 pub mod report;
 pub mod shrink_fit_axisymmetric;
 pub mod sliding_patch;
@@ -175,7 +177,7 @@ pub enum VerifyError {
 }
 
 /// The names of the gallery's cases, in the order they run.
-pub const CASES: [&str; 14] = [
+pub const CASES: [&str; 16] = [
     "contact_patch",
     "hertz",
     "cattaneo_mindlin",
@@ -183,6 +185,8 @@ pub const CASES: [&str; 14] = [
     "hills_nowell",
     "interference_fit",
     "shrink_fit_axisymmetric",
+    "hertz_sphere_axisymmetric",
+    "punch_axisymmetric",
     "incline",
     "pin_lug",
     "flagship",
@@ -205,6 +209,8 @@ pub fn run_case(name: &str, root: &Path, level: Level) -> Result<CaseReport, Ver
         "hills_nowell" => hills_nowell::run(root, level),
         "interference_fit" => interference_fit::run(root, level),
         "shrink_fit_axisymmetric" => shrink_fit_axisymmetric::run(root, level),
+        "hertz_sphere_axisymmetric" => hertz_sphere_axisymmetric::run(root, level),
+        "punch_axisymmetric" => punch_axisymmetric::run(root, level),
         "incline" => incline::run(root, level),
         "pin_lug" => pin_lug::run(root, level),
         "flagship" => flagship::run(root, level),
@@ -227,7 +233,8 @@ pub struct VerifyArgs {
     #[cfg_attr(feature = "cli", arg(long, default_value = "fast", value_parser = ["fast", "full"]))]
     pub level: String,
     /// Cases to run, comma separated (default: all of contact_patch, hertz, cattaneo_mindlin,
-    /// mindlin_deresiewicz, hills_nowell, interference_fit, shrink_fit_axisymmetric, incline, pin_lug,
+    /// mindlin_deresiewicz, hills_nowell, interference_fit, shrink_fit_axisymmetric,
+    /// hertz_sphere_axisymmetric, punch_axisymmetric, incline, pin_lug,
     /// flagship, sliding_patch,
     /// press_fit, moving_roller, clamped_block).
     #[cfg_attr(feature = "cli", arg(long, value_delimiter = ','))]

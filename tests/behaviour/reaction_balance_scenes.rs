@@ -88,9 +88,10 @@ fn every_bundled_scene_balances_its_loads_at_every_step() {
             let scale = load[0].hypot(load[1]).max(contact);
             assert!(scale > 0.0, "{name} step {}: nothing loads the scene", i + 1);
             let total = step.reactions_total;
-            // A body of revolution balances axially only: the radial forces of its rings are
-            // totals of a component that points every way around the axis, held by the hoop
-            // stress of the body itself, not a resultant (their sum is reported as Abaqus' RF1 is).
+            // A body of revolution balances only its axial forces: radial forces act on rings and
+            // cancel round each ring by symmetry, so their sum over a meridian is no resultant (a
+            // tube under internal pressure has Σ F_r = p 2πaL and no reaction; a sphere pressed
+            // on a block has the radial reactions of its nodes on the axis, u_r = 0).
             let components = if out.report.kinematics == "axisymmetric" { 1..2 } else { 0..2 };
             for c in components {
                 let residual = load[c] + total[c] + rigid[c];

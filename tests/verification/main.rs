@@ -5,6 +5,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 mod verify_augmented_lagrangian;
+mod verify_axisymmetric_contact;
 mod verify_axisymmetric_lame;
 mod verify_axisymmetric_shrink_fit;
 mod verify_boussinesq_agrees;
