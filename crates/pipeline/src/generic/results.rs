@@ -758,7 +758,7 @@ pub fn contact_result_about(
         tangential_force: order.iter().map(|&k| s.tangential_force[k]).sum(),
         contact_length,
         stick_length,
-        mean_pressure: mean_pressure(normal_force, contact_length, zone_width(problem, &order, s, kinematics)),
+        mean_pressure: mean_pressure(normal_force, contact_length, zone_width(problem, iface, &order, s, kinematics)),
         max_pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).fold(0.0, f64::max),
         dissipation,
         resultant: slave_resultant(built, iface, s),
@@ -775,10 +775,14 @@ pub fn contact_result_about(
 }
 
 /// What turns the contact length into the contact area: the thickness `t` in the plane; for a
-/// body of revolution the circumference `2π r̄` at the mean radius of the pairs in contact,
-/// `r̄ = Σ w_k r_k / Σ w_k` (`w_k` their ring areas; `r̄ = b` on a bore of radius b).
+/// body of revolution the circumference `2π r̄` at the arc-length centroid of the master nodes in
+/// contact, `r̄ = Σ ds_a r_a / Σ ds_a` (`ds_a` their tributary lengths on the master curve), so
+/// that `2π r̄ L` is Pappus' area of the zone: `π a²` for a disc 0 ≤ r ≤ a, `2π b L` on a bore
+/// of radius b. (Weighing by the ring areas, `ds_a 2π r_a`, would give the area centroid, 2a/3
+/// on a disc, and a mean pressure 3/4 of the force over the disc's area.)
 fn zone_width(
     problem: &contact2d_contact::ContactProblem,
+    iface: &InterfaceInfo,
     order: &[usize],
     s: &ContactSolution,
     kinematics: Option<contact2d_element::Kinematics>,
@@ -786,12 +790,20 @@ fn zone_width(
     let Some(kinematics) = kinematics.filter(|k| k.thickness().is_none()) else {
         return kinematics.map_or(1.0, |k| k.pair_area_factor());
     };
-    let in_contact = order.iter().filter(|&&k| s.state[k] != PairState::Free);
-    let (sum_w, sum_wr) = in_contact.fold((0.0, 0.0), |(w, wr), &k| {
-        let pair = &problem.pairs[k];
-        (w + pair.weight, wr + pair.weight * problem.model.mesh.points[pair.master.0][0])
-    });
-    if sum_w > 0.0 { kinematics.pairing_measure([sum_wr / sum_w, 0.0]) } else { 1.0 }
+    let points = &problem.model.mesh.points;
+    let mut touching = vec![false; points.len()];
+    for &k in order.iter().filter(|&&k| s.state[k] != PairState::Free) {
+        touching[problem.pairs[k].master.0] = true;
+    }
+    let master = &iface.master_contour;
+    let lengths = contact2d_contact::tributary_weights(master);
+    let (sum_ds, sum_ds_r) = master
+        .nodes
+        .iter()
+        .zip(&lengths)
+        .filter(|(n, _)| touching[n.0])
+        .fold((0.0, 0.0), |(l, lr), (n, ds)| (l + ds, lr + ds * points[n.0][0]));
+    if sum_ds > 0.0 { kinematics.pairing_measure([sum_ds_r / sum_ds, 0.0]) } else { 1.0 }
 }
 
 /// `normal_force / (contact_length t)`, the mean pressure over the contact length (`None` where
