@@ -39,7 +39,7 @@ use std::time::Instant;
 
 use anyhow::{Result, anyhow, bail};
 use clap::{Parser, ValueEnum};
-use contact2d_element::{Material, PlaneCondition};
+use contact2d_element::{Kinematics, Material};
 use contact2d_fem::{
     COMPRESS_FROM, Component, Csc, Dof, DofKind, DofMap, EdgeLoad, Model, Ordering as FemOrdering, assemble,
     fill_reducing_permutation, twin_compressed_amd,
@@ -299,7 +299,7 @@ fn to_u32_vec(v: &[usize]) -> Vec<u32> {
 /// Clamps the left side and pulls the right side down with a unit traction.
 fn setup_model(mesh: Mesh) -> Result<Model> {
     let mut model = Model::new(mesh);
-    model.add_body("domain", Material::new(1000.0, 0.3, PlaneCondition::Stress)?, 1.0)?;
+    model.add_body("domain", Material::new(1000.0, 0.3)?, Kinematics::PlaneStress { thickness: 1.0 })?;
     model.fix("left", Component::X, 0.0)?;
     model.fix("left", Component::Y, 0.0)?;
     model.add_edge_load(EdgeLoad::Traction { group: "right".into(), traction: [0.0, -1.0] })?;

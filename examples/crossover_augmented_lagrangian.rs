@@ -29,7 +29,7 @@ use contact2d::contact::{
     ContactProblem, ContactStatus, Interface, StepStart, pair_contours, solve_augmented_lagrangian,
     solve_frictional_active_set,
 };
-use contact2d::element::{Material, PlaneCondition};
+use contact2d::element::{Kinematics, Material};
 use contact2d::fem::{Component, Model};
 use contact2d::mesh::generate::{MappedGrid, append_prefixed, mapped_grid, side_name};
 use contact2d::mesh::{CellKind, Contour};
@@ -55,8 +55,8 @@ fn two_blocks(na: usize, rows: usize, height: f64) -> ContactProblem {
     }
     append_prefixed(&mut mesh, &block(nb, 0.5, 2.5, 0.0, true), "b_");
     let mut model = Model::new(mesh);
-    model.add_body("a_domain", Material::new(1.0, 0.3, PlaneCondition::Strain).unwrap(), 1.0).unwrap();
-    model.add_body("b_domain", Material::new(2.0, 0.3, PlaneCondition::Strain).unwrap(), 1.0).unwrap();
+    model.add_body("a_domain", Material::new(1.0, 0.3).unwrap(), Kinematics::PlaneStrain { thickness: 1.0 }).unwrap();
+    model.add_body("b_domain", Material::new(2.0, 0.3).unwrap(), Kinematics::PlaneStrain { thickness: 1.0 }).unwrap();
     model.fix("a_bottom", Component::X, 0.0).unwrap();
     model.fix("a_bottom", Component::Y, 0.0).unwrap();
     model.fix("b_top", Component::X, 0.005).unwrap();

@@ -17,7 +17,7 @@
 
 use std::ops::Range;
 
-use contact2d_element::{Formulation, Kinematics, Material, PlaneCondition};
+use contact2d_element::{Formulation, Kinematics, Material};
 use contact2d_fem::{Component, DofKind, EdgeLoad, Model, assemble_body_forces, assemble_edge_loads};
 use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, Mesh, NodeId, line_cell_length};
@@ -390,10 +390,7 @@ impl ProblemDescription {
         let mut model = Model::new(mesh);
         model.allow_floating = true;
         for b in &self.bodies {
-            // A body of revolution's in-plane block is the plane-strain matrix
-            // (Kinematics::in_plane_elasticity), so its material is written in plane strain.
-            let plane = b.kinematics.plane_condition().unwrap_or(PlaneCondition::Strain);
-            let material = Material::new(b.youngs_modulus, b.poissons_ratio, plane)
+            let material = Material::new(b.youngs_modulus, b.poissons_ratio)
                 .map_err(|e| ContactError::InvalidInput(format!("body \"{}\": {e}", b.region)))?;
             model.add_body_in(&b.region, material, b.kinematics, b.formulation)?;
         }

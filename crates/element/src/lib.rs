@@ -11,7 +11,7 @@
 //! # Examples
 //! ```
 //! use contact2d_element::{element_stiffness, ElementType, GaussRule, Kinematics, Material, PlaneCondition};
-//! let steel = Material::new(210e9, 0.3, PlaneCondition::Stress)?;
+//! let steel = Material::new(210e9, 0.3)?;
 //! let plate = Kinematics::plane(PlaneCondition::Stress, 1.0)?;
 //! let quad9 = ElementType::Quad9;
 //! let coords: Vec<[f64; 2]> = quad9.reference_nodes().to_vec();

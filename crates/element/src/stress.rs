@@ -19,7 +19,7 @@ use crate::error::ElementError;
 use crate::formulation::{DilatationProjection, Formulation, deviatoric_split, volumetric_split};
 use crate::isoparametric::map_point;
 use crate::kinematics::Kinematics;
-use crate::material::Material;
+use crate::material::{Material, PlaneCondition};
 use crate::quadrature::GaussRule;
 use crate::shape::ElementType;
 
@@ -48,7 +48,7 @@ pub fn strain_at(element: ElementType, coords: &[[f64; 2]], u: &[f64], xi: [f64;
     Ok(e)
 }
 
-/// The stress `[σ11, σ22, σ12]` at reference point `xi`.
+/// The stress `[σ11, σ22, σ12]` at reference point `xi` of a body in the plane reduction `plane`.
 ///
 /// # Errors
 /// As [`strain_at`].
@@ -56,11 +56,12 @@ pub fn stress_at(
     element: ElementType,
     coords: &[[f64; 2]],
     material: &Material,
+    plane: PlaneCondition,
     u: &[f64],
     xi: [f64; 2],
 ) -> Result<[f64; 3], ElementError> {
     let e = strain_at(element, coords, u, xi)?;
-    let s = material.elasticity_matrix() * nalgebra::Vector3::new(e[0], e[1], e[2]);
+    let s = plane.elasticity_matrix(material) * nalgebra::Vector3::new(e[0], e[1], e[2]);
     Ok([s[0], s[1], s[2]])
 }
 
@@ -123,27 +124,28 @@ fn projected_dilatation(
 /// ```
 /// use contact2d_element::{stress_at, stress_at_with, ElementType, Formulation, Material, PlaneCondition};
 /// // An affine field: B-bar and standard stresses agree (θ̄ = θ).
-/// let m = Material::new(1.0, 0.4999, PlaneCondition::Strain).unwrap();
+/// let (m, strain) = (Material::new(1.0, 0.4999).unwrap(), PlaneCondition::Strain);
 /// let q4 = ElementType::Quad4;
 /// let x = q4.reference_nodes();
 /// let u: Vec<f64> = x.iter().flat_map(|p| [1e-3 * p[0], -0.5e-3 * p[1] + 2e-4 * p[0]]).collect();
-/// let (s, sb) = (stress_at(q4, x, &m, &u, [0.3, 0.1]).unwrap(), stress_at_with(q4, x, &m, &u, [0.3, 0.1], Formulation::BBar).unwrap());
+/// let (s, sb) = (stress_at(q4, x, &m, strain, &u, [0.3, 0.1]).unwrap(), stress_at_with(q4, x, &m, strain, &u, [0.3, 0.1], Formulation::BBar).unwrap());
 /// assert!((0..3).all(|k| (s[k] - sb[k]).abs() < 1e-9 * s[0].abs()));
 /// ```
 pub fn stress_at_with(
     element: ElementType,
     coords: &[[f64; 2]],
     material: &Material,
+    plane: PlaneCondition,
     u: &[f64],
     xi: [f64; 2],
     formulation: Formulation,
 ) -> Result<[f64; 3], ElementError> {
     match formulation {
-        Formulation::Standard => stress_at(element, coords, material, u, xi),
+        Formulation::Standard => stress_at(element, coords, material, plane, u, xi),
         Formulation::BBar => {
             let e = strain_at(element, coords, u, xi)?;
             let theta_bar = projected_dilatation(element, coords, u, xi)?;
-            let (d_dev, kappa) = deviatoric_split(material);
+            let (d_dev, kappa) = deviatoric_split(material, plane);
             let s = d_dev * nalgebra::Vector3::new(e[0], e[1], e[2]);
             Ok([s[0] + kappa * theta_bar, s[1] + kappa * theta_bar, s[2]])
         }
@@ -195,9 +197,9 @@ pub fn stress_state_at(
     xi: [f64; 2],
     formulation: Formulation,
 ) -> Result<[f64; 4], ElementError> {
-    if !kinematics.has_hoop_strain() {
-        let s = stress_at_with(element, coords, material, u, xi, formulation)?;
-        return Ok([s[0], s[1], s[2], kinematics.out_of_plane_stress(material, &s).unwrap_or(0.0)]);
+    if let Some(plane) = kinematics.plane_condition() {
+        let s = stress_at_with(element, coords, material, plane, u, xi, formulation)?;
+        return Ok([s[0], s[1], s[2], plane.out_of_plane_stress(material, &s)]);
     }
     let e = strain_at(element, coords, u, xi)?;
     let hoop = hoop_strain_at(element, coords, u, xi)?;
@@ -283,8 +285,8 @@ mod tests {
             let u: Vec<f64> = coords.iter().flat_map(|&[x, y]| [0.01 * x + 0.02 * y, -0.005 * x + 0.03 * y]).collect();
             let e = strain_at(t, &coords, &u, [0.2, 0.1]).unwrap();
             assert!((e[0] - 0.01).abs() < 1e-14 && (e[1] - 0.03).abs() < 1e-14 && (e[2] - 0.015).abs() < 1e-14);
-            let m = Material::new(2.0, 0.3, PlaneCondition::Stress).unwrap();
-            let s = stress_at(t, &coords, &m, &u, [0.0, 0.1]).unwrap();
+            let m = Material::new(2.0, 0.3).unwrap();
+            let s = stress_at(t, &coords, &m, PlaneCondition::Stress, &u, [0.0, 0.1]).unwrap();
             assert!((s[2] - 2.0 / 2.6 * 0.015).abs() < 1e-14);
         }
     }

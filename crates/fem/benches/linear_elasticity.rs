@@ -28,7 +28,7 @@ use criterion::{BenchmarkGroup, BenchmarkId, Criterion, SamplingMode, criterion_
 fn cantilever(ny: usize) -> Model {
     let mesh = generate::rectangle(CellKind::Quad9, [0.0, 4.0], [0.0, 1.0], 4 * ny, ny);
     let mut model = Model::new(mesh);
-    model.add_body("domain", Material::new(1000.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
+    model.add_body("domain", Material::new(1000.0, 0.3).unwrap(), Kinematics::PlaneStress { thickness: 1.0 }).unwrap();
     model.fix("left", Component::X, 0.0).unwrap();
     model.fix("left", Component::Y, 0.0).unwrap();
     model.add_edge_load(EdgeLoad::Traction { group: "right".into(), traction: [0.0, -1.0] }).unwrap();
@@ -49,7 +49,7 @@ fn few_samples(group: &mut BenchmarkGroup<'_, WallTime>) {
 
 fn element_stiffness_bench(c: &mut Criterion) {
     let mut group = c.benchmark_group("element_stiffness");
-    let material = Material::new(1000.0, 0.3, PlaneCondition::Stress).unwrap();
+    let material = Material::new(1000.0, 0.3).unwrap();
     let kinematics = Kinematics::plane(PlaneCondition::Stress, 1.0).unwrap();
     for (name, element) in [("Q4", ElementType::Quad4), ("Q9", ElementType::Quad9), ("T6", ElementType::Tri6)] {
         // A sheared, stretched copy of the reference element (a general affine map).

@@ -9,7 +9,7 @@
 //! ```
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use contact2d_element::{Material, PlaneCondition};
+use contact2d_element::{Kinematics, Material};
 use contact2d_fem::{CholeskySolver, Component, Model, assemble};
 
 /// A factorisation of `K`.
@@ -19,9 +19,9 @@ fn main() {
     let path = std::env::args().nth(1).expect("usage: long_interface_factor <mesh.msh>");
     let mesh = contact2d_mesh::read_msh(&path).expect("a readable mesh");
     let mut model = Model::new(mesh);
-    let steel = Material::new(2e5, 0.3, PlaneCondition::Strain).expect("valid material");
-    model.add_body("lower", steel, 1.0).expect("region lower");
-    model.add_body("upper", steel, 1.0).expect("region upper");
+    let steel = Material::new(2e5, 0.3).expect("valid material");
+    model.add_body("lower", steel, Kinematics::PlaneStrain { thickness: 1.0 }).expect("region lower");
+    model.add_body("upper", steel, Kinematics::PlaneStrain { thickness: 1.0 }).expect("region upper");
     model.fix("lower_bottom", Component::X, 0.0).expect("group lower_bottom");
     model.fix("lower_bottom", Component::Y, 0.0).expect("group lower_bottom");
     model.fix("upper_top", Component::X, 0.0).expect("group upper_top");

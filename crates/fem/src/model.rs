@@ -71,7 +71,7 @@ impl Body {
     ///
     /// # Errors
     /// [`FemError::Element`] naming the body and the cell's tag (not expected once the body was
-    /// validated by [`Model::add_body_with`]).
+    /// validated by [`Model::add_body_in`]).
     pub fn cell_stiffness(&self, mesh: &Mesh, i: usize) -> Result<DMatrix<f64>, FemError> {
         let element = self.elements[i];
         element_stiffness_with(
@@ -169,7 +169,8 @@ impl Model {
         }
     }
 
-    /// Adds the 2D physical group `region` as a body of `material` and `thickness`, checking every
+    /// Adds the 2D physical group `region` as a body of `material` with its [`Kinematics`]
+    /// (plane stress or plane strain with a thickness, or a body of revolution), checking every
     /// cell's Jacobian at its nodes and stiffness Gauss points.
     ///
     /// Cells drawn clockwise (a Gmsh surface from a clockwise curve loop: det J < 0 throughout
@@ -182,36 +183,17 @@ impl Model {
     /// # Errors
     /// Unknown or non-2D group, unsupported cell kinds, a non-positive thickness, or an
     /// [`FemError::InvertedElement`] naming the first truly inverted or degenerate cell.
-    pub fn add_body(&mut self, region: &str, material: Material, thickness: f64) -> Result<BodyId, FemError> {
-        self.add_body_with(region, material, thickness, Formulation::Standard)
+    pub fn add_body(&mut self, region: &str, material: Material, kinematics: Kinematics) -> Result<BodyId, FemError> {
+        self.add_body_in(region, material, kinematics, Formulation::Standard)
     }
 
-    /// As [`Model::add_body`], with the body's [`Formulation`].
+    /// As [`Model::add_body`], with the body's [`Formulation`]. A body of revolution
+    /// ([`Kinematics::Axisymmetric`]) must have every node at `x = r ≥ 0`.
     ///
     /// # Errors
-    /// As [`Model::add_body`], and [`FemError::Element`] (an
-    /// [`ElementError::UnsupportedFormulation`]) for a cell kind without that formulation
-    /// (B-bar on Tri3).
-    pub fn add_body_with(
-        &mut self,
-        region: &str,
-        material: Material,
-        thickness: f64,
-        formulation: Formulation,
-    ) -> Result<BodyId, FemError> {
-        let kinematics = Kinematics::plane(material.plane(), thickness).map_err(|_| {
-            FemError::InvalidInput(format!("body \"{region}\": thickness must be positive, got {thickness}"))
-        })?;
-        self.add_body_in(region, material, kinematics, formulation)
-    }
-
-    /// As [`Model::add_body_with`], with the body's [`Kinematics`] given whole (a plane one, or
-    /// [`Kinematics::Axisymmetric`]: then the material's plane condition is not used, and every
-    /// node must lie at `x = r ≥ 0`).
-    ///
-    /// # Errors
-    /// As [`Model::add_body_with`]; [`FemError::InvalidRegion`] naming the first node at `r < 0`
-    /// of a body of revolution.
+    /// As [`Model::add_body`]; [`FemError::Element`] (an [`ElementError::UnsupportedFormulation`])
+    /// for a cell kind without that formulation (B-bar on Tri3); [`FemError::InvalidRegion`]
+    /// naming the first node at `r < 0` of a body of revolution.
     pub fn add_body_in(
         &mut self,
         region: &str,
@@ -219,6 +201,11 @@ impl Model {
         kinematics: Kinematics,
         formulation: Formulation,
     ) -> Result<BodyId, FemError> {
+        if let Some(thickness) = kinematics.thickness().filter(|t| !(t.is_finite() && *t > 0.0)) {
+            return Err(FemError::InvalidInput(format!(
+                "body \"{region}\": thickness must be positive, got {thickness}"
+            )));
+        }
         if let Some(other) = self.bodies.iter().find(|b| b.kinematics.has_hoop_strain() != kinematics.has_hoop_strain())
         {
             return Err(FemError::InvalidInput(format!(
@@ -629,32 +616,31 @@ fn check_cell_jacobians(mesh: &Mesh, body: &Body, cells: impl Iterator<Item = us
 #[allow(clippy::unwrap_used)]
 mod tests {
     use super::*;
-    use contact2d_element::PlaneCondition;
     use contact2d_mesh::generate::rectangle;
 
     #[test]
     fn formulation_is_stored_checked_and_defaults_to_standard() {
-        let m = Material::new(1.0, 0.4999, PlaneCondition::Strain).unwrap();
+        let m = Material::new(1.0, 0.4999).unwrap();
         let mut model = Model::new(rectangle(CellKind::Quad9, [0.0, 1.0], [0.0, 1.0], 2, 2));
-        let id = model.add_body("domain", m, 1.0).unwrap();
+        let id = model.add_body("domain", m, Kinematics::PlaneStrain { thickness: 1.0 }).unwrap();
         assert_eq!(model.bodies[id.0].formulation, Formulation::Standard);
         model.set_formulation(id, Formulation::BBar).unwrap();
         assert_eq!(model.bodies[id.0].formulation, Formulation::BBar);
         assert!(matches!(model.set_formulation(BodyId(7), Formulation::BBar), Err(FemError::InvalidInput(_))));
 
         let mut tri3 = Model::new(rectangle(CellKind::Tri3, [0.0, 1.0], [0.0, 1.0], 2, 2));
-        let e = tri3.add_body_with("domain", m, 1.0, Formulation::BBar);
+        let e = tri3.add_body_in("domain", m, Kinematics::PlaneStrain { thickness: 1.0 }, Formulation::BBar);
         assert!(matches!(e, Err(FemError::Element { source: ElementError::UnsupportedFormulation { .. }, .. })));
-        let id = tri3.add_body("domain", m, 1.0).unwrap();
+        let id = tri3.add_body("domain", m, Kinematics::PlaneStrain { thickness: 1.0 }).unwrap();
         assert!(tri3.set_formulation(id, Formulation::BBar).is_err());
         assert_eq!(tri3.bodies[id.0].formulation, Formulation::Standard);
     }
 
     #[test]
     fn a_node_value_is_checked_against_the_groups_values() {
-        let m = Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap();
+        let m = Material::new(1.0, 0.3).unwrap();
         let mut model = Model::new(rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 2, 2));
-        model.add_body("domain", m, 1.0).unwrap();
+        model.add_body("domain", m, Kinematics::PlaneStress { thickness: 1.0 }).unwrap();
         model.fix("left", Component::X, 0.0).unwrap();
         let corner = NodeId((0..model.mesh.points.len()).find(|&i| model.mesh.points[i] == [0.0, 0.0]).unwrap());
         // The same value as the group's: consistent; a node of no group: a constrained DOF more.
@@ -670,10 +656,10 @@ mod tests {
 
     #[test]
     fn moving_points_gives_the_model_built_on_the_moved_mesh() {
-        let m = Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap();
+        let m = Material::new(1.0, 0.3).unwrap();
         let build = |mesh: Mesh| {
             let mut model = Model::new(mesh);
-            model.add_body("domain", m, 1.0).unwrap();
+            model.add_body("domain", m, Kinematics::PlaneStress { thickness: 1.0 }).unwrap();
             model
         };
         let mesh = rectangle(CellKind::Quad9, [0.0, 4.0], [0.0, 4.0], 4, 4);

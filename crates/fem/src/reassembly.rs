@@ -156,14 +156,14 @@ mod tests {
 
     use super::*;
     use crate::dof::Component;
-    use contact2d_element::{Material, PlaneCondition};
+    use contact2d_element::{Kinematics, Material};
     use contact2d_mesh::generate::rectangle;
     use contact2d_mesh::morph::move_nodes;
     use contact2d_mesh::{CellKind, NodeId};
 
     fn model(mesh: contact2d_mesh::Mesh) -> Model {
         let mut model = Model::new(mesh);
-        model.add_body("domain", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
+        model.add_body("domain", Material::new(1.0, 0.3).unwrap(), Kinematics::PlaneStress { thickness: 1.0 }).unwrap();
         model.fix("left", Component::X, 0.0).unwrap();
         model.fix("bottom", Component::Y, 0.0).unwrap();
         model.fix("right", Component::X, 0.1).unwrap();

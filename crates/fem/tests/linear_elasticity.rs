@@ -2,7 +2,7 @@
 //! reaction balance, symbolic reuse, and the error paths for bad models.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use contact2d_element::{Material, PlaneCondition};
+use contact2d_element::{Kinematics, Material};
 use contact2d_fem::{
     CholeskySolver, Component, FemError, Model, StressRecovery, nodal_stresses, solve_linear, strain_energy,
 };
@@ -13,7 +13,7 @@ use contact2d_mesh::{CellKind, generate::rectangle};
 fn uniaxial(kind: CellKind) -> (Model, f64) {
     let mesh = rectangle(kind, [0.0, 2.0], [0.0, 1.0], 4, 3);
     let mut model = Model::new(mesh);
-    model.add_body("domain", Material::new(200.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
+    model.add_body("domain", Material::new(200.0, 0.3).unwrap(), Kinematics::PlaneStress { thickness: 1.0 }).unwrap();
     model.fix("left", Component::X, 0.0).unwrap();
     model.fix("bottom", Component::Y, 0.0).unwrap();
     let delta = 0.01;
@@ -63,7 +63,7 @@ fn refactor_reuses_the_symbolic_analysis() {
 fn unconstrained_body_is_a_typed_error() {
     let mesh = rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 2, 2);
     let mut model = Model::new(mesh);
-    model.add_body("domain", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
+    model.add_body("domain", Material::new(1.0, 0.3).unwrap(), Kinematics::PlaneStress { thickness: 1.0 }).unwrap();
     model.fix("left", Component::X, 0.0).unwrap(); // u2 and rotation... rotation held, u2 free
     match solve_linear(&model) {
         Err(FemError::UnconstrainedBody { free_modes: 1, .. }) => {}
@@ -75,11 +75,17 @@ fn unconstrained_body_is_a_typed_error() {
 fn conflicting_dirichlet_and_bad_groups_are_typed_errors() {
     let mesh = rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 2, 2);
     let mut model = Model::new(mesh);
-    let m = Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap();
-    assert!(matches!(model.add_body("nope", m, 1.0), Err(FemError::Mesh(_))));
-    assert!(matches!(model.add_body("left", m, 1.0), Err(FemError::InvalidRegion { .. })));
-    assert!(matches!(model.add_body("domain", m, 0.0), Err(FemError::InvalidInput(_))));
-    model.add_body("domain", m, 1.0).unwrap();
+    let m = Material::new(1.0, 0.3).unwrap();
+    assert!(matches!(model.add_body("nope", m, Kinematics::PlaneStress { thickness: 1.0 }), Err(FemError::Mesh(_))));
+    assert!(matches!(
+        model.add_body("left", m, Kinematics::PlaneStress { thickness: 1.0 }),
+        Err(FemError::InvalidRegion { .. })
+    ));
+    assert!(matches!(
+        model.add_body("domain", m, Kinematics::PlaneStress { thickness: 0.0 }),
+        Err(FemError::InvalidInput(_))
+    ));
+    model.add_body("domain", m, Kinematics::PlaneStress { thickness: 1.0 }).unwrap();
     model.fix("left", Component::X, 0.0).unwrap();
     model.fix("bottom", Component::X, 1.0).unwrap();
     assert!(matches!(model.dof_map(), Err(FemError::ConflictingDirichlet { .. })));
@@ -94,7 +100,7 @@ fn inverted_element_is_named() {
     let centre = mesh.points.iter().position(|p| *p == [0.5, 0.5]).unwrap();
     mesh.points[centre] = [0.1, 0.1];
     let mut model = Model::new(mesh);
-    match model.add_body("domain", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0) {
+    match model.add_body("domain", Material::new(1.0, 0.3).unwrap(), Kinematics::PlaneStress { thickness: 1.0 }) {
         Err(FemError::InvertedElement { cell: 1, .. }) => {}
         other => panic!("expected InvertedElement for cell 1, got {other:?}"),
     }
@@ -106,7 +112,7 @@ fn inverted_element_is_named() {
 fn edge_traction_scales_with_the_body_thickness() {
     for thickness in [1.0, 2.0, 0.25] {
         let mut m = Model::new(rectangle(CellKind::Quad4, [0.0, 1.0], [0.0, 1.0], 1, 1));
-        m.add_body("domain", Material::new(1.0, 0.0, PlaneCondition::Stress).unwrap(), thickness).unwrap();
+        m.add_body("domain", Material::new(1.0, 0.0).unwrap(), Kinematics::PlaneStress { thickness }).unwrap();
         m.fix("left", Component::X, 0.0).unwrap();
         m.fix("bottom", Component::Y, 0.0).unwrap();
         m.add_edge_load(contact2d_fem::EdgeLoad::Traction { group: "right".into(), traction: [1.0, 0.0] }).unwrap();
@@ -129,7 +135,7 @@ fn an_unsupported_piece_of_a_body_is_reported() {
         b.physical_tags = vec![domain_tag];
     }
     let mut model = Model::new(mesh);
-    model.add_body("domain", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
+    model.add_body("domain", Material::new(1.0, 0.3).unwrap(), Kinematics::PlaneStress { thickness: 1.0 }).unwrap();
     model.fix("left", Component::X, 0.0).unwrap();
     model.fix("left", Component::Y, 0.0).unwrap();
     match solve_linear(&model) {
@@ -146,7 +152,9 @@ fn body_forces_sum_to_the_weight() {
     use contact2d_fem::assemble_body_forces;
     for kind in [CellKind::Tri3, CellKind::Tri6, CellKind::Quad4, CellKind::Quad8, CellKind::Quad9] {
         let mut model = Model::new(rectangle(kind, [0.0, 2.0], [0.0, 1.5], 3, 2));
-        model.add_body("domain", Material::new(200.0, 0.3, PlaneCondition::Stress).unwrap(), 0.5).unwrap();
+        model
+            .add_body("domain", Material::new(200.0, 0.3).unwrap(), Kinematics::PlaneStress { thickness: 0.5 })
+            .unwrap();
         let f = assemble_body_forces(&model, &[("domain".into(), [0.25, -2.0])]).unwrap();
         let (fx, fy) = f.chunks(2).fold((0.0, 0.0), |(x, y), c| (x + c[0], y + c[1]));
         let volume = 2.0 * 1.5 * 0.5;

@@ -2,7 +2,7 @@
 //! (faer's own AMD factorisation) and against the definition of the Schur complement.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use contact2d_element::{Material, PlaneCondition};
+use contact2d_element::{Kinematics, Material};
 use contact2d_fem::{CholeskySolver, Component, Dof, DofKind, LinearSystem, Model, Ordering, assemble};
 use contact2d_fem::{EdgeLoad, fill_reducing_permutation};
 use contact2d_mesh::{CellKind, generate::rectangle};
@@ -12,7 +12,7 @@ use faer::Mat;
 fn cantilever(kind: CellKind, nx: usize, ny: usize) -> (Model, LinearSystem) {
     let mesh = rectangle(kind, [0.0, nx as f64 / ny as f64], [0.0, 1.0], nx, ny);
     let mut model = Model::new(mesh);
-    model.add_body("domain", Material::new(1000.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
+    model.add_body("domain", Material::new(1000.0, 0.3).unwrap(), Kinematics::PlaneStress { thickness: 1.0 }).unwrap();
     model.fix("left", Component::X, 0.0).unwrap();
     model.fix("left", Component::Y, 0.0).unwrap();
     model.add_edge_load(EdgeLoad::Traction { group: "right".into(), traction: [0.0, -1.0] }).unwrap();

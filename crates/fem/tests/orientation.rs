@@ -2,7 +2,7 @@
 //! answer as the counter-clockwise mesh; only a truly inverted cell is an error.
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
-use contact2d_element::{Material, PlaneCondition};
+use contact2d_element::{Kinematics, Material};
 use contact2d_fem::{BodyId, Component, EdgeLoad, FemError, Model, solve_linear};
 use contact2d_mesh::generate::{MappedGrid, Side, mapped_grid, rectangle, side_name};
 use contact2d_mesh::{CellKind, Mesh, cell_orientation, read_msh, signed_area};
@@ -48,7 +48,7 @@ fn distorted(kind: CellKind) -> Mesh {
 /// Clamped left edge, shear traction on the right edge: a solution that uses every DOF.
 fn cantilever(mesh: Mesh) -> Model {
     let mut model = Model::new(mesh);
-    model.add_body("domain", Material::new(200.0, 0.3, PlaneCondition::Strain).unwrap(), 1.0).unwrap();
+    model.add_body("domain", Material::new(200.0, 0.3).unwrap(), Kinematics::PlaneStrain { thickness: 1.0 }).unwrap();
     model.fix("left", Component::X, 0.0).unwrap();
     model.fix("left", Component::Y, 0.0).unwrap();
     model.add_edge_load(EdgeLoad::Traction { group: "right".into(), traction: [0.2, -1.0] }).unwrap();
@@ -90,7 +90,9 @@ fn a_clockwise_twin_passes_the_patch_test() {
     for kind in KINDS {
         let twin = clockwise_twin(&rectangle(kind, [0.0, 2.0], [0.0, 1.0], 4, 3));
         let mut model = Model::new(twin);
-        model.add_body("domain", Material::new(200.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
+        model
+            .add_body("domain", Material::new(200.0, 0.3).unwrap(), Kinematics::PlaneStress { thickness: 1.0 })
+            .unwrap();
         model.fix("left", Component::X, 0.0).unwrap();
         model.fix("bottom", Component::Y, 0.0).unwrap();
         model.fix("right", Component::X, 0.01).unwrap();
@@ -117,7 +119,8 @@ fn a_gmsh_surface_from_a_clockwise_curve_loop_is_accepted() {
                 }
             }
             let mut model = Model::new(mesh.clone());
-            let body = model.add_body(region, Material::new(100.0, 0.25, PlaneCondition::Stress).unwrap(), 1.0);
+            let body =
+                model.add_body(region, Material::new(100.0, 0.25).unwrap(), Kinematics::PlaneStress { thickness: 1.0 });
             assert_eq!(body.unwrap(), BodyId(0), "{file} {region}");
             model.fix(&format!("{region}_left"), Component::X, 0.0).unwrap();
             model.fix(&format!("{region}_bottom"), Component::Y, 0.0).unwrap();
@@ -141,7 +144,8 @@ fn a_truly_inverted_cell_is_still_named() {
         mesh.points[centre] = [0.1, 0.1];
         for mesh in [mesh.clone(), clockwise_twin(&mesh)] {
             let mut model = Model::new(mesh);
-            match model.add_body("domain", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0) {
+            match model.add_body("domain", Material::new(1.0, 0.3).unwrap(), Kinematics::PlaneStress { thickness: 1.0 })
+            {
                 Err(e @ FemError::InvertedElement { cell: 1, .. }) => {
                     assert!(e.to_string().contains("element 1 is inverted"), "{e}");
                 }

@@ -11,7 +11,7 @@
 //! (resultant of the pressure `p a (1, 1)`, moment about the centre zero, both exact for any
 //! chain of edges whose end nodes lie on the arc) and a cantilever with an end shear.
 
-use contact2d_element::{Material, PlaneCondition};
+use contact2d_element::{Kinematics, Material, PlaneCondition};
 use contact2d_fem::{Component, EdgeLoad, LinearSystem, Model, Solution, solve_linear};
 use contact2d_mesh::CellKind;
 use contact2d_mesh::generate::rectangle;
@@ -114,7 +114,7 @@ pub fn cantilever_balance(
     ny: usize,
 ) -> Result<Balance, VerifyError> {
     let mut model = Model::new(rectangle(kind, [0.0, beam.length], [0.0, beam.depth], nx, ny));
-    model.add_body("domain", Material::new(200e3, 0.3, plane)?, 1.0)?;
+    model.add_body("domain", Material::new(200e3, 0.3)?, Kinematics::plane(plane, 1.0)?)?;
     model.fix("left", Component::X, 0.0)?;
     model.fix("left", Component::Y, 0.0)?;
     model.add_edge_load(EdgeLoad::Traction { group: "right".into(), traction: [0.0, -beam.shear] })?;

@@ -25,7 +25,7 @@
 
 use std::f64::consts::FRAC_PI_2;
 
-use contact2d_element::{Material, PlaneCondition};
+use contact2d_element::{Kinematics, Material};
 use contact2d_fem::{Component, EdgeLoad, Model, StressRecovery, nodal_stresses, solve_linear};
 use contact2d_mesh::generate::{MappedGrid, Side, mapped_grid};
 use contact2d_mesh::{CellKind, Mesh};
@@ -157,7 +157,7 @@ pub struct ScfResult {
 pub fn solve_scf(kind: CellKind, plate: &PlateWithHole, n: usize) -> Result<ScfResult, VerifyError> {
     let mesh = plate_with_hole_mesh(kind, plate, n)?;
     let mut model = Model::new(mesh);
-    let body = model.add_body("plate", Material::new(1.0, 0.3, PlaneCondition::Stress)?, 1.0)?;
+    let body = model.add_body("plate", Material::new(1.0, 0.3)?, Kinematics::PlaneStress { thickness: 1.0 })?;
     model.fix("sym_x", Component::X, 0.0)?;
     model.fix("sym_y", Component::Y, 0.0)?;
     model.add_edge_load(EdgeLoad::Traction { group: "loaded".into(), traction: [1.0, 0.0] })?;
@@ -287,7 +287,11 @@ mod tests {
                 assert_eq!(mesh.points[n.0][0], 0.0);
             }
             let mut model = Model::new(mesh);
-            assert!(model.add_body("plate", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).is_ok());
+            assert!(
+                model
+                    .add_body("plate", Material::new(1.0, 0.3).unwrap(), Kinematics::PlaneStress { thickness: 1.0 })
+                    .is_ok()
+            );
         }
         assert!(plate_with_hole_mesh(CellKind::Quad4, &plate, 6).is_err());
         let bad = PlateWithHole { radius: 1.5, ..plate };

@@ -22,7 +22,7 @@
 //! degree 1, parabolas for degree 2) perturbs the domain by `O(h^{k+1})`, which keeps both rates
 //! (Ciarlet & Raviart 1972; Strang & Fix 1973, ch. 4).
 
-use contact2d_element::{Formulation, GaussRule, Material, PlaneCondition, map_point, stress_at_with};
+use contact2d_element::{Formulation, GaussRule, Kinematics, Material, PlaneCondition, map_point, stress_state_at};
 use contact2d_fem::{BodyId, Component, EdgeLoad, Model, Solution, StressRecovery, nodal_stresses, solve_linear};
 use contact2d_mesh::CellKind;
 use contact2d_mesh::generate::annulus_sector;
@@ -111,8 +111,8 @@ pub fn lame_model(
         setup.cells_around_per_radial * n_radial,
     );
     let mut model = Model::new(mesh);
-    let material = Material::new(setup.youngs_modulus, setup.poissons_ratio, plane)?;
-    let body = model.add_body_with("domain", material, 1.0, setup.formulation)?;
+    let material = Material::new(setup.youngs_modulus, setup.poissons_ratio)?;
+    let body = model.add_body_in("domain", material, Kinematics::plane(plane, 1.0)?, setup.formulation)?;
     model.fix("start", Component::Y, 0.0)?;
     model.fix("end", Component::X, 0.0)?;
     model.add_edge_load(EdgeLoad::Pressure { group: "inner".into(), pressure: setup.pressure })?;
@@ -191,7 +191,9 @@ fn stress_l2_error(model: &Model, body: BodyId, u: &[f64], exact: &LameCylinder)
         let rule: GaussRule = error_rule(element)?;
         for (xi, w) in rule.points.iter().zip(&rule.weights) {
             let p = map_point(element, &coords, *xi)?;
-            let sh = stress_at_with(element, &coords, &b.material, &ue, *xi, b.formulation)?;
+            let [s11, s22, s12, _] =
+                stress_state_at(element, &coords, &b.material, &b.kinematics, &ue, *xi, b.formulation)?;
+            let sh = [s11, s22, s12];
             let se = exact.stress(p.x);
             let f = w * p.det_j;
             err += f * (0..3).map(|k| (sh[k] - se[k]).powi(2)).sum::<f64>();

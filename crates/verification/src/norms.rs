@@ -70,7 +70,7 @@ pub fn error_norms(
             2 * model.mesh.num_nodes()
         )));
     }
-    let d = b.material.elasticity_matrix();
+    let d = b.kinematics.in_plane_elasticity(&b.material);
     let energy = |e: [f64; 3]| {
         let de = d * nalgebra::Vector3::new(e[0], e[1], e[2]);
         e[0] * de[0] + e[1] * de[1] + e[2] * de[2]
@@ -127,7 +127,7 @@ pub fn convergence_rate(h_coarse: f64, error_coarse: f64, h_fine: f64, error_fin
 mod tests {
     use super::*;
     use crate::analytic::AffineField;
-    use contact2d_element::{Material, PlaneCondition};
+    use contact2d_element::{Kinematics, Material};
     use contact2d_mesh::{CellKind, generate::rectangle};
 
     #[test]
@@ -135,7 +135,9 @@ mod tests {
         // u = (0.1 x, 0): ‖u‖²_L2 = ∫∫ 0.01 x² = 0.01 · 8/3 · 1 on [0,2]×[0,1];
         // ‖u‖²_E = ∫ D11 ε11² = E/(1-ν²) · 0.01 · 2 in plane stress.
         let mut model = Model::new(rectangle(CellKind::Quad9, [0.0, 2.0], [0.0, 1.0], 3, 2));
-        let body = model.add_body("domain", Material::new(1.0, 0.25, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
+        let body = model
+            .add_body("domain", Material::new(1.0, 0.25).unwrap(), Kinematics::PlaneStress { thickness: 1.0 })
+            .unwrap();
         let field = AffineField { offset: [0.0, 0.0], gradient: [[0.1, 0.0], [0.0, 0.0]] };
         let u: Vec<f64> = model.mesh.points.iter().flat_map(|&x| field.displacement(x)).collect();
         let norms = error_norms(&model, body, &u, &field).unwrap();

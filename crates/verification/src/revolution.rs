@@ -77,7 +77,7 @@ pub fn tube_model(
     let (a, b) = (setup.inner_radius, setup.outer_radius);
     let mesh = rectangle(kind, [a, b], [0.0, b - a], n_radial, n_radial);
     let mut model = Model::new(mesh);
-    let material = Material::new(setup.youngs_modulus, setup.poissons_ratio, PlaneCondition::Strain)?;
+    let material = Material::new(setup.youngs_modulus, setup.poissons_ratio)?;
     let body = model.add_body_in("domain", material, Kinematics::Axisymmetric, setup.formulation)?;
     model.fix("bottom", Component::Y, 0.0)?;
     if ends == TubeEnds::Closed {
@@ -179,7 +179,7 @@ pub fn solid_cylinder_patch(kind: CellKind, n: usize, setup: &LameSetup) -> Resu
     let radius = setup.outer_radius;
     let mesh = rectangle(kind, [0.0, radius], [0.0, radius], n, n);
     let mut model = Model::new(mesh);
-    let material = Material::new(setup.youngs_modulus, setup.poissons_ratio, PlaneCondition::Strain)?;
+    let material = Material::new(setup.youngs_modulus, setup.poissons_ratio)?;
     let body = model.add_body_in("domain", material, Kinematics::Axisymmetric, setup.formulation)?;
     model.fix_axis_nodes();
     model.fix("bottom", Component::Y, 0.0)?;
@@ -216,7 +216,7 @@ mod tests {
     #[test]
     fn a_tube_with_a_node_off_the_half_plane_is_refused() {
         let mut model = Model::new(rectangle(CellKind::Quad4, [-0.1, 1.0], [0.0, 1.0], 2, 2));
-        let m = Material::new(1.0, 0.3, PlaneCondition::Strain).unwrap();
+        let m = Material::new(1.0, 0.3).unwrap();
         let err = model.add_body_in("domain", m, Kinematics::Axisymmetric, Default::default()).unwrap_err();
         assert!(err.to_string().contains("r = x = -0.1 < 0"), "{err}");
         // A node at the round-off of the coordinates left of the axis is on the axis.

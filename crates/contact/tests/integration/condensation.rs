@@ -11,7 +11,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used, clippy::panic)]
 
 use contact2d_contact::{ContactProblem, Interface, StepStart, pair_contours, solve_frictional_active_set};
-use contact2d_element::{Material, PlaneCondition};
+use contact2d_element::{Kinematics, Material};
 use contact2d_fem::{CholeskySolver, Component, Model};
 use contact2d_mesh::generate::{MappedGrid, append_prefixed, mapped_grid, rectangle, side_name};
 use contact2d_mesh::{CellKind, Contour};
@@ -33,8 +33,8 @@ fn blocks(lift: f64, nb: usize) -> (Model, Vec<contact2d_contact::ContactPair>) 
     );
     append_prefixed(&mut mesh, &upper, "b_");
     let mut model = Model::new(mesh);
-    model.add_body("a_domain", Material::new(1.0, 0.3, PlaneCondition::Stress).unwrap(), 1.0).unwrap();
-    model.add_body("b_domain", Material::new(2.0, 0.25, PlaneCondition::Strain).unwrap(), 1.0).unwrap();
+    model.add_body("a_domain", Material::new(1.0, 0.3).unwrap(), Kinematics::PlaneStress { thickness: 1.0 }).unwrap();
+    model.add_body("b_domain", Material::new(2.0, 0.25).unwrap(), Kinematics::PlaneStrain { thickness: 1.0 }).unwrap();
     model.fix("a_bottom", Component::X, 0.0).unwrap();
     model.fix("a_bottom", Component::Y, 0.0).unwrap();
     model.fix("b_top", Component::X, 0.01).unwrap();

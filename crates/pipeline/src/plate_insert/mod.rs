@@ -14,7 +14,7 @@ use contact2d_contact::{
     BuiltProblem, ContactError, ContactProblem, HistoryStep, LoadSchedule, SolverSettings, node_to_node_targets,
     pair_contours, solve_with,
 };
-use contact2d_element::{Formulation, Material, PlaneCondition};
+use contact2d_element::{Formulation, Kinematics, Material, PlaneCondition};
 use contact2d_fem::{Component, Model};
 use contact2d_mesh::morph::move_nodes;
 use contact2d_mesh::{Contour, read_msh};
@@ -281,15 +281,16 @@ impl PlateInsert {
     /// The model of the two bodies with the boundary conditions of spec §2, and both contours.
     fn model(&self, mesh: contact2d_mesh::Mesh) -> Result<(Model, Contour, Contour), ContactError> {
         let mut model = Model::new(mesh);
-        let plate = Material::new(1.0, self.poissons_ratio, self.plane).map_err(fem_input)?;
-        let insert = Material::new(self.stiffness_ratio, self.poissons_ratio, self.plane).map_err(fem_input)?;
-        model.add_body_with("plate", plate, 1.0, self.formulation)?;
+        let plate = Material::new(1.0, self.poissons_ratio).map_err(fem_input)?;
+        let insert = Material::new(self.stiffness_ratio, self.poissons_ratio).map_err(fem_input)?;
+        let kinematics = Kinematics::plane(self.plane, 1.0).map_err(fem_input)?;
+        model.add_body_in("plate", plate, kinematics, self.formulation)?;
         for group in ["top", "bottom_plate", "right"] {
             model.fix(group, Component::Y, 0.0)?;
         }
         model.fix("right", Component::X, 1.0)?;
         if !self.rigid_insert {
-            model.add_body_with("insert", insert, 1.0, self.formulation)?;
+            model.add_body_in("insert", insert, kinematics, self.formulation)?;
             model.fix("insert_inner", Component::X, 0.0)?;
             model.fix("insert_inner", Component::Y, 0.0)?;
             model.fix("insert_symmetry", Component::Y, 0.0)?;
