@@ -231,6 +231,7 @@ async function solveScheduled() {
     const shows = { kind: "solve", scene: state.scene, text: `One solve of the controls' set-up: ${scene.user
       ? `${state.userFiles.sceneName} on ${state.userFiles.meshName}` : scene.describe(values)}.` };
     draw(view, values, shows);
+    if (scene.user) playUserSteps(view, values);
     const t2 = performance.now();
     record(view, { scene: state.scene, solve_ms: t1 - t0, draw_ms: t2 - t1, total_ms: t2 - t0 });
     $("timing").textContent = `last update ${(t2 - t0).toFixed(1)} ms: solve in WebAssembly ` +
@@ -242,6 +243,27 @@ async function solveScheduled() {
     page.run = "idle";
     if (state.queued) { state.queued = false; schedule(); }
   }
+}
+
+/** A user's scene of several load steps: every step (view.frames, one per step of its schedule)
+ * into the player, all at one scale, and the last one shown. */
+function playUserSteps(view, values) {
+  const frames = view.frames || [];
+  if (frames.length < 2) return;
+  const name = `${state.userFiles.sceneName} on ${state.userFiles.meshName}`;
+  const runFrames = frames.map((f, k) => {
+    const row = view.summary.steps[k];
+    const factors = row ? Object.entries(row.factors).map(([p, v]) => `${p} = ${+v.toPrecision(6)}`).join(", ") : "";
+    return {
+      view: { ...view, mesh: { ...view.mesh, displacement: f.displacement }, pairs: f.pairs,
+        summary: { ...view.summary, contacts: f.contacts, status: row ? row.status : view.summary.status } },
+      shows: { kind: "steps", scene: "user", step: k + 1,
+        text: `Your scene, load step ${k + 1} of ${frames.length}${factors ? ` (${factors})` : ""}: ${name}.` },
+    };
+  });
+  player.set({ kind: "user", values, frames: runFrames, first: 1, last: frames.length, interval: 400,
+    drawFrame: (v, ui, vals) => SCENES.user.draw(v, ui, vals) });
+  player.show(frames.length);
 }
 
 function record(view, timing) {

@@ -1,7 +1,7 @@
 // Issue 42's presentation items in headless Chromium, at 1366×768, 1024×768 and 390×844:
 //
-//   player (item 3)  a finished loading history and the Mindlin–Deresiewicz cycle play, pause,
-//                    step and scrub; every step is drawn at one scale: β and the charts' axes are
+//   player (item 3)  a finished loading history, the Mindlin–Deresiewicz cycle and a user's
+//                    multi-step scene play, pause, step and scrub; every step is drawn at one scale: β and the charts' axes are
 //                    the same at every step, so the drawn deformation grows with the load
 //   export (item 6)  one figure as PNG and SVG (every chart shown, the colour key, the key
 //                    numbers); the CSV holds the history's (w, l, b) and the cycle's whole loop;
@@ -161,6 +161,33 @@ try {
         const s = await page.evaluate(() => ({ status: window.contact2dPage.view.summary.status, error: window.contact2dPage.error }));
         check(!s.error && s.status === "converged", `the example pin_lug pair solves as a user's scene (status ${s.status})`);
       }
+    });
+    await section(`${tag} a user's multi-step scene plays at one scale`, async () => {
+      // The example two_blocks_press_slide pair as a user's scene: its schedule presses in two
+      // steps (0.5, then 1 × 1000 N/mm), then slides the top in four while the force is held.
+      await open(page, "?scene=user");
+      const input = await page.$("#user-input");
+      await input.uploadFile(join(web, "../scenes/generic/two_blocks_press_slide.toml"), join(web, "../meshes/generic/two_blocks.msh"));
+      await page.waitForFunction(() => window.contact2dPage.run === "idle" && window.contact2dPage.player
+        && window.contact2dPage.player.kind === "user" && window.contact2dPage.player.k === 6, { timeout: 60000 });
+      const normal = () => page.$eval('td[data-key="normal_force"]', (td) => Number(td.dataset.value));
+      const f6 = { ...(await frame(page)), P: await normal() };
+      await scrubTo(page, 1);
+      const f1 = { ...(await frame(page)), P: await normal() };
+      await page.click("#step-fwd");
+      const f2 = { ...(await frame(page)), P: await normal() };
+      check(f1.k === 1 && f2.k === 2 && f1.caption.includes("load step 1 of 6") && f2.caption.includes("load step 2 of 6"),
+        `${tag}: your scene's player scrubs to step 1, steps to 2; the table says which`);
+      // Statics of the upper block: the joint carries the press, Σλ = 0.5 × 1000 at step 1 and
+      // 1000 from step 2 (1e-9: the solve's force balance, as crates/web's two-blocks test).
+      check(Math.abs(f1.P / 500 - 1) < 1e-9 && Math.abs(f2.P / 1000 - 1) < 1e-9 && Math.abs(f6.P / 1000 - 1) < 1e-9,
+        `${tag}: Σλ at steps 1, 2, 6 = ${f1.P}, ${f2.P}, ${f6.P} (the press: 500, 1000, 1000)`);
+      check(f1.beta === f6.beta && f2.beta === f6.beta && f6.beta > 0 && f1.profileTicks === f6.profileTicks
+        && f6.profileTicks.length > 0, `${tag}: one β (${f6.beta.toPrecision(4)}) and the profile's axes at steps 1, 2, 6`);
+      await page.click("#play");
+      await page.waitForFunction(() => window.contact2dPage.player.k === 6 && !window.contact2dPage.player.playing, { timeout: 10000 });
+      check(true, `${tag}: play runs your scene's steps to 6 and stops`);
+      if (viewport.width === 1366) await page.screenshot({ path: join(out, "present_user_steps_1366.png") });
     });
     await section(`${tag} exercises: predict, then reveal`, async () => {
       await open(page, viewport.width > 900 ? "?projector=1" : "");
