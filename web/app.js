@@ -652,8 +652,11 @@ function build() {
   $("pin").addEventListener("click", togglePin);
   // Exercises (exercises.js): the page's hooks to open a set-up and to make a change.
   installExercises(page, {
-    open: (ex) => showScene("flagship", { ...defaults("flagship"), ...ex.start, mag: state.values.mag,
-      projector: state.values.projector }, state.scene !== "flagship"),
+    open: (ex) => {
+      const name = ex.scene || "flagship";
+      showScene(name, { ...defaults(name), ...ex.start, mag: state.values.mag, projector: state.values.projector },
+        state.scene !== name);
+    },
     change: (values) => { Object.assign(state.values, values); showValues(); schedule(); },
     // The solve of the set-up on screen is done (none running, scheduled or queued).
     solved: async () => {
