@@ -19,7 +19,9 @@ import { readUrl, urlOf } from "./url.js";
 import { EXPLAIN } from "./explain.js";
 
 const $ = (id) => document.getElementById(id);
-const SCENES = { ...PAPER_SCENES, ...GENERIC_SCENES };
+// The ball on a plate (a body of revolution) beside the plane Hertz tab.
+const { flagship: plate, hertz, ...paperRest } = PAPER_SCENES;
+const SCENES = { flagship: plate, hertz, ball_on_plate: GENERIC_SCENES.ball_on_plate, ...paperRest, ...GENERIC_SCENES };
 const COMMON = [
   { key: "mag", id: "mag", label: "displacement magnification β", kind: "range", min: 0, max: 3, step: 0.1, value: 1,
     show: (v) => Number(v).toFixed(1) },

@@ -151,7 +151,8 @@ try {
         const repo = join(web, "..", name.endsWith(".toml") ? "scenes/generic" : "meshes/generic", name);
         return bytes.equals(readFileSync(repo));
       }));
-      check(links.length === 8 && same.every(Boolean) && links.every(([h, d]) => h.endsWith(d)),
+      // Five bundled generic scenes (crates/web's BUNDLED_GENERIC), a .toml and a .msh each.
+      check(links.length === 10 && same.every(Boolean) && links.every(([h, d]) => h.endsWith(d)),
         `${tag}: ${links.length} example files offered, each the repository's bytes`);
       if (viewport.width === 1366) {
         const input = await page.$("#user-input");

@@ -47,8 +47,8 @@ pub struct BundledGeneric {
 /// The bundled generic scenes the page solves through [`solve_bundled_generic`]. The pin in a
 /// lug runs on `pin_lug_L1.msh` (20 elements per arc; the scene's own L2 mesh takes about
 /// 0.2 s per update natively, too slow to follow a slider in the browser); the others on the
-/// scene's own mesh.
-pub const BUNDLED_GENERIC: [BundledGeneric; 4] = [
+/// scene's own mesh (the ball on a plate, a body of revolution, on its small teaching mesh).
+pub const BUNDLED_GENERIC: [BundledGeneric; 5] = [
     BundledGeneric {
         name: "pin_lug",
         text: include_str!("../../../scenes/generic/pin_lug.toml"),
@@ -66,6 +66,12 @@ pub const BUNDLED_GENERIC: [BundledGeneric; 4] = [
         text: include_str!("../../../scenes/generic/incline_push.toml"),
         mesh_file: "incline.msh",
         mesh_bytes: include_bytes!("../../../meshes/generic/incline.msh"),
+    },
+    BundledGeneric {
+        name: "ball_on_plate",
+        text: include_str!("../../../scenes/generic/ball_on_plate.toml"),
+        mesh_file: "ball_on_plate.msh",
+        mesh_bytes: include_bytes!("../../../meshes/generic/ball_on_plate.msh"),
     },
     BundledGeneric {
         name: "two_blocks_press_slide",
