@@ -33,6 +33,7 @@ const HISTORY_STEPS = 10;
 const page = { ready: null, view: null, timings: [], updates: 0, error: null, run: "idle", shows: null, history: [],
   solvesStarted: 0, solveWindows: [] };
 window.contact2dPage = page;
+page.charts = lastCharts;
 
 const state = { scene: "flagship", values: {}, view: null, generation: 0, frame: 0, history: [], userFiles: null };
 // The player of a finished history's or cycle's steps (player.js).

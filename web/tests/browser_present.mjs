@@ -119,6 +119,7 @@ try {
       await page.waitForFunction(() => window.contact2dPage.run === "idle" && window.contact2dPage.player
         && window.contact2dPage.player.k === 10, { timeout: 60000 });
       const shown = await page.evaluate(() => ({
+        series: ["profile", "history-plot"].map((id) => window.contact2dPage.charts[id].series.map((s) => s.label)),
         canvases: ["mesh", "profile", "history-plot"].map((id) => document.getElementById(id)).map((c) => [c.width, c.height]),
         history: window.contact2dPage.history, l: document.querySelector('td[data-key="l"]').textContent,
       }));
@@ -139,8 +140,25 @@ try {
       const svg = String(files["figure.svg"] || "");
       const images = (svg.match(/<image /g) || []).length;
       const key = ["stick", "slip +x", "slip −x", "contact (μ = 0)", "free"].every((n) => svg.includes(`>${n}</text>`));
-      check(svg.startsWith("<svg") && images === 3 && key && svg.includes(`contact end l = ${shown.l}`),
-        `${tag}: the SVG figure: ${images} charts, the colour key, the key numbers (l = ${shown.l})`);
+      check(svg.startsWith("<svg") && images === 1 && key && svg.includes(`contact end l = ${shown.l}`),
+        `${tag}: the SVG figure: the mesh as its one image, the colour key, the key numbers (l = ${shown.l})`);
+      // The charts as vectors: every series of the profile and the history a group holding a
+      // <polyline> (a line) or <path>s (dots), its legend entry as text, and the axes' ticks as
+      // text; the document parses as SVG.
+      const esc = (t) => t.replaceAll("&", "&amp;").replaceAll("<", "&lt;").replaceAll(">", "&gt;").replaceAll('"', "&quot;");
+      const vector = shown.series.flat().map((label) => {
+        const at = svg.indexOf(`<g class="series" data-series="${esc(label)}">`);
+        const body = at < 0 ? "" : svg.slice(at, svg.indexOf("</g>", at));
+        return { label, ok: /<polyline |<path /.test(body) && svg.includes(`>${esc(label)}</text>`) };
+      });
+      const parsed = await page.evaluate((text) => {
+        const doc = new DOMParser().parseFromString(text, "image/svg+xml");
+        return !doc.querySelector("parsererror") && doc.querySelectorAll("polyline").length;
+      }, svg);
+      const ticks = ["0", "0.1", "0.2"].every((t) => svg.includes(`>${t}</text>`));
+      check(vector.length >= 4 && vector.every((v) => v.ok) && parsed > 0 && ticks,
+        `${tag}: the SVG draws the charts as vectors: ${vector.length} series (${vector.map((v) => v.label).join(", ")}) ` +
+        `each as <polyline>/<path> with its legend, ${parsed} polylines, tick labels as text`);
     });
     await section(`${tag} example scene files`, async () => {
       await open(page, "?scene=user");
