@@ -151,7 +151,7 @@ export const EXPLAIN = {
   the axis on the left): each element stands for the ring it sweeps, P is the total force over the
   circumference, and the pressure is per unit area. Hertz's sphere: E* = [(1 − ν1²)/E1 + (1 − ν2²)/E2]⁻¹,
   a = (3PR/(4E*))^(1/3), p0 = 3P/(2πa²), p(r) = p0 √(1 − r²/a²): the contact radius grows as P^(1/3), not as
-  the roller's half-width √F of the plane Hertz tab.</p><h3>Symbols</h3><dl><dt>Σλ</dt><dd>the contact's
+  the roller's half-width √F of the plane Hertz tab.</p>${COULOMB}<h3>Symbols</h3><dl><dt>Σλ</dt><dd>the contact's
   total normal force, N (over the whole circumference: it equals P)</dd><dt>r</dt><dd>distance from the
   axis, mm</dd><dt>a</dt><dd>contact radius; the computed one is r = R sin(s/R) of the contact's arc s on the
   ball</dd><dt>p0</dt><dd>the peak pressure, on the axis</dd></dl>

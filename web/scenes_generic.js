@@ -192,7 +192,7 @@ export const ballRadiusOf = (arc) => BALL.R * Math.sin(arc / BALL.R);
 
 const ballOnPlate = {
   title: "Hertz: ball on a plate (axisymmetric)",
-  short: "Ball on plate",
+  short: "Sphere",
   keys: ["a", "a_hertz", "p_max", "p0_hertz"],
   controls: [
     { key: "force", id: "g-force", label: "total force P on the ball, N", kind: "range", min: 1000, max: 10000,
