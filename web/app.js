@@ -7,19 +7,23 @@
 // again). The table's caption always says what it shows: one solve of the controls' set-up, or
 // which step of which history; the published values whenever the controls sit on a published
 // set-up. Scenes are entries of SCENES (scenes_paper.js, scenes_generic.js); URL state in url.js,
-// drawing in chart.js, the explanation panel in explain.js.
+// drawing in chart.js, the explanation panel in explain.js, the solver's thread in solver.js,
+// the figure and CSV export in export.js.
 import init, { bundled_json } from "./pkg/contact2d_web.js";
 import { PAPER_SCENES, PRESETS, flagshipParams, flagshipSteps } from "./scenes_paper.js";
 import { GENERIC_SCENES, readUserFiles } from "./scenes_generic.js";
-import { chart, chartCsv, drawMesh, lastCharts, setFontPx } from "./chart.js";
+import { chart, drawMesh, lastCharts, setFontPx } from "./chart.js";
 import { makePlayer } from "./player.js";
-import { figureParts, figurePng, figureSvg } from "./figure.js";
+import { installExport } from "./export.js";
+import { Cancelled, makeSolver } from "./solver.js";
 import { installExercises } from "./exercises.js";
 import { readUrl, urlOf } from "./url.js";
 import { EXPLAIN } from "./explain.js";
 
 const $ = (id) => document.getElementById(id);
-const SCENES = { ...PAPER_SCENES, ...GENERIC_SCENES };
+// The ball on a plate (a body of revolution) beside the plane Hertz tab.
+const { flagship: plate, hertz, ...paperRest } = PAPER_SCENES;
+const SCENES = { flagship: plate, hertz, ball_on_plate: GENERIC_SCENES.ball_on_plate, ...paperRest, ...GENERIC_SCENES };
 const COMMON = [
   { key: "mag", id: "mag", label: "displacement magnification β", kind: "range", min: 0, max: 3, step: 0.1, value: 1,
     show: (v) => Number(v).toFixed(1) },
@@ -31,6 +35,7 @@ const HISTORY_STEPS = 10;
 const page = { ready: null, view: null, timings: [], updates: 0, error: null, run: "idle", shows: null, history: [],
   solvesStarted: 0, solveWindows: [] };
 window.contact2dPage = page;
+page.charts = lastCharts;
 
 const state = { scene: "flagship", values: {}, view: null, generation: 0, frame: 0, history: [], userFiles: null };
 // The player of a finished history's or cycle's steps (player.js).
@@ -83,60 +88,15 @@ function showValues() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The solver's thread (worker.js): requests answered in order; cancel = terminate and restart.
+// The solver's thread (solver.js); Cancel also stops a history and drops a queued solve.
 
-class Cancelled extends Error {}
-const solver = { worker: null, pending: new Map(), next: 0 };
+const solver = makeSolver(page);
+const solveInWorker = (request) => solver.solve(request);
 
-function startWorker() {
-  solver.worker = new Worker(new URL("./worker.js", import.meta.url), { type: "module" });
-  solver.worker.onmessage = ({ data }) => {
-    const p = solver.pending.get(data.id);
-    if (!p) return;
-    p.arrived = performance.now();
-    solver.pending.delete(data.id);
-    if (data.error) p.reject(new Error(data.error)); else p.resolve(data);
-  };
-  solver.worker.onerror = (e) => {
-    for (const p of solver.pending.values()) p.reject(new Error(`the solver's thread failed: ${e.message || e}`));
-    solver.pending.clear();
-  };
-}
-
-/** Sends one request to the worker; resolves to {view, ms}. While it runs longer than 0.3 s the
- * page shows the elapsed time and a Cancel button. */
-function solveInWorker(request) {
-  page.solvesStarted += 1;
-  const id = ++solver.next, t0 = performance.now();
-  const busy = setInterval(() => {
-    const s = (performance.now() - t0) / 1000;
-    if (s < 0.3) return;
-    $("busy").hidden = false;
-    $("busy-time").textContent = `solving… ${s.toFixed(1)} s`;
-  }, 100);
-  const entry = {};
-  return new Promise((resolve, reject) => {
-    Object.assign(entry, { resolve, reject });
-    solver.pending.set(id, entry);
-    solver.worker.postMessage({ ...request, id });
-  }).finally(() => {
-    clearInterval(busy);
-    if (!solver.pending.size) $("busy").hidden = true;
-    // The solve's window ends when the worker's answer reaches this thread (its handling and
-    // drawing follow, and are timed apart).
-    page.solveWindows.push([t0, entry.arrived ?? performance.now()]);
-  });
-}
-
-/** Cancel: the worker is terminated (its solve cannot be interrupted) and a new one started. */
 function cancelSolve() {
-  solver.worker.terminate();
-  const waiting = [...solver.pending.values()];
-  solver.pending.clear();
-  startWorker();
   state.queued = false;
   cancelHistory();
-  for (const p of waiting) p.reject(new Cancelled("cancelled"));
+  solver.cancel();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -231,6 +191,7 @@ async function solveScheduled() {
     const shows = { kind: "solve", scene: state.scene, text: `One solve of the controls' set-up: ${scene.user
       ? `${state.userFiles.sceneName} on ${state.userFiles.meshName}` : scene.describe(values)}.` };
     draw(view, values, shows);
+    if (scene.user) playUserSteps(view, values);
     const t2 = performance.now();
     record(view, { scene: state.scene, solve_ms: t1 - t0, draw_ms: t2 - t1, total_ms: t2 - t0 });
     $("timing").textContent = `last update ${(t2 - t0).toFixed(1)} ms: solve in WebAssembly ` +
@@ -242,6 +203,27 @@ async function solveScheduled() {
     page.run = "idle";
     if (state.queued) { state.queued = false; schedule(); }
   }
+}
+
+/** A user's scene of several load steps: every step (view.frames, one per step of its schedule)
+ * into the player, all at one scale, and the last one shown. */
+function playUserSteps(view, values) {
+  const frames = view.frames || [];
+  if (frames.length < 2) return;
+  const name = `${state.userFiles.sceneName} on ${state.userFiles.meshName}`;
+  const runFrames = frames.map((f, k) => {
+    const row = view.summary.steps[k];
+    const factors = row ? Object.entries(row.factors).map(([p, v]) => `${p} = ${+v.toPrecision(6)}`).join(", ") : "";
+    return {
+      view: { ...view, mesh: { ...view.mesh, displacement: f.displacement }, pairs: f.pairs,
+        summary: { ...view.summary, contacts: f.contacts, status: row ? row.status : view.summary.status } },
+      shows: { kind: "steps", scene: "user", step: k + 1,
+        text: `Your scene, load step ${k + 1} of ${frames.length}${factors ? ` (${factors})` : ""}: ${name}.` },
+    };
+  });
+  player.set({ kind: "user", values, frames: runFrames, first: 1, last: frames.length, interval: 400,
+    drawFrame: (v, ui, vals) => SCENES.user.draw(v, ui, vals) });
+  player.show(frames.length);
 }
 
 function record(view, timing) {
@@ -475,7 +457,7 @@ function togglePin() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Scenes, presets, URL, reset, export, projector, files.
+// Scenes, presets, URL, reset, projector, files (the export: export.js).
 
 function showScene(name, values, push = false) {
   cancelHistory();
@@ -504,53 +486,6 @@ function applyPreset(name) {
   Object.assign(state.values, { mu: p.mu, ratio: "1", eps: p.eps, load: p.load, variant: p.variant });
   showValues();
   schedule();
-}
-
-function download(name, blob) {
-  const a = document.createElement("a");
-  a.href = URL.createObjectURL(blob);
-  a.download = name;
-  document.body.append(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(a.href), 10000);
-}
-
-/** The CSV: what is shown, the table, the profile chart's series, and the whole run when one
- * was made: the loading history's (w, l, b) or the cycle's (step, δ, Q) loop. */
-function exportCsv() {
-  const rows = [...$("summary").tBodies[0].rows].map((r) => [r.cells[0].textContent, r.cells[1].dataset.value,
-    r.cells[2].textContent]);
-  const quote = (s) => `"${String(s).replaceAll('"', '""')}"`;
-  const run = [];
-  if (state.scene === "flagship" && state.history.length) {
-    run.push(`${quote("loading history")}`, "w,l,b", ...state.history.map((h) => `${h.w},${h.l},${h.b}`), "");
-  }
-  if (state.scene === "cattaneo_mindlin" && page.cycle && state.player && state.player.kind === "cycle") {
-    const v = page.cycle;
-    run.push(`${quote("Mindlin–Deresiewicz cycle (the whole loop)")}`, "step,delta_mm,Q_N_per_mm",
-      ...v.summary.steps.map((st, k) => `${k},${v.cycle_shear[k] * 0.01},${st.reactions.cylinder_top[0]}`), "");
-  }
-  const text = [`${quote("shows")},${quote($("table-caption").textContent)}`, `${quote("url")},${quote(location.href)}`, "",
-    "quantity,live,published", ...rows.map((r) => r.map(quote).join(",")), "", chartCsv("profile"), ...run].join("\n");
-  download(`contact2d_${state.scene}.csv`, new Blob([text], { type: "text/csv" }));
-}
-
-/** The figures shown, as one figure: title, key numbers, the mesh with its colour key, the
- * profile and (when shown) the history or loop chart, each with its legend. */
-function shownFigure() {
-  const canvases = ["mesh", "profile", "history-plot"].map($).filter((c) => !c.closest("[hidden]") && c.width > 0);
-  const numbers = [...$("summary").tBodies[0].rows].slice(0, 4).map((r) => `${r.cells[0].textContent} = ${r.cells[1].textContent}`);
-  return figureParts({ title: `contact2d — ${SCENES[state.scene].title}`, caption: $("table-caption").textContent,
-    numbers, canvases });
-}
-
-function exportPng() {
-  figurePng(shownFigure()).toBlob((png) => download(`contact2d_${state.scene}_figure.png`, png));
-}
-
-function exportSvg() {
-  download(`contact2d_${state.scene}_figure.svg`, new Blob([figureSvg(shownFigure())], { type: "image/svg+xml" }));
 }
 
 async function takeFiles(files) {
@@ -624,14 +559,15 @@ function build() {
     const { scene, values } = readUrl(location.search, SCENES, COMMON, "flagship");
     showScene(scene, values);
   });
-  $("export-png").addEventListener("click", exportPng);
-  $("export-csv").addEventListener("click", exportCsv);
-  $("export-svg").addEventListener("click", exportSvg);
+  installExport({ state, page, scenes: SCENES });
   $("pin").addEventListener("click", togglePin);
   // Exercises (exercises.js): the page's hooks to open a set-up and to make a change.
   installExercises(page, {
-    open: (ex) => showScene("flagship", { ...defaults("flagship"), ...ex.start, mag: state.values.mag,
-      projector: state.values.projector }, state.scene !== "flagship"),
+    open: (ex) => {
+      const name = ex.scene || "flagship";
+      showScene(name, { ...defaults(name), ...ex.start, mag: state.values.mag, projector: state.values.projector },
+        state.scene !== name);
+    },
     change: (values) => { Object.assign(state.values, values); showValues(); schedule(); },
     // The solve of the set-up on screen is done (none running, scheduled or queued).
     solved: async () => {
@@ -652,7 +588,7 @@ function defaultsFor(name) {
 
 async function main() {
   await init();
-  startWorker();
+  solver.start();
   const bundled = JSON.parse(bundled_json());
   $("user-limits").textContent = `limits: scene ≤ ${bundled.max_scene_bytes} bytes, mesh ≤ ${bundled.max_mesh_bytes} bytes`;
   // The bundled scenes' files (web/build.sh copies them to pkg/examples) as examples to download.

@@ -43,7 +43,7 @@ export function prepare(canvas) {
   return { ctx, W: w, H: h };
 }
 
-// The last chart drawn on each canvas (its series), for the CSV export.
+// The last chart drawn on each canvas (its spec), for the CSV and the SVG figure's vector charts.
 export const lastCharts = {};
 
 /** The deformed mesh X = x + β u fitted to the canvas: the drawing's bounds are those of the
@@ -158,9 +158,10 @@ export function niceTicks(a, b, most = 5) {
  * label sits in a band of its own: tick labels under/left of the plot, axis titles outside
  * them, the legend above the plot, marker labels in a strip above the plot stacked into rows
  * so that no two overlap. */
-export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange, yrange }) {
+export function chart(canvas, spec) {
+  const { series, markers = [], xlabel, ylabel, xrange, yrange } = spec;
   const { ctx, W, H } = prepare(canvas);
-  lastCharts[canvas.id] = { series, xlabel, ylabel };
+  lastCharts[canvas.id] = spec;
   const f = fontPx, line = Math.round(1.3 * f);
   ctx.font = `${f}px sans-serif`;
   const xs = series.flatMap((s) => s.x.filter((_, i) => s.y[i] !== null));
@@ -229,6 +230,8 @@ export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange, yr
   ctx.save();
   ctx.beginPath(); ctx.rect(L, T, W - L - R, H - T - B); ctx.clip();
   series.forEach((s) => {
+    // The SVG export's context (svgcontext.js) groups each series' elements.
+    if (ctx.svgSeries) ctx.svgSeries(s.label);
     ctx.strokeStyle = ctx.fillStyle = s.colour; ctx.lineWidth = 2;
     if (s.fill && s.x.length > 2) {
       // A closed polygon filled (the hysteresis loop's area).
@@ -254,6 +257,7 @@ export function chart(canvas, { series, markers = [], xlabel, ylabel, xrange, yr
       ctx.setLineDash([]);
     }
   });
+  if (ctx.svgSeries) ctx.svgSeries(null);
   ctx.restore();
   legend.forEach(({ s, x, row }) => {
     const y = 6 + row * line + f;

@@ -4,8 +4,10 @@
 // the number before and after (the solver decides, not a stored answer), then explains.
 // installExercises wires the panel of index.html (#exercises) to the page through three hooks.
 
-/** Each exercise: the flagship's start values, the change made on reveal, the table's key read
- * before and after, the question and the explanation. */
+/** Each exercise: its tab (`scene`, the flagship when absent) and start values, the change made
+ * on reveal, the table's key read before and after, the question and the explanation; an
+ * exercise whose answer is not a number's trend gives its own `choices` and `classify(before,
+ * after)` (the cells' values). */
 export const EXERCISES = [
   {
     id: "friction", title: "1. Friction grows the stick zone",
@@ -39,6 +41,30 @@ export const EXERCISES = [
     explain: "Without a gap the problem is linear in w (spec §5.2): every displacement doubles, and so does " +
       "the pressure, but where it falls to zero does not move.",
   },
+  {
+    id: "partial_slip", scene: "cattaneo_mindlin", title: "5. Partial slip grows in from the edges",
+    start: { press: "1", shear: "0.15", level: "L0" }, change: { shear: "0.45" },
+    key: "c_over_a", name: "the stick half-width c/a",
+    question: "The roller is pressed, then its top moved sideways a little: the middle sticks, the edges slip. " +
+      "Move the top three times as far (shear 0.15 → 0.45, Q closer to μP): the stick half-width c/a …",
+    explain: "Slip starts where the pressure, and so the friction limit μp, falls to zero: at the edges. As Q " +
+      "approaches μP the slip zones grow inward and the stick zone shrinks, as Cattaneo and Mindlin's " +
+      "c/a = √(1 − Q/(μP)) says (the table's closed-form row); at Q = μP nothing sticks.",
+  },
+  {
+    id: "incline", scene: "incline_push", title: "6. A threshold from statics: the incline",
+    start: { mu: "0.3", push: "0.35" }, change: { mu: "0.2" },
+    key: "status", name: "the block",
+    choices: [["holds", "still holds"], ["slides", "slides up the slope"]],
+    // The solver's status decides: a converged run is an equilibrium (the block holds); any other
+    // (not held: friction cannot hold it) is none.
+    classify: (before, after) => (String(after).startsWith("converged") ? "holds" : "slides"),
+    question: "On the incline (tan α = 0.1) at μ = 0.3 a horizontal push F/G = 0.35 leaves the block at rest. " +
+      "Lower the friction to μ = 0.2 with the same push: the block …",
+    explain: "Statics with Coulomb: pushed up the slope once F cos α − G sin α > μ (G cos α + F sin α), i.e. " +
+      "F/G > (tan α + μ)/(1 − μ tan α): 0.412 at μ = 0.3 but 0.306 at μ = 0.2, below the push of 0.35. " +
+      "Past it no equilibrium exists, and the solver says so.",
+  },
 ];
 
 export const CHOICES = [["grows", "grows"], ["stays", "stays the same"], ["shrinks", "shrinks"]];
@@ -61,7 +87,7 @@ export function installExercises(page, hooks) {
   const open = (id) => {
     current = EXERCISES.find((e) => e.id === id);
     $("ex-question").textContent = current.question;
-    $("ex-choices").replaceChildren(...CHOICES.map(([value, text]) => {
+    $("ex-choices").replaceChildren(...(current.choices || CHOICES).map(([value, text]) => {
       const label = document.createElement("label");
       const input = Object.assign(document.createElement("input"), { type: "radio", name: "ex-choice", value });
       label.append(input, ` ${text}`);
@@ -88,16 +114,19 @@ export function installExercises(page, hooks) {
     if (!ex || !page.exercise.committed) return;
     $("ex-reveal").disabled = true;
     await hooks.solved();
-    const read = () => Number(document.querySelector(`td[data-key="${ex.key}"]`)?.dataset.value);
+    const cell = () => document.querySelector(`td[data-key="${ex.key}"]`)?.dataset.value;
+    const read = ex.classify ? cell : () => Number(cell());
     const before = read();
     hooks.change(ex.change);
     await hooks.solved();
     const after = read();
-    const moved = outcome(before, after);
+    const moved = (ex.classify || outcome)(before, after);
     const right = moved === page.exercise.committed;
-    const said = Object.fromEntries(CHOICES)[moved];
-    $("ex-answer").textContent = `${right ? "Right" : "Not quite"}: ${ex.name} went from ${before.toPrecision(4)} to ` +
-      `${after.toPrecision(4)}: it ${said}. ${ex.explain}`;
+    const said = Object.fromEntries(ex.choices || CHOICES)[moved];
+    const shown = (v) => (typeof v === "number" ? v.toPrecision(4) : v);
+    $("ex-answer").textContent = ex.classify
+      ? `${right ? "Right" : "Not quite"}: ${ex.name} ${said} (the solver: ${after}). ${ex.explain}`
+      : `${right ? "Right" : "Not quite"}: ${ex.name} went from ${shown(before)} to ${shown(after)}: it ${said}. ${ex.explain}`;
     $("ex-answer").dataset.right = right ? "1" : "0";
     page.exercise.revealed = { before, after, moved, right };
   };

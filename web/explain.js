@@ -141,6 +141,26 @@ export const EXPLAIN = {
   <dt>P</dt><dd>the press, 1000 N per mm of thickness</dd><dt>slide</dt><dd>the top's sideways displacement, in units of 0.01 mm</dd></dl>
   <h3>Caveats</h3><ul><li>The upper block is held in x2 only by the contact (a floating body).</li></ul>`,
 
+  ball_on_plate: `${sketch(`${HEAD}<circle cx="160" cy="55" r="45" fill="#e7d8b8" stroke="#8a6d3b"/>
+    <rect x="40" y="100" width="240" height="40" fill="#eee" stroke="#555"/>${arrow(160, 0, 160, 12)}
+    <line x1="160" y1="5" x2="160" y2="140" stroke="#000" stroke-dasharray="4 3"/>`,
+    "A ball pressed on a plate: a body of revolution about the dashed axis")}
+  <h3>The set-up</h3><p>A steel ball (R = 10 mm, E1 = 210 GPa) pressed by a total force P on an aluminium
+  plate (20 mm radius, 20 mm deep, E2 = 70 GPa), ν = 0.3 both, its bottom held. Solved as a body of revolution
+  (<code>kinematics = "axisymmetric"</code>: x is the radius r, y the axis z; the drawing is the section r ≥ 0,
+  the axis on the left): each element stands for the ring it sweeps, P is the total force over the
+  circumference, and the pressure is per unit area. Hertz's sphere: E* = [(1 − ν1²)/E1 + (1 − ν2²)/E2]⁻¹,
+  a = (3PR/(4E*))^(1/3), p0 = 3P/(2πa²), p(r) = p0 √(1 − r²/a²): the contact radius grows as P^(1/3), not as
+  the roller's half-width √F of the plane Hertz tab.</p>${COULOMB}<h3>Symbols</h3><dl><dt>Σλ</dt><dd>the contact's
+  total normal force, N (over the whole circumference: it equals P)</dd><dt>r</dt><dd>distance from the
+  axis, mm</dd><dt>a</dt><dd>contact radius; the computed one is r = R sin(s/R) of the contact's arc s on the
+  ball</dd><dt>p0</dt><dd>the peak pressure, on the axis</dd></dl>
+  <h3>Caveats</h3><ul><li>The mesh is small (8 elements across a at P = 5 kN) so that the page solves it at
+  once; the contact edge is placed to about a node's spacing (0.05 mm).</li><li>Hertz is frictionless; with
+  μ &gt; 0 the dissimilar materials make the surfaces slip against each other and the pressure changes a
+  little (about 2 % at μ = 0.2, P = 10 kN).</li><li>The ball is held only by the contact (its one rigid motion,
+  along the axis).</li></ul>`,
+
   user: `<h3>Your own scene</h3><p>Choose or drop a generic scene file (.toml, as <code>contact2d run</code>
   reads it, see docs/user-guide.md) together with its Gmsh mesh (.msh). It is solved here, in this browser: nothing
   leaves the machine. The scene's <code>mesh</code> key is replaced by the file you give. The CLI's limits hold:

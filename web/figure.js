@@ -1,9 +1,12 @@
 // Presentation export: the figures on screen as ONE figure, in PNG and SVG. The layout is
 // computed once (figureParts) and drawn twice: on a canvas (PNG) and as SVG elements (the
-// title, the key numbers and the mesh's colour key as SVG text and shapes; each chart, with its
-// own legend, embedded as the PNG image it is on the page). Sizes are the canvases' device
-// pixels, so the figure is as sharp as the screen it came from.
-import { COLOURS } from "./chart.js";
+// title, the key numbers and the mesh's colour key as SVG text and shapes; each chart drawn
+// again by chart.js on an SVG-writing context (svgcontext.js): its series as <polyline>s and
+// <path>s, its axes, ticks and legend as lines and <text>; the mesh embedded as the image it is
+// on the page). Sizes are the canvases' device pixels, so the figure is as sharp as the screen
+// it came from.
+import { COLOURS, chart, lastCharts } from "./chart.js";
+import { svgCanvas } from "./svgcontext.js";
 
 // The mesh's colour key: the pairs' states as drawMesh colours them (chart.js COLOURS).
 const KEY = [["stick", "stick"], ["slip+", "slip +x"], ["slip-", "slip −x"], ["contact", "contact (μ = 0)"], ["free", "free"]];
@@ -11,7 +14,7 @@ const KEY = [["stick", "stick"], ["slip+", "slip +x"], ["slip-", "slip −x"], [
 /** Lays out {title, caption, numbers: [text], canvases: [HTMLCanvasElement]} top to bottom:
  * the title, the caption (wrapped), the key numbers, each canvas (the mesh followed by its
  * colour key). Returns {width, height, items}: text {x, y, text, size, bold}, image {x, y, w,
- * h, canvas}, dot {x, y, r, colour}. */
+ * h, canvas, vector (a chart's SVG markup, else null)}, dot {x, y, r, colour}. */
 export function figureParts({ title, caption, numbers, canvases }) {
   const dpr = canvases.length ? canvases[0].width / Math.max(1, canvases[0].clientWidth) : 1;
   const width = Math.max(600 * dpr, ...canvases.map((c) => c.width));
@@ -36,7 +39,14 @@ export function figureParts({ title, caption, numbers, canvases }) {
   if (numbers.length) text(numbers.join("   "), 1.2 * f, true);
   y += pad;
   for (const c of canvases) {
-    items.push({ type: "image", x: 0, y, w: c.width, h: c.height, canvas: c });
+    // A chart: its last spec drawn again as SVG (vectors); the mesh: the canvas's image.
+    let vector = null;
+    if (lastCharts[c.id]) {
+      const stand = svgCanvas(c);
+      chart(stand, lastCharts[c.id]);
+      vector = stand.svg();
+    }
+    items.push({ type: "image", x: 0, y, w: c.width, h: c.height, canvas: c, vector });
     y += c.height;
     if (c.id === "mesh") {
       ctx.font = `${f}px sans-serif`;
@@ -78,6 +88,7 @@ const esc = (t) => String(t).replaceAll("&", "&amp;").replaceAll("<", "&lt;").re
 /** The figure as an SVG document (text). */
 export function figureSvg(fig) {
   const body = fig.items.map((it) => {
+    if (it.type === "image" && it.vector !== null) return `<g transform="translate(${it.x} ${it.y})">\n${it.vector}\n</g>`;
     if (it.type === "image") {
       return `<image x="${it.x}" y="${it.y}" width="${it.w}" height="${it.h}" href="${it.canvas.toDataURL("image/png")}"/>`;
     }

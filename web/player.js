@@ -1,5 +1,5 @@
-// The player: play / pause / step / scrub through the steps of a finished loading history or a
-// Mindlin–Deresiewicz cycle, every step drawn at ONE scale taken from the whole run (the mesh's
+// The player: play / pause / step / scrub through the steps of a finished loading history, a
+// Mindlin–Deresiewicz cycle or a user's multi-step scene (its schedule's steps), every step drawn at ONE scale taken from the whole run (the mesh's
 // β and box, the charts' y axes), so that frames are comparable and the deformation grows with
 // the load. The run's steps live in ctx.state.player; the page (app.js) clears it on any input.
 import { chart, fixedMeshScale } from "./chart.js";
@@ -14,13 +14,14 @@ function specsOf(ctx, p, k) {
   const add = (id, spec) => { (got.charts[id] = got.charts[id] || []).push(...spec.series.flatMap((s) => s.y.filter((v) => v !== null))); };
   const ui = { mesh: (v, focus) => { got.focus = focus; }, chart: (spec) => add("profile", spec), output() {}, banner() {}, table() {} };
   if (p.kind === "cycle") drawCycleStep(p.view, k, ui, { id: "history-plot" }, (c, spec) => add(c.id, spec));
-  else ctx.drawFlagship(p.frames[k - 1].view, ui, p.values);
+  else (p.drawFrame || ctx.drawFlagship)(p.frames[k - 1].view, ui, p.values);
   return got;
 }
 
 /** The player over ctx = {state, page, draw(view, values, shows, custom), drawFlagship(view,
  * ui, values)}: {set(run), clear(), show(k), stop(), play(), wire()}. A run is {kind: "history"
- * | "cycle", values, frames: [{view, shows}] or view, first, last, interval (ms a step)}. */
+ * | "cycle" | "user", values, frames: [{view, shows}] or view, first, last, interval (ms a step),
+ * drawFrame(view, ui, values) (a user's scene: its tab's drawing; the flagship's by default)}. */
 export function makePlayer(ctx) {
   function set(p) {
     p.k = p.last;
@@ -41,7 +42,8 @@ export function makePlayer(ctx) {
     Object.assign(scrub, { min: p.first, max: p.last, step: 1 });
     scrub.value = p.k;
     $("player").hidden = false;
-    $("player-what").textContent = p.kind === "cycle" ? "the cycle's steps:" : "the history's steps:";
+    $("player-what").textContent = { cycle: "the cycle's steps:", history: "the history's steps:",
+      user: "your scene's load steps:" }[p.kind];
     ctx.page.player = { kind: p.kind, k: p.k, first: p.first, last: p.last, playing: false, fixed: p.fixed };
   }
 

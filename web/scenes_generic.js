@@ -177,6 +177,59 @@ const twoBlocks = {
   },
 };
 
+// Hertz's sphere on a flat (Johnson 1985, eqs. 4.22-4.23): the scene's steel ball R = 10 mm on an
+// aluminium plate, ν = 0.3 both; P the TOTAL force (a body of revolution: over the circumference).
+//   E* = [(1 − ν1²)/E1 + (1 − ν2²)/E2]⁻¹,  a = (3PR/(4E*))^(1/3),  p0 = 3P/(2πa²),  p(r) = p0 √(1 − r²/a²)
+export const BALL = { R: 10, E1: 210000, E2: 70000, nu: 0.3 };
+export function hertzSphere(P) {
+  const eStar = 1 / ((1 - BALL.nu ** 2) / BALL.E1 + (1 - BALL.nu ** 2) / BALL.E2);
+  const a = Math.cbrt((3 * P * BALL.R) / (4 * eStar));
+  return { eStar, a, p0: (3 * P) / (2 * Math.PI * a * a) };
+}
+// The contact radius of the computed contact: its length is an arc of the ball's surface (the
+// master curve) from the axis, s = R asin(r/R), so r = R sin(s/R).
+export const ballRadiusOf = (arc) => BALL.R * Math.sin(arc / BALL.R);
+
+const ballOnPlate = {
+  title: "Hertz: ball on a plate (axisymmetric)",
+  short: "Sphere",
+  keys: ["a", "a_hertz", "p_max", "p0_hertz"],
+  controls: [
+    { key: "force", id: "g-force", label: "total force P on the ball, N", kind: "range", min: 1000, max: 10000,
+      step: 500, value: 5000, show: (v) => Number(v).toLocaleString("en") },
+    { ...frictionSlider(0), max: 0.5 },
+  ],
+  overrides: (v) => [`load.ball_top.force=[0, ${num(-v.force)}]`, `contact.ball.friction=${num(v.mu)}`],
+  describe: (v) => `P = ${num(v.force)} N (total), μ = ${num(v.mu)}, one load step, body of revolution`,
+  draw(view, ui, v) {
+    const cf = hertzSphere(Number(v.force)), c = view.summary.contacts.ball, z = 4 * cf.a;
+    ui.mesh(view, [0, -0.5 * z, z, 0.5 * z]);
+    const p = c.profile, keep = p.x.map((x) => x <= 2 * cf.a);
+    const rs = Array.from({ length: 101 }, (_, i) => (cf.a * i) / 100);
+    ui.chart({
+      series: [
+        { x: p.x.filter((_, i) => keep[i]), y: p.pressure.filter((_, i) => keep[i]), colour: "#d62728",
+          label: "computed p(r)", points: true },
+        { x: rs, y: rs.map((r) => cf.p0 * Math.sqrt(Math.max(0, 1 - (r * r) / (cf.a * cf.a)))), colour: "#000",
+          label: "Hertz p0 √(1 − r²/a²)" },
+      ],
+      markers: [{ x: cf.a, label: "a (Hertz)" }, { x: ballRadiusOf(c.contact_length), label: "a (FE)" }],
+      xlabel: "r: distance from the axis, mm", ylabel: "pressure, MPa", xrange: [0, 2 * cf.a],
+    }, "Contact pressure along the ball (master nodes) beside Hertz's sphere p(r) = p0 √(1 − r²/a²), " +
+      "a = (3PR/(4E*))^(1/3), p0 = 3P/(2πa²), P the total force.");
+    ui.banner(unsolved(view));
+    const ok = view.summary.status === "converged";
+    ui.table([
+      ["contact radius a (FE), mm", "a", ok ? ballRadiusOf(c.contact_length) : null], ["a (Hertz), mm", "a_hertz", cf.a],
+      ["peak pressure p0 (FE), MPa", "p_max", ok ? c.max_pressure : null], ["p0 (Hertz), MPa", "p0_hertz", cf.p0],
+      ["normal force Σλ (total), N", "normal_force", ok ? c.normal_force : null],
+      ["E* (plane strain, combined), MPa", "e_star", cf.eStar],
+      ["status", "status", statusWords(view.summary)], ["kinematics", "kinematics", view.summary.kinematics],
+      ["pairs", "pairs", view.summary.pairs],
+    ]);
+  },
+};
+
 /** A user's scene: the files chosen or dropped on the page, solved with the CLI's limits. */
 const userScene = {
   title: "Your scene (.toml + .msh)",
@@ -194,7 +247,7 @@ const userScene = {
 };
 
 export const GENERIC_SCENES = {
-  pin_lug: pinLug, interference_fit: interferenceFit, incline_push: inclinePush,
+  ball_on_plate: ballOnPlate, pin_lug: pinLug, interference_fit: interferenceFit, incline_push: inclinePush,
   two_blocks_press_slide: twoBlocks, user: userScene,
 };
 

@@ -2,7 +2,8 @@
 # The teaching page's tests (after web/build.sh): the native reference numbers, the node test
 # (the WebAssembly module returns them to 1e-12) and the headless-browser tests (Chromium +
 # puppeteer-core; screenshots in web/out/): the physics on the page (browser.mjs) and the
-# page's defects of issue 24 (browser_page.mjs). Installs Debian's chromium (as root) and the npm
+# page's defects of issue 24 (browser_page.mjs), issue 42's (browser_teaching.mjs, browser_present.mjs) and
+# the ball on a plate of issue 43 (browser_ball.mjs). Installs Debian's chromium (as root) and the npm
 # package when missing. Every step is wrapped in `timeout`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -44,3 +45,6 @@ timeout 600 node web/tests/browser_teaching.mjs
 
 echo "== headless Chromium: issue 42 (the player of histories and cycles)"
 timeout 600 node web/tests/browser_present.mjs
+
+echo "== headless Chromium: issue 43 (the ball on a plate: Hertz's sphere, page = native CLI)"
+timeout 600 node web/tests/browser_ball.mjs

@@ -4,7 +4,7 @@
 #   pip install gmsh                 # gmsh 4.15.2 was used for the committed files
 #   meshes/generic/generate.sh       # writes two_blocks.msh, cylinder_on_block_L{1,2,3}.msh,
 #                                    # cylinder_on_block_big_L2.msh, pin_lug.msh,
-#                                    # interference_fit.msh, shrink_fit_axisymmetric.msh,
+#                                    # interference_fit.msh, shrink_fit_axisymmetric.msh, ball_on_plate.msh,
 #                                    # cattaneo_mindlin_L{0,1,2,3}.msh,
 #                                    # hills_nowell_L{1,2,3}.msh, incline.msh, pin_lug_L1.msh, pin_lug_L3.msh,
 #                                    # long_interface_{96,190,380}.msh,
@@ -56,6 +56,7 @@ mesh pin_lug.geo pin_lug.msh lug,pin "$pin_curves"
 mesh pin_lug.geo pin_lug_L3.msh lug,pin "$pin_curves" -- -setnumber n_contact 80 -setnumber n_back 20 \
   -setnumber h_lug 2 -setnumber h_pin_centre 1
 mesh interference_fit.geo interference_fit.msh disk,ring disk_rim,ring_bore,ring_outer,sym_x,sym_y
+mesh ball_on_plate.geo ball_on_plate.msh ball,plate ball_surface,ball_top,plate_top,plate_bottom,plate_rim,axis
 mesh shrink_fit_axisymmetric.geo shrink_fit_axisymmetric.msh shaft,hub shaft_bottom,shaft_rim,shaft_top,axis,hub_bottom,hub_outer,hub_top,hub_bore
 for level in 0 1 2 3; do
   mesh cattaneo_mindlin.geo "cattaneo_mindlin_L$level.msh" cylinder,block \

@@ -20,6 +20,7 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use contact2d_mesh::parse_msh;
+use contact2d_pipeline::generic::results::{ContactResult, contact_result};
 use contact2d_pipeline::generic::{GenericOutcome, GenericReport, GenericScene, solve_generic_on_mesh};
 use contact2d_pipeline::input_file::{MAX_MESH_BYTES, MAX_SCENE_BYTES};
 use contact2d_pipeline::output::step_view::state_label;
@@ -46,8 +47,8 @@ pub struct BundledGeneric {
 /// The bundled generic scenes the page solves through [`solve_bundled_generic`]. The pin in a
 /// lug runs on `pin_lug_L1.msh` (20 elements per arc; the scene's own L2 mesh takes about
 /// 0.2 s per update natively, too slow to follow a slider in the browser); the others on the
-/// scene's own mesh.
-pub const BUNDLED_GENERIC: [BundledGeneric; 4] = [
+/// scene's own mesh (the ball on a plate, a body of revolution, on its small teaching mesh).
+pub const BUNDLED_GENERIC: [BundledGeneric; 5] = [
     BundledGeneric {
         name: "pin_lug",
         text: include_str!("../../../scenes/generic/pin_lug.toml"),
@@ -65,6 +66,12 @@ pub const BUNDLED_GENERIC: [BundledGeneric; 4] = [
         text: include_str!("../../../scenes/generic/incline_push.toml"),
         mesh_file: "incline.msh",
         mesh_bytes: include_bytes!("../../../meshes/generic/incline.msh"),
+    },
+    BundledGeneric {
+        name: "ball_on_plate",
+        text: include_str!("../../../scenes/generic/ball_on_plate.toml"),
+        mesh_file: "ball_on_plate.msh",
+        mesh_bytes: include_bytes!("../../../meshes/generic/ball_on_plate.msh"),
     },
     BundledGeneric {
         name: "two_blocks_press_slide",
@@ -100,6 +107,67 @@ pub struct GenericView {
     pub pairs: PairsView,
     /// The deformed mesh of the last step.
     pub mesh: MeshView,
+    /// A user's scene of more than one step: every solved step, for the page's player (none
+    /// for the bundled scenes, a one-step run, or a run too large to keep: [`MAX_FRAME_NUMBERS`]).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub frames: Vec<StepFrame>,
+}
+
+/// One solved step of a multi-step run as the page's player draws it.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StepFrame {
+    /// Nodal displacements of the step, two numbers per node (as [`MeshView::displacement`]).
+    pub displacement: Vec<f64>,
+    /// The pairs at the step.
+    pub pairs: PairsView,
+    /// Every interface at the step, with its profile.
+    pub contacts: std::collections::BTreeMap<String, ContactResult>,
+}
+
+/// The most numbers (displacements and pair values, over all steps) a run's frames may hold:
+/// a larger run sends only its last step (the player then has nothing to play; the page says so).
+pub const MAX_FRAME_NUMBERS: usize = 4_000_000;
+
+/// Every solved step of `outcome` as a frame (empty for a run of one step, for a run whose pairs
+/// were formed again (finite sliding: the last step's pairs are not the earlier steps'), and for
+/// one over [`MAX_FRAME_NUMBERS`]).
+pub fn step_frames(outcome: &GenericOutcome) -> Vec<StepFrame> {
+    let built = &outcome.built;
+    let problem = &built.problem;
+    let steps = &outcome.history.steps;
+    let per_step = 2 * problem.model.mesh.num_nodes() + 8 * problem.pairs.len();
+    let same_pairs = steps.iter().all(|s| s.solution.state.len() == problem.pairs.len());
+    if steps.len() < 2 || !same_pairs || steps.len().saturating_mul(per_step) > MAX_FRAME_NUMBERS {
+        return vec![];
+    }
+    let rows = &outcome.report.steps;
+    steps
+        .iter()
+        .enumerate()
+        .map(|(k, step)| {
+            let s = &step.solution;
+            let state = s.state.iter().zip(&problem.friction).map(|(st, mu)| state_label(*st, *mu)).collect();
+            let contacts = built
+                .interfaces
+                .iter()
+                .map(|iface| {
+                    // The step row's dissipation of the interface (the report accumulates it).
+                    let row = rows.get(k).and_then(|r| r.contacts.get(&iface.name));
+                    (iface.name.clone(), contact_result(built, iface, s, row.map_or(0.0, |c| c.dissipation), true))
+                })
+                .collect();
+            StepFrame {
+                displacement: mesh_view(problem, s).displacement,
+                pairs: PairsView {
+                    master: problem.pairs.iter().map(|p| p.master.0).collect(),
+                    state,
+                    normal_force: s.normal_force.clone(),
+                    tangent: problem.pairs.iter().map(|p| p.tangent).collect(),
+                },
+                contacts,
+            }
+        })
+        .collect()
 }
 
 /// The bundled generic scene `name`.
@@ -195,7 +263,7 @@ pub fn solve_user_scene(
         })
     })?;
     let outcome = solve_generic_on_mesh(&scene, mesh, &mut |_, _| {})?;
-    Ok(generic_view(mesh_name, &outcome))
+    Ok(GenericView { frames: step_frames(&outcome), ..generic_view(mesh_name, &outcome) })
 }
 
 /// The page's view of a solved generic scene.
@@ -225,6 +293,7 @@ pub fn generic_view(mesh_file: &str, outcome: &GenericOutcome) -> GenericView {
         summary: outcome.report.clone(),
         pairs,
         mesh,
+        frames: vec![],
     }
 }
 
@@ -312,5 +381,27 @@ mod tests {
         let same = solve("two_blocks_press_slide", &[]).unwrap();
         assert_eq!(user.pairs, same.pairs);
         assert_eq!(user.mesh, same.mesh);
+    }
+
+    /// A user's scene of six steps (press in two, then slide in four) keeps both for the player: the last
+    /// frame is the view's last step, and each frame's interface forces are the report's step
+    /// rows (computed apart, by the run's own summary), exactly.
+    #[test]
+    fn user_scene_keeps_every_step() {
+        let bundled = bundled_generic("two_blocks_press_slide").unwrap();
+        let user =
+            solve_user_scene("two_blocks.toml", bundled.text.as_bytes(), "two_blocks.msh", bundled.mesh_bytes, &[])
+                .unwrap();
+        assert_eq!(user.frames.len(), user.summary.steps.len());
+        assert!(user.frames.len() > 1);
+        let last = user.frames.last().unwrap();
+        assert_eq!(last.displacement, user.mesh.displacement);
+        assert_eq!(last.pairs, user.pairs);
+        for (frame, row) in user.frames.iter().zip(&user.summary.steps) {
+            let (f, r) = (&frame.contacts["joint"], &row.contacts["joint"]);
+            assert_eq!((f.normal_force, f.tangential_force), (r.normal_force, r.tangential_force));
+            assert!(f.profile.is_some());
+        }
+        assert!(solve("two_blocks_press_slide", &[]).unwrap().frames.is_empty());
     }
 }

@@ -19,7 +19,8 @@
 //! solve_generic({"scene": "pin_lug", "overrides": ["contact.bore.friction=0.3"]})
 //!   → {scene, description, mesh_file, summary (with every interface's profile), pairs, mesh}
 //! solve_user_scene(scene name, scene bytes, mesh name, mesh bytes, ["--set" strings])
-//!   → the same view, for a scene and mesh dropped on the page (the CLI's limits and messages)
+//!   → the same view, for a scene and mesh dropped on the page (the CLI's limits and messages),
+//!     with frames [{displacement, pairs, contacts}] of every load step when it has several
 //! ```
 //! The scenes are the facade's own ([`contact2d_pipeline::run::solve_scene_on_mesh`],
 //! [`contact2d_pipeline::generic::solve_generic_on_mesh`]) on meshes compiled into the module

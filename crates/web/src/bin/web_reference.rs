@@ -94,6 +94,8 @@ fn generic_cases() -> Vec<Value> {
             "incline_push",
             &["contact.incline.friction=0.5", "loading.schedule=[{weight = 1}, {weight = 1, push = 0.1}]"],
         ),
+        case("ball_on_plate", &["load.ball_top.force=[0, -5000]", "contact.ball.friction=0"]),
+        case("ball_on_plate", &["load.ball_top.force=[0, -10000]", "contact.ball.friction=0.2"]),
         case(
             "two_blocks_press_slide",
             &["contact.joint.friction=0.3", "loading.schedule=[{press = 1}, {press = 1, slide = 1}]"],
