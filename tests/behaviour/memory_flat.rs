@@ -99,11 +99,13 @@ fn peak_kb(n: usize, extra: &str) -> u64 {
 /// 1 MB of each other (the solutions, a few kB each, are not kept; only what the step table
 /// needs may stay per step), with the halved path of `path_error` on and off.
 ///
-/// Ignored until item 7 lands: on main the peak grows ≈ 7.6 kB a step (11.2 MB at 100 steps,
-/// 26.4 MB at 2,000, docs/benchmarks.md), the kept `StepResult` rows.
+/// Ignored until item 7 is done: the compact rows (`NamedMap`, shared names) cut the growth from
+/// ≈ 8.2 kB a step to ≈ 2.4 kB (10.8 MB at 100 steps, 15.3 MB at 2,000, path_error off;
+/// docs/benchmarks.md, "after the compact step rows"), still 4.5 MB over the bound: the row
+/// itself (≈ 0.9 kB of structs and maps) and the scene's explicit schedule (≈ 0.4 kB a step).
 #[cfg(target_os = "linux")]
 #[test]
-#[ignore = "issue 44 item 7 not done yet: the kept step rows grow ≈ 7.6 kB a step"]
+#[ignore = "issue 44 item 7 partial: the kept step rows and the schedule still grow ≈ 2.4 kB a step"]
 fn peak_memory_is_flat_in_the_number_of_steps() {
     for extra in ["loading.path_error=false", "loading.path_error=true"] {
         let (short, long) = (peak_kb(100, extra), peak_kb(2000, extra));

@@ -46,7 +46,7 @@ fn a_push_past_coulomb_ends_not_held_at_the_first_step_past_it() {
     assert!(report.steps[..3].iter().all(|s| s.status == "converged"));
     assert_eq!(report.steps[3].status, "not_held");
     let not_held = report.not_held.as_ref().expect("the report names what was not held");
-    assert_eq!(not_held, report.steps[3].not_held.as_ref().unwrap());
+    assert_eq!(not_held, report.steps[3].not_held.as_deref().unwrap());
     assert_eq!(not_held.contact, "incline");
     assert_eq!(not_held.body, "block");
     assert_eq!(not_held.step, 4);

@@ -235,6 +235,9 @@ pub struct History {
     pub condense_time: std::time::Duration,
 }
 
+/// The floating bodies' proximal iteration of one step: iterations, residual, the load not held.
+type FloatingRecord = (usize, f64, Option<Box<NotHeld>>);
+
 /// Solves `schedule` on `problem` with `settings` (see the module docs).
 ///
 /// # Errors
@@ -311,15 +314,16 @@ pub fn solve_keeping(
     };
     let mut alpha = vec![0.0; modes.len()];
     let zeros = vec![0.0; problem.patterns().len()];
-    // (iterations, residual, load not held) of the floating bodies' proximal iteration, per step.
+    // (iterations, residual, load not held) of the floating bodies' proximal iteration, per step
+    // (the rare load not held boxed: the record is kept for every step).
     let floating = std::cell::RefCell::new(Vec::with_capacity(targets.len()));
     let step_of = |i: usize, h: &HistoryStep| SolvedStep {
         factors: targets[i].clone(),
         solution: h.solution.clone(),
         dissipated: h.dissipated,
-        floating_iterations: floating.borrow().get(i).map_or(0, |f: &(usize, f64, Option<NotHeld>)| f.0),
-        floating_residual: floating.borrow().get(i).map_or(0.0, |f: &(usize, f64, Option<NotHeld>)| f.1),
-        not_held: floating.borrow().get(i).and_then(|f: &(usize, f64, Option<NotHeld>)| f.2.clone()),
+        floating_iterations: floating.borrow().get(i).map_or(0, |f: &FloatingRecord| f.0),
+        floating_residual: floating.borrow().get(i).map_or(0.0, |f: &FloatingRecord| f.1),
+        not_held: floating.borrow().get(i).and_then(|f: &FloatingRecord| f.2.as_deref().cloned()),
         repairings: 0,
         unstable_pairing: None,
     };
@@ -337,7 +341,7 @@ pub fn solve_keeping(
             let factors = StepFactors { target, previous };
             let outcome =
                 solve_floating_step(&mut loaded, &mut interface, settings, &factors, &context, &modes, &mut alpha)?;
-            floating.borrow_mut().push((outcome.iterations, outcome.residual, outcome.not_held));
+            floating.borrow_mut().push((outcome.iterations, outcome.residual, outcome.not_held.map(Box::new)));
             Ok::<_, ContactError>(outcome.solution)
         },
         &mut |h| {

@@ -11,6 +11,7 @@ pub mod fretting;
 #[cfg(feature = "native")]
 pub mod fretting_outputs;
 pub mod kinematics_key;
+pub mod named_map;
 #[cfg(feature = "native")]
 pub mod outputs;
 pub mod path_error;
@@ -36,6 +37,7 @@ use serde::Serialize;
 use contact2d_contact::{BuiltProblem, ContactError, History, Retention, SolvedStep, Stage, builder::group_length};
 use contact2d_mesh::read_msh;
 
+pub use named_map::NamedMap;
 pub use points::{PointResult, ResolvedPoint};
 pub use results::{ContactResult, FixedGroup, Kkt, NotHeldResult, Profile, StepResult};
 pub use scene::GenericScene;

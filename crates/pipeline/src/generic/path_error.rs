@@ -30,6 +30,7 @@
 
 use std::collections::BTreeMap;
 
+use super::named_map::NamedMap;
 use super::results::StepResult;
 
 /// The relative path error above which a run's notes advise more steps.
@@ -40,7 +41,7 @@ pub const NOTE_ABOVE: f64 = 0.01;
 #[derive(Debug, Clone, PartialEq)]
 pub struct PathPoint {
     /// Per interface: `[Σ λ, Σ τ, F1, F2]`, the normal and tangential sums and the resultant.
-    pub forces: BTreeMap<String, [f64; 4]>,
+    pub forces: NamedMap<[f64; 4]>,
     /// Dissipation up to the step.
     pub dissipated: f64,
     /// Work of the loads up to the step.
@@ -51,11 +52,7 @@ impl PathPoint {
     /// The point of a step's summary row.
     pub fn of(row: &StepResult) -> PathPoint {
         PathPoint {
-            forces: row
-                .contacts
-                .iter()
-                .map(|(k, c)| (k.clone(), [c.normal_force, c.tangential_force, c.resultant[0], c.resultant[1]]))
-                .collect(),
+            forces: row.contacts.map_values(|c| [c.normal_force, c.tangential_force, c.resultant[0], c.resultant[1]]),
             dissipated: row.dissipated,
             work: row.work,
         }
@@ -83,7 +80,7 @@ fn measured(coarse: &[PathPoint], fine: &[PathPoint], over_step: bool) -> Vec<f6
     let (coarse, fine) = (&coarse[..n], &fine[..n]);
     let mut largest: BTreeMap<&str, f64> = BTreeMap::new();
     for (name, [normal, tangential, f1, f2]) in fine.iter().flat_map(|f| &f.forces) {
-        let scale = largest.entry(name.as_str()).or_insert(0.0);
+        let scale = largest.entry(name).or_insert(0.0);
         *scale = scale.max(normal.hypot(*tangential)).max(f1.hypot(*f2));
     }
     let work = fine.iter().map(|f| f.work.abs()).fold(0.0, f64::max);
@@ -96,7 +93,7 @@ fn measured(coarse: &[PathPoint], fine: &[PathPoint], over_step: bool) -> Vec<f6
         .map(|i| {
             let mut e: f64 = 0.0;
             for name in fine[i].forces.keys() {
-                let (Some(d), Some(&scale)) = (difference(i, name), largest.get(name.as_str())) else {
+                let (Some(d), Some(&scale)) = (difference(i, name), largest.get(name)) else {
                     continue;
                 };
                 let d0 = match over_step && i > 0 {
@@ -123,7 +120,7 @@ mod tests {
     use super::*;
 
     fn point(n: f64, t: f64, d: f64, w: f64) -> PathPoint {
-        PathPoint { forces: BTreeMap::from([("c".to_string(), [n, t, 0.0, 0.0])]), dissipated: d, work: w }
+        PathPoint { forces: [("c", [n, t, 0.0, 0.0])].into_iter().collect(), dissipated: d, work: w }
     }
 
     #[test]

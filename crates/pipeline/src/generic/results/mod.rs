@@ -58,16 +58,27 @@
 //! ([`contact2d_contact::ContactProblem::reactions`]).
 
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
 use serde::Serialize;
 
-use contact2d_contact::{
-    BuiltProblem, ContactError, ContactSolution, EnergyAllowance, History, InterfaceInfo, PairState, SolvedStep,
-};
+use contact2d_contact::{BuiltProblem, ContactError, ContactSolution, EnergyAllowance, History, SolvedStep};
 
+mod energies;
+mod interface;
+mod reactions;
+
+pub(crate) use interface::mean_pressure;
+pub use interface::{contact_result, contact_result_about};
+
+use super::named_map::NamedMap;
 use super::points::{PointResult, ResolvedPoint};
-use super::zones::{PairCurve, ZoneEnds, ZoneMarks, zone_ends, zones_length, zones_span};
-use crate::output::step_view::state_label;
+use super::zones::ZoneEnds;
+use energies::{body_energies, dof_owners};
+use interface::interface_dissipation;
+use reactions::{
+    external_force, group_reaction_moments, group_reactions, reaction_moment_total, reactions_at_dofs, reactions_total,
+};
 
 /// The profile of one interface along its master curve, pair by pair in order of `s`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -171,7 +182,7 @@ pub struct Kkt {
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct StepResult {
     /// Factor of each load pattern.
-    pub factors: BTreeMap<String, f64>,
+    pub factors: NamedMap<f64>,
     /// The step's status.
     pub status: &'static str,
     /// The check that failed, for every status but `converged` (none there).
@@ -190,24 +201,24 @@ pub struct StepResult {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub substeps: Option<usize>,
     /// Per interface.
-    pub contacts: BTreeMap<String, ContactResult>,
+    pub contacts: NamedMap<ContactResult>,
     /// Per fixed group: `[f1, f2]`, a component `None` (JSON `null`) where the group's own
     /// fixes do not prescribe it.
-    pub reactions: BTreeMap<String, [Option<f64>; 2]>,
+    pub reactions: NamedMap<[Option<f64>; 2]>,
     /// `[R1, R2]`: the reactions of every constrained DOF, each counted once; with the loads and
     /// the rigid obstacles' resultants it sums to zero.
     pub reactions_total: [f64; 2],
     /// Per fixed group: the moment about the run's centre of the reactions in the components
     /// its own fixes prescribe, `Σ_a (x_a − c) × r_a` (counter-clockwise positive).
-    pub reaction_moments: BTreeMap<String, f64>,
+    pub reaction_moments: NamedMap<f64>,
     /// The moment about the run's centre of every constrained DOF's reaction, each once; with
     /// the loads' and the rigid obstacles' moments it sums to zero.
     pub reaction_moment_total: f64,
     /// Per body: strain energy.
-    pub energies: BTreeMap<String, f64>,
+    pub energies: NamedMap<f64>,
     /// Per `[[point]]`: its displacement, rotation and reactions (none without points).
-    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
-    pub points: BTreeMap<String, PointResult>,
+    #[serde(skip_serializing_if = "NamedMap::is_empty")]
+    pub points: NamedMap<PointResult>,
     /// Work of the loads and prescribed displacements up to this step, `W = Σ ½ (f_{i−1} + f_i) ·
     /// (u_i − u_{i−1})` with `f` the nodal loads plus the reactions (trapezoid rule; exact for
     /// a history solved once and scaled).
@@ -221,9 +232,10 @@ pub struct StepResult {
     /// not in the JSON.
     #[serde(skip)]
     pub energy_allowance: EnergyAllowance,
-    /// For status `not_held`: what the contact could not hold (absent otherwise).
+    /// For status `not_held`: what the contact could not hold (absent otherwise). Boxed: every
+    /// row holds this field, rarely filled.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub not_held: Option<NotHeldResult>,
+    pub not_held: Option<Box<NotHeldResult>>,
     /// The error the step size causes at this step, relative ([`super::path_error`]: the
     /// contact resultants against the largest each carried, the dissipation against the work):
     /// 0 for a path-independent run, `None` (absent from the JSON) where it was not estimated.
@@ -333,7 +345,9 @@ pub struct StepResults<'a> {
     fixed_groups: &'a [FixedGroup],
     centre: [f64; 2],
     points: Vec<ResolvedPoint>,
-    names: Vec<String>,
+    /// The names every row's maps are keyed by, made once and shared by the rows: the load
+    /// patterns', the interfaces', the bodies', the fixed groups' and the points'.
+    names: Names,
     owner: Vec<usize>,
     dissipated: Vec<f64>,
     work: f64,
@@ -358,7 +372,7 @@ impl<'a> StepResults<'a> {
             fixed_groups,
             centre: [0.0; 2],
             points: vec![],
-            names: problem.patterns().iter().map(|p| p.name.clone()).collect(),
+            names: Names::new(built, fixed_groups),
             owner: dof_owners(problem),
             dissipated: vec![0.0; built.interfaces.len()],
             work: 0.0,
@@ -378,7 +392,8 @@ impl<'a> StepResults<'a> {
 
     /// The same results reporting the motion and reactions of `points` too.
     pub fn with_points(self, points: Vec<ResolvedPoint>) -> Self {
-        StepResults { points, ..self }
+        let names = Names { points: points.iter().map(|p| Arc::from(p.name.as_str())).collect(), ..self.names };
+        StepResults { points, names, ..self }
     }
 
     /// The next steps are solved on `built`: a problem of the same topology as the one before,
@@ -411,13 +426,13 @@ impl<'a> StepResults<'a> {
         let problem = &built.problem;
         let s = &step.solution;
         let before_tangential = self.previous.as_ref().map(|(_, t)| t.as_slice());
-        let mut contacts = BTreeMap::new();
+        let mut contacts = Vec::with_capacity(built.interfaces.len());
         for (k, iface) in built.interfaces.iter().enumerate() {
             self.dissipated[k] += interface_dissipation(iface, s, before_tangential);
-            contacts.insert(
-                iface.name.clone(),
+            contacts.push((
+                Names::shared(&self.names.interfaces, k, &iface.name),
                 contact_result_about(built, iface, s, (self.dissipated[k], self.centre), with_profile),
-            );
+            ));
         }
         let reactions = reactions_at_dofs(built, s, &step.factors)?;
         let force = external_force(built, &reactions, &step.factors);
@@ -444,20 +459,38 @@ impl<'a> StepResults<'a> {
         let gamma = n * f64::EPSILON / (1.0 - n * f64::EPSILON).max(0.5);
         let energy_allowance =
             EnergyAllowance { trapezoid: self.work_bounds.0, round_off: gamma * (self.work_bounds.1 + abs_energy) };
-        let energies: BTreeMap<String, f64> =
-            problem.model.bodies.iter().zip(per_body).map(|(body, e)| (body.name.clone(), e)).collect();
+        let energies: NamedMap<f64> = problem
+            .model
+            .bodies
+            .iter()
+            .zip(per_body)
+            .enumerate()
+            .map(|(b, (body, e))| (Names::shared(&self.names.bodies, b, &body.name), e))
+            .collect();
         let result = StepResult {
-            factors: self.names.iter().cloned().zip(step.factors.iter().copied()).collect(),
+            factors: self.names.patterns.iter().cloned().zip(step.factors.iter().copied()).collect(),
             status: status_name(s.status),
             failed_check: failed_check(problem, step),
             iterations: s.iterations,
             repairings: None,
             substeps: None,
-            contacts,
-            reactions: group_reactions(built, &reactions, self.fixed_groups, self.step),
-            points: self.points.iter().map(|p| (p.name.clone(), p.result(&s.displacement, &reactions))).collect(),
+            contacts: contacts.into_iter().collect(),
+            reactions: group_reactions(built, &reactions, (self.fixed_groups, &self.names.groups), self.step),
+            points: self
+                .names
+                .points
+                .iter()
+                .zip(&self.points)
+                .map(|(name, p)| (name.clone(), p.result(&s.displacement, &reactions)))
+                .collect(),
             reactions_total: reactions_total(built, &reactions),
-            reaction_moments: group_reaction_moments(built, &reactions, self.fixed_groups, self.centre, self.step),
+            reaction_moments: group_reaction_moments(
+                built,
+                &reactions,
+                (self.fixed_groups, &self.names.groups),
+                self.centre,
+                self.step,
+            ),
             reaction_moment_total: reaction_moment_total(built, &reactions, self.centre),
             energies,
             work: self.work,
@@ -472,18 +505,26 @@ impl<'a> StepResults<'a> {
                 floating_residual: step.floating_residual,
                 floating_iterations: step.floating_iterations,
             },
-            not_held: step.not_held.as_ref().map(|n| NotHeldResult {
-                contact: built
-                    .interfaces
-                    .iter()
-                    .find(|i| n.pairs.first().is_some_and(|k| i.pairs.contains(k)))
-                    .map_or_else(String::new, |i| i.name.clone()),
-                body: n.body.clone(),
-                step: n.step,
-                last_held_factors: self.names.iter().cloned().zip(self.held_factors.iter().copied()).collect(),
-                ratio: n.ratio(),
-                demanded: n.demanded,
-                available: n.available,
+            not_held: step.not_held.as_ref().map(|n| {
+                Box::new(NotHeldResult {
+                    contact: built
+                        .interfaces
+                        .iter()
+                        .find(|i| n.pairs.first().is_some_and(|k| i.pairs.contains(k)))
+                        .map_or_else(String::new, |i| i.name.clone()),
+                    body: n.body.clone(),
+                    step: n.step,
+                    last_held_factors: self
+                        .names
+                        .patterns
+                        .iter()
+                        .map(|k| k.to_string())
+                        .zip(self.held_factors.iter().copied())
+                        .collect(),
+                    ratio: n.ratio(),
+                    demanded: n.demanded,
+                    available: n.available,
+                })
             }),
             path_error: None,
         };
@@ -497,391 +538,48 @@ impl<'a> StepResults<'a> {
 
     /// The interfaces' results, with profiles, at `solution`, the last step pushed (the
     /// dissipation accumulated up to it).
-    pub fn contacts_with_profiles(&self, solution: &ContactSolution) -> BTreeMap<String, ContactResult> {
+    pub fn contacts_with_profiles(&self, solution: &ContactSolution) -> NamedMap<ContactResult> {
         let built = self.built;
         built
             .interfaces
             .iter()
             .zip(&self.dissipated)
-            .map(|(iface, d)| {
-                (iface.name.clone(), contact_result_about(built, iface, solution, (*d, self.centre), true))
+            .enumerate()
+            .map(|(k, (iface, d))| {
+                (
+                    Names::shared(&self.names.interfaces, k, &iface.name),
+                    contact_result_about(built, iface, solution, (*d, self.centre), true),
+                )
             })
             .collect()
     }
 }
 
-/// The body owning each global DOF (`usize::MAX`: none, e.g. a rigid obstacle's node).
-fn dof_owners(problem: &contact2d_contact::ContactProblem) -> Vec<usize> {
-    let mut owner = vec![usize::MAX; problem.system.dofs.num_global()];
-    for (b, body) in problem.model.bodies.iter().enumerate() {
-        for i in 0..body.num_cells() {
-            for d in body.cell_dofs(i) {
-                owner[d.0] = b;
-            }
+/// The names a history's rows are keyed by, each made once ([`Arc<str>`] shared by every row).
+#[derive(Debug, Clone)]
+struct Names {
+    patterns: Vec<Arc<str>>,
+    interfaces: Vec<Arc<str>>,
+    bodies: Vec<Arc<str>>,
+    groups: Vec<Arc<str>>,
+    points: Vec<Arc<str>>,
+}
+
+impl Names {
+    fn new(built: &BuiltProblem, groups: &[FixedGroup]) -> Self {
+        let problem = &built.problem;
+        Names {
+            patterns: problem.patterns().iter().map(|p| Arc::from(p.name.as_str())).collect(),
+            interfaces: built.interfaces.iter().map(|i| Arc::from(i.name.as_str())).collect(),
+            bodies: problem.model.bodies.iter().map(|b| Arc::from(b.name.as_str())).collect(),
+            groups: groups.iter().map(|g| Arc::from(g.name.as_str())).collect(),
+            points: vec![],
         }
     }
-    owner
-}
 
-/// The strain energy of every body, `½ uᵀ K u` summed over the DOFs it owns, from the assembled
-/// blocks instead of the element matrices (the bodies share no DOF, so `K` is block diagonal by
-/// body; `K_ff` is stored as its lower triangle and carries the floating pieces' springs `D`,
-/// which are no strain energy):
-///
-/// ```text
-/// U_b = ½ u_fᵀ (K_ff − D) u_f + u_fᵀ K_fc u_c + ½ u_cᵀ K_cc u_c     (rows of body b)
-/// ```
-///
-/// The same energy as the sum over the cells of `½ u_eᵀ K_e u_e` up to round-off, at the cost
-/// of one pass over the matrix per step instead of every element's stiffness. Also returns what
-/// bounds the round-off of these sums: `|K||u|` per global DOF and `½ |u|ᵀ|K||u|` over all
-/// bodies (with the springs `D`, whose `K u` terms are rounded as well).
-fn body_energies(problem: &contact2d_contact::ContactProblem, owner: &[usize], u: &[f64]) -> (Vec<f64>, Vec<f64>, f64) {
-    let dofs = &problem.system.dofs;
-    // The blocks are in the DOFs `u' = Tᵀ u` at framed nodes (`u` itself without frames).
-    let u = &*dofs.to_local(u);
-    let (free, fixed) = (dofs.free_dofs(), dofs.constrained_dofs());
-    // `K u` row by row first (each row's rigid-motion terms cancel there, to ε |K_i| |u|, as in
-    // `K_e u_e`), then `½ Σ u_g (K u)_g` per body: summing the products `u_i K_ij u_j` one by
-    // one instead loses the cancellation (1e-7 relative on a sliding block).
-    let mut ku = vec![0.0; dofs.num_global()];
-    let mut abs_ku = vec![0.0; dofs.num_global()];
-    let kff = problem.system.stiffness.as_ref();
-    for (j, dj) in free.iter().enumerate() {
-        for (i, v) in kff.row_idx_of_col(j).zip(kff.val_of_col(j)) {
-            let di = free[i];
-            ku[di.0] += v * u[dj.0];
-            abs_ku[di.0] += (v * u[dj.0]).abs();
-            if i != j {
-                ku[dj.0] += v * u[di.0];
-                abs_ku[dj.0] += (v * u[di.0]).abs();
-            }
-        }
+    /// The shared name `names[i]` where it is `name` (it is, but for a problem rebased on
+    /// another), else a new one.
+    pub(super) fn shared(names: &[Arc<str>], i: usize, name: &str) -> Arc<str> {
+        names.get(i).filter(|n| &***n == name).cloned().unwrap_or_else(|| Arc::from(name))
     }
-    for &(i, k) in &problem.system.stabilisation {
-        ku[free[i].0] -= k * u[free[i].0];
-        abs_ku[free[i].0] += (k * u[free[i].0]).abs();
-    }
-    let kfc = problem.system.coupling.as_ref();
-    let kcc = problem.system.constrained.as_ref();
-    for (j, dj) in fixed.iter().enumerate() {
-        for (i, v) in kfc.row_idx_of_col(j).zip(kfc.val_of_col(j)) {
-            ku[free[i].0] += v * u[dj.0];
-            ku[dj.0] += v * u[free[i].0];
-            abs_ku[free[i].0] += (v * u[dj.0]).abs();
-            abs_ku[dj.0] += (v * u[free[i].0]).abs();
-        }
-        for (i, v) in kcc.row_idx_of_col(j).zip(kcc.val_of_col(j)) {
-            ku[fixed[i].0] += v * u[dj.0];
-            abs_ku[fixed[i].0] += (v * u[dj.0]).abs();
-        }
-    }
-    let mut energy = vec![0.0; problem.model.bodies.len()];
-    for (g, (kug, ug)) in ku.iter().zip(u).enumerate() {
-        if let Some(e) = energy.get_mut(owner[g]) {
-            *e += 0.5 * ug * kug;
-        }
-    }
-    let abs_energy = abs_ku.iter().zip(u).map(|(k, v)| 0.5 * k * v.abs()).sum();
-    (energy, abs_ku, abs_energy)
-}
-
-/// The reactions of a step in global DOF order (zero at free DOFs).
-fn reactions_at_dofs(built: &BuiltProblem, s: &ContactSolution, factors: &[f64]) -> Result<Vec<f64>, ContactError> {
-    let problem = &built.problem;
-    let mut at_dof = vec![0.0; problem.system.dofs.num_global()];
-    let r = problem.reactions(s, factors)?;
-    for (j, d) in problem.system.dofs.constrained_dofs().iter().enumerate() {
-        at_dof[d.0] = r[j];
-    }
-    // `r = T r'` at framed nodes.
-    problem.system.dofs.to_global_in_place(&mut at_dof);
-    Ok(at_dof)
-}
-
-/// `[R1, R2]`: the reactions (global DOF order) of every constrained DOF, each once (both
-/// components of a framed node's).
-fn reactions_total(built: &BuiltProblem, at_dof: &[f64]) -> [f64; 2] {
-    built.problem.system.dofs.reaction_dofs().iter().fold([0.0; 2], |mut a, d| {
-        a[d.0 % 2] += at_dof[d.0];
-        a
-    })
-}
-
-/// The external nodal forces of a step in global DOF order: the loads of its pattern factors plus
-/// the reactions.
-fn external_force(built: &BuiltProblem, reactions: &[f64], factors: &[f64]) -> Vec<f64> {
-    let mut f = reactions.to_vec();
-    for (pattern, factor) in built.problem.patterns().iter().zip(factors) {
-        f.iter_mut().zip(&pattern.nodal).for_each(|(f, v)| *f += factor * v);
-    }
-    f
-}
-
-/// `[f1, f2]` summed over the reactions (global DOF order) of each group's nodes, in the
-/// components the group's own fixes prescribe in step `step` (`None` in the others: a node
-/// there may be held by another group, whose reaction that is; and a staged fix that does not
-/// hold in the step exerts no force of its own).
-fn group_reactions(
-    built: &BuiltProblem,
-    at_dof: &[f64],
-    groups: &[FixedGroup],
-    step: usize,
-) -> BTreeMap<String, [Option<f64>; 2]> {
-    groups
-        .iter()
-        .filter_map(|g| {
-            let nodes = built.problem.model.mesh.group_nodes(&g.name).ok()?;
-            let components = g.components_at(step);
-            let sum = |c: usize| components[c].then(|| nodes.iter().map(|n| at_dof[2 * n.0 + c]).sum::<f64>());
-            Some((g.name.clone(), [sum(0), sum(1)]))
-        })
-        .collect()
-}
-
-/// `(x − c) × f` for the force `f` in component `component` (0: x1, 1: x2) at `x`.
-fn moment_of(x: [f64; 2], centre: [f64; 2], component: usize, f: f64) -> f64 {
-    if component == 0 { -(x[1] - centre[1]) * f } else { (x[0] - centre[0]) * f }
-}
-
-/// The moment about `centre` of the reactions (global DOF order) of every constrained DOF.
-fn reaction_moment_total(built: &BuiltProblem, at_dof: &[f64], centre: [f64; 2]) -> f64 {
-    let points = &built.problem.model.mesh.points;
-    built
-        .problem
-        .system
-        .dofs
-        .reaction_dofs()
-        .iter()
-        .map(|d| points.get(d.0 / 2).map_or(f64::NAN, |x| moment_of(*x, centre, d.0 % 2, at_dof[d.0])))
-        .sum()
-}
-
-/// The moment about `centre` of each group's reactions in the components its own fixes
-/// prescribe (as [`group_reactions`]).
-fn group_reaction_moments(
-    built: &BuiltProblem,
-    at_dof: &[f64],
-    groups: &[FixedGroup],
-    centre: [f64; 2],
-    step: usize,
-) -> BTreeMap<String, f64> {
-    let points = &built.problem.model.mesh.points;
-    groups
-        .iter()
-        .filter_map(|g| {
-            let nodes = built.problem.model.mesh.group_nodes(&g.name).ok()?;
-            // A staged group that holds nothing in this step has no moment (as its reactions
-            // are null).
-            let components = g.components_at(step);
-            if components == [false; 2] {
-                return None;
-            }
-            let moment = nodes
-                .iter()
-                .flat_map(|n| (0..2).filter(|c| components[*c]).map(move |c| (n.0, c)))
-                .map(|(n, c)| points.get(n).map_or(f64::NAN, |x| moment_of(*x, centre, c, at_dof[2 * n + c])))
-                .sum();
-            Some((g.name.clone(), moment))
-        })
-        .collect()
-}
-
-/// The interface's pairs sorted by arc length along the master.
-fn sorted_pairs(built: &BuiltProblem, iface: &InterfaceInfo) -> Vec<usize> {
-    let pairs = &built.problem.pairs;
-    let mut order: Vec<usize> = iface.pairs.clone().collect();
-    order.sort_by(|a, b| pairs[*a].master_arc_length.total_cmp(&pairs[*b].master_arc_length).then(a.cmp(b)));
-    order
-}
-
-/// One interface's results for the solution `s` of a step: forces, zone lengths, the largest
-/// pressure, the given accumulated dissipation, moments about the given centre and, if asked,
-/// the profile
-/// (`p_k = λ_k / (w_k t_h)`, `q_k = τ_k / (w_k t_h)` with `w_k` the master node's tributary
-/// length and `t_h` the thickness).
-pub fn contact_result(
-    built: &BuiltProblem,
-    iface: &InterfaceInfo,
-    s: &ContactSolution,
-    dissipation: f64,
-    with_profile: bool,
-) -> ContactResult {
-    contact_result_about(built, iface, s, (dissipation, [0.0; 2]), with_profile)
-}
-
-/// [`contact_result`] with the moments about `centre`.
-pub fn contact_result_about(
-    built: &BuiltProblem,
-    iface: &InterfaceInfo,
-    s: &ContactSolution,
-    (dissipation, centre): (f64, [f64; 2]),
-    with_profile: bool,
-) -> ContactResult {
-    let problem = &built.problem;
-    let order = sorted_pairs(built, iface);
-    let kinematics = problem.model.body(&iface.master_region).map(|(_, b)| b.kinematics);
-    let thickness = kinematics.map_or(1.0, |k| k.pair_area_factor());
-    let area = |k: usize| problem.pairs[k].weight * thickness;
-    let arc: Vec<f64> = order.iter().map(|&k| problem.pairs[k].master_arc_length).collect();
-    let in_contact: Vec<bool> = order.iter().map(|&k| s.state[k] != PairState::Free).collect();
-    let sticks: Vec<bool> = order.iter().map(|&k| s.state[k] == PairState::Stick).collect();
-    let gap: Vec<f64> = order.iter().map(|&k| s.gap[k].max(0.0)).collect();
-    let slip: Vec<f64> = order.iter().map(|&k| s.slip_increment[k].abs()).collect();
-    let points: Vec<[f64; 2]> = order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0]).collect();
-    let master = &iface.master_contour;
-    let curve = PairCurve { arc: &arc, points: &points, period: master.closed.then(|| master.length()) };
-    let contact = ZoneMarks { inside: &in_contact, opening: &gap, in_contact: &in_contact };
-    let stick = ZoneMarks { inside: &sticks, opening: &slip, in_contact: &in_contact };
-    let contact_length = zones_span(&curve, &contact);
-    // The stick zones lie inside the contact zones; their ends are interpolated from different
-    // profiles (slip against gap), which must not make the part longer than the whole.
-    let stick_length = if iface.friction > 0.0 { zones_length(&curve, &stick).min(contact_length) } else { 0.0 };
-    let zones = zone_ends(&curve, &contact);
-    let stick_zones = if iface.friction > 0.0 { zone_ends(&curve, &stick) } else { ZoneEnds::default() };
-    let normal_force = order.iter().map(|&k| s.normal_force[k]).sum();
-    let rigid_moment = iface.rigid_slave.then(|| interface_moment(built, iface, s, centre, |_| true));
-    let profile = with_profile.then(|| {
-        Box::new(Profile {
-            s: arc.clone(),
-            x: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][0]).collect(),
-            y: order.iter().map(|&k| problem.model.mesh.points[problem.pairs[k].master.0][1]).collect(),
-            pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).collect(),
-            shear: order.iter().map(|&k| s.tangential_force[k] / area(k)).collect(),
-            gap: order.iter().map(|&k| s.gap[k]).collect(),
-            slip: order.iter().map(|&k| s.slip[k]).collect(),
-            state: order.iter().map(|&k| state_label(s.state[k], problem.friction[k])).collect(),
-        })
-    });
-    ContactResult {
-        normal_force,
-        tangential_force: order.iter().map(|&k| s.tangential_force[k]).sum(),
-        contact_length,
-        stick_length,
-        mean_pressure: mean_pressure(normal_force, contact_length, zone_width(problem, iface, &order, s, kinematics)),
-        max_pressure: order.iter().map(|&k| s.normal_force[k] / area(k)).fold(0.0, f64::max),
-        dissipation,
-        resultant: slave_resultant(built, iface, s),
-        rigid_resultant: iface.rigid_slave.then(|| rigid_resultant(built, iface, s)),
-        moment: rigid_moment.map_or_else(|| slave_moment(built, iface, s, centre), |m| -m),
-        rigid_moment,
-        couple: (!iface.rigid_slave).then(|| interface_moment(built, iface, s, centre, |_| true)),
-        closed: master.closed,
-        zones,
-        stick_zones,
-        profile,
-        fretting: None,
-    }
-}
-
-/// What turns the contact length into the contact area: the thickness `t` in the plane; for a
-/// body of revolution the circumference `2π r̄` at the arc-length centroid of the master nodes in
-/// contact, `r̄ = Σ ds_a r_a / Σ ds_a` (`ds_a` their tributary lengths on the master curve), so
-/// that `2π r̄ L` is Pappus' area of the zone: `π a²` for a disc 0 ≤ r ≤ a, `2π b L` on a bore
-/// of radius b. (Weighing by the ring areas, `ds_a 2π r_a`, would give the area centroid, 2a/3
-/// on a disc, and a mean pressure 3/4 of the force over the disc's area.)
-fn zone_width(
-    problem: &contact2d_contact::ContactProblem,
-    iface: &InterfaceInfo,
-    order: &[usize],
-    s: &ContactSolution,
-    kinematics: Option<contact2d_element::Kinematics>,
-) -> f64 {
-    let Some(kinematics) = kinematics.filter(|k| k.thickness().is_none()) else {
-        return kinematics.map_or(1.0, |k| k.pair_area_factor());
-    };
-    let points = &problem.model.mesh.points;
-    let mut touching = vec![false; points.len()];
-    for &k in order.iter().filter(|&&k| s.state[k] != PairState::Free) {
-        touching[problem.pairs[k].master.0] = true;
-    }
-    let master = &iface.master_contour;
-    let lengths = contact2d_contact::tributary_weights(master);
-    let (sum_ds, sum_ds_r) = master
-        .nodes
-        .iter()
-        .zip(&lengths)
-        .filter(|(n, _)| touching[n.0])
-        .fold((0.0, 0.0), |(l, lr), (n, ds)| (l + ds, lr + ds * points[n.0][0]));
-    if sum_ds > 0.0 { kinematics.pairing_measure([sum_ds_r / sum_ds, 0.0]) } else { 1.0 }
-}
-
-/// `normal_force / (contact_length t)`, the mean pressure over the contact length (`None` where
-/// the length is 0: no length to spread the force over).
-pub(crate) fn mean_pressure(normal_force: f64, contact_length: f64, thickness: f64) -> Option<f64> {
-    (contact_length > 0.0).then(|| normal_force / (contact_length * thickness))
-}
-
-/// The moment about `centre` of the interface's pair forces on the nodes `on` selects
-/// ([`contact2d_contact::ContactProblem::pair_moment_on`]; NaN, caught as a non-finite summary,
-/// if a pair were out of range).
-fn interface_moment(
-    built: &BuiltProblem,
-    iface: &InterfaceInfo,
-    s: &ContactSolution,
-    centre: [f64; 2],
-    on: impl Fn(usize) -> bool + Copy,
-) -> f64 {
-    iface
-        .pairs
-        .clone()
-        .map(|k| {
-            let forces = (s.normal_force[k], s.tangential_force[k]);
-            built.problem.pair_moment_on(k, forces, centre, on).unwrap_or(f64::NAN)
-        })
-        .sum()
-}
-
-/// The moment about `centre` of the contact forces on the slave curve's nodes (an interface
-/// with a deformable slave).
-fn slave_moment(built: &BuiltProblem, iface: &InterfaceInfo, s: &ContactSolution, centre: [f64; 2]) -> f64 {
-    let mut on_slave = vec![false; built.problem.model.mesh.num_nodes()];
-    for node in iface.slave_contour.nodes.iter() {
-        on_slave[node.0] = true;
-    }
-    interface_moment(built, iface, s, centre, |n| on_slave.get(n).copied().unwrap_or(false))
-}
-
-/// The force on the slave side of the interface: on the nodes of the slave curve, or, for a
-/// rigid obstacle (no DOFs), the opposite of its force on the bodies.
-fn slave_resultant(built: &BuiltProblem, iface: &InterfaceInfo, s: &ContactSolution) -> [f64; 2] {
-    if iface.rigid_slave {
-        let r = rigid_resultant(built, iface, s);
-        return [-r[0], -r[1]];
-    }
-    let mut on_slave = vec![false; built.problem.model.mesh.num_nodes()];
-    for node in iface.slave_contour.nodes.iter() {
-        on_slave[node.0] = true;
-    }
-    iface.pairs.clone().fold([0.0; 2], |a, k| {
-        let f = built
-            .problem
-            .pair_force_on(k, s.normal_force[k], s.tangential_force[k], |n| on_slave.get(n).copied().unwrap_or(false))
-            .unwrap_or([f64::NAN; 2]);
-        [a[0] + f[0], a[1] + f[1]]
-    })
-}
-
-/// The force a rigid obstacle exerts on the bodies through the interface's pairs, `Σ_k R_k`
-/// ([`contact2d_contact::ContactProblem::pair_resultant`]; NaN, caught as a non-finite summary,
-/// if a pair were out of range).
-fn rigid_resultant(built: &BuiltProblem, iface: &InterfaceInfo, s: &ContactSolution) -> [f64; 2] {
-    iface.pairs.clone().fold([0.0; 2], |a, k| {
-        let r = built.problem.pair_resultant(k, s.normal_force[k], s.tangential_force[k]).unwrap_or([f64::NAN; 2]);
-        [a[0] + r[0], a[1] + r[1]]
-    })
-}
-
-/// The friction work of the interface's slipping pairs in one step (trapezoid rule; `previous`:
-/// the tangential forces the step started from).
-fn interface_dissipation(iface: &InterfaceInfo, s: &ContactSolution, previous: Option<&[f64]>) -> f64 {
-    iface
-        .pairs
-        .clone()
-        .filter(|&k| matches!(s.state[k], PairState::SlipPositive | PairState::SlipNegative))
-        .map(|k| {
-            let start = previous.map_or(0.0, |p| p[k]);
-            -0.5 * (start + s.tangential_force[k]) * s.slip_increment[k]
-        })
-        .sum()
 }
