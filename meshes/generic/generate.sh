@@ -92,9 +92,9 @@ done
 kinds=(T3 T6 Q4 Q8 Q9)
 for level in 1 2; do
   for k in 1 2 3 4 5; do
-    for geo in hertz_sphere_axisymmetric punch_axisymmetric; do
+    for geo in hertz_sphere_axisymmetric punch_axisymmetric shrink_fit_axisymmetric_kinds; do
       "$GMSH" "$here/$geo.geo" -2 -format msh41 -v 1 -setnumber kind "$k" -setnumber level "$level" \
-        -o "$here/${geo}_${kinds[$((k - 1))]}_L$level.msh"
+        -o "$here/${geo%_kinds}_${kinds[$((k - 1))]}_L$level.msh"
     done
   done
 done
