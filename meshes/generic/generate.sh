@@ -74,6 +74,10 @@ pf_curves=plug_axis,plug_tip,plug_top,plug_back,wall_surface,wall_top
 for level in 1 2; do
   mesh press_fit.geo "press_fit_L$level.msh" plug,wall "$pf_curves" -- -setnumber level "$level"
 done
+# press_fit.geo reflected about x = y as a body of revolution (x = r, y = z): its cells come out
+# clockwise, which Model::add_body renumbers, so check_mesh.py (counter-clockwise) is not run.
+"$GMSH" "$here/press_fit_axisymmetric.geo" -2 -order 2 -format msh41 -v 1 -setnumber level 1 \
+  -o "$here/press_fit_axisymmetric_L1.msh"
 for level in 1 3; do
   mesh moving_roller.geo "moving_roller_L$level.msh" roller,block roller_arc,roller_top,block_top,block_bottom,block_sides \
     roller_arc:3 block_top:3 -- -setnumber level "$level"
@@ -88,7 +92,8 @@ for h in 032 016; do
 done
 # Every element type (T3 T6 Q4 Q8 Q9): the .geo sets the order, the recombination and the
 # incomplete second order from `kind`, so no -order here; check_mesh.py checks Quad9 files only,
-# these are read by the tests (tests/verification/verify_axisymmetric_contact.rs).
+# these are read by the tests (tests/verification/verify_axisymmetric_contact.rs and
+# verify_axisymmetric_shrink_fit.rs).
 kinds=(T3 T6 Q4 Q8 Q9)
 for level in 1 2; do
   for k in 1 2 3 4 5; do
