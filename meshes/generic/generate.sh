@@ -76,8 +76,10 @@ for level in 1 2; do
 done
 # press_fit.geo reflected about x = y as a body of revolution (x = r, y = z): its cells come out
 # clockwise, which Model::add_body renumbers, so check_mesh.py (counter-clockwise) is not run.
-"$GMSH" "$here/press_fit_axisymmetric.geo" -2 -order 2 -format msh41 -v 1 -setnumber level 1 \
-  -o "$here/press_fit_axisymmetric_L1.msh"
+for level in 1 2; do
+  "$GMSH" "$here/press_fit_axisymmetric.geo" -2 -order 2 -format msh41 -v 1 -setnumber level "$level" \
+    -o "$here/press_fit_axisymmetric_L$level.msh"
+done
 for level in 1 3; do
   mesh moving_roller.geo "moving_roller_L$level.msh" roller,block roller_arc,roller_top,block_top,block_bottom,block_sides \
     roller_arc:3 block_top:3 -- -setnumber level "$level"

@@ -5,6 +5,7 @@
 // reflected about the line x = y, so the half model's symmetry line y = 0 is the axis r = 0.
 //
 // Run:  gmsh press_fit_axisymmetric.geo -2 -order 2 -format msh41 -setnumber level 1 -o press_fit_axisymmetric_L1.msh
+//       (level 2: press_fit_axisymmetric_L2.msh)
 
 Include "press_fit.geo";
 
