@@ -98,13 +98,7 @@ pub fn run(root: &Path, level: Level) -> Result<CaseReport, VerifyError> {
             // The targets are the issue's, at the finest level, for the default pairing of a
             // non-matching interface (segment-to-segment); node-to-segment is reported beside it.
             if i + 1 == levels.len() && pairing == "segment_to_segment" {
-                let check = |q: &str, m: f64, r: f64, t: Tolerance| Check {
-                    quantity: q.into(),
-                    mesh: mesh.clone(),
-                    measured: m,
-                    reference: r,
-                    tolerance: t,
-                };
+                let check = |q: &str, m: f64, r: f64, t: Tolerance| Check::on(&mesh, q, m, r, t);
                 report.checks.push(check("a (mm)", run.a, a, Tolerance::Relative(0.01)));
                 report.checks.push(check("p(0) (MPa)", run.p_centre, p0, Tolerance::Relative(0.015)));
                 report.checks.push(check("pressure L2 error / p0", run.profile_error, 0.0, Tolerance::Absolute(0.02)));

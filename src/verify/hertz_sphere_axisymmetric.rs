@@ -133,13 +133,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
         for kind in KINDS {
             let run = measure(root, &format!("hertz_sphere_axisymmetric_{kind}_L{level}.msh"))?;
             let mesh = format!("{kind} L{level}");
-            let check = |q: &str, m: f64, r: f64, t: Tolerance| Check {
-                quantity: q.into(),
-                mesh: mesh.clone(),
-                measured: m,
-                reference: r,
-                tolerance: t,
-            };
+            let check = |q: &str, m: f64, r: f64, t: Tolerance| Check::on(&mesh, q, m, r, t);
             report.checks.push(check("a (mm)", run.a, a, Tolerance::Relative(h)));
             report.checks.push(check("p0, fitted over r < 0.8a (MPa)", run.p0, p0, Tolerance::Relative(h)));
             report.checks.push(check(

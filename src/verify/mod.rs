@@ -72,6 +72,11 @@ pub struct Check {
 }
 
 impl Check {
+    /// The check of `quantity` on `mesh`: `measured` against `reference` within `tolerance`.
+    pub fn on(mesh: &str, quantity: &str, measured: f64, reference: f64, tolerance: Tolerance) -> Check {
+        Check { quantity: quantity.into(), mesh: mesh.into(), measured, reference, tolerance }
+    }
+
     /// The check of the value among `values` farthest from `reference` (NaN when there is none,
     /// which fails), on the bundled mesh, within `relative` of the reference.
     pub fn worst_of(quantity: &str, values: &[f64], reference: f64, relative: f64) -> Check {

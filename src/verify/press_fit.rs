@@ -172,13 +172,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
     let mut l1_balance = None;
     for (mesh, file) in MESHES {
         let run = measure(&solve(root, &[mesh_override(file)])?)?;
-        let check = |quantity: &str, measured: f64, reference: f64, tolerance: Tolerance| Check {
-            quantity: quantity.into(),
-            mesh: mesh.into(),
-            measured,
-            reference,
-            tolerance,
-        };
+        let check = |q: &str, m: f64, r: f64, t: Tolerance| Check::on(mesh, q, m, r, t);
         report.checks.extend([
             check("(F − F_s) / (μ p (L − L_s)), worst step, L ≥ 2a", 1.0 + run.growth, 1.0, Tolerance::Relative(0.01)),
             check(

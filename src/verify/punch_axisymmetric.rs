@@ -113,13 +113,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
             let tolerance = domain_bound() + edge_cell(level, quadratic);
             let run = measure(root, &format!("punch_axisymmetric_{kind}_L{level}.msh"))?;
             let mesh = format!("{kind} L{level}");
-            let check = |q: &str, m: f64, r: f64, t: Tolerance| Check {
-                quantity: q.into(),
-                mesh: mesh.clone(),
-                measured: m,
-                reference: r,
-                tolerance: t,
-            };
+            let check = |q: &str, m: f64, r: f64, t: Tolerance| Check::on(&mesh, q, m, r, t);
             report.checks.push(check("P (N)", run.force, force, Tolerance::Relative(tolerance)));
             report.checks.push(check(
                 "pressure L2 error / p(0), 0 < r ≤ 0.7a",

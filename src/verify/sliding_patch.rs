@@ -60,13 +60,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
         scene.every_profile = true;
         let out = solve_generic(&scene, &mut |_, _| {})?;
         let (worst, transition) = measure(&out.report)?;
-        let check = |quantity: &str, measured: f64, reference: f64, tolerance: Tolerance| Check {
-            quantity: quantity.into(),
-            mesh: mesh.into(),
-            measured,
-            reference,
-            tolerance,
-        };
+        let check = |q: &str, m: f64, r: f64, t: Tolerance| Check::on(mesh, q, m, r, t);
         report.checks.extend([
             check("tangential force T / (μP), worst step", worst.tangential, 1.0, Tolerance::Relative(1e-6)),
             check("max abs(p_k − p) / p, worst step", worst.pressure, 0.0, Tolerance::Absolute(1e-6)),
