@@ -54,3 +54,21 @@ fn unknown_formulation_is_a_scene_error() {
     let s = PlateInsertScene::load(std::path::Path::new("scenes/plate_insert_nogap_mu0.toml"), &[]).unwrap();
     assert_eq!(s.plate_insert().formulation, contact2d::element::Formulation::Standard);
 }
+
+/// A nearly incompressible body of revolution locks as plane strain does (λ → ∞ in its 4×4 D):
+/// the standard elements warn naming the kinematics, B-bar does not
+/// (`scenes/generic/shrink_fit_axisymmetric.toml`; B-bar's accuracy there:
+/// tests/verification/verify_axisymmetric_lame.rs, `bbar_tubes_of_revolution_do_not_lock`).
+#[test]
+fn a_body_of_revolution_warns_as_plane_strain_does() {
+    let notes = |formulation: &str| {
+        let sets = ["body.0.poissons_ratio=0.49".to_string(), format!("body.0.formulation=\"{formulation}\"")];
+        let scene =
+            contact2d::generic::load_scene(std::path::Path::new("scenes/generic/shrink_fit_axisymmetric.toml"), &sets)
+                .unwrap();
+        scene.element_warnings()
+    };
+    let standard = notes("standard");
+    assert!(standard.iter().any(|n| n.contains("axisymmetric with ν = 0.49") && n.contains("lock")), "{standard:?}");
+    assert!(notes("bbar").is_empty());
+}

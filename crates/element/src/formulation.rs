@@ -147,14 +147,25 @@ pub const LOCKING_POISSON_THRESHOLD: f64 = 0.45;
 /// assert!(locking_warning(PlaneCondition::Strain, 0.3, Formulation::Standard).is_none());
 /// ```
 pub fn locking_warning(plane: PlaneCondition, poissons_ratio: f64, formulation: Formulation) -> Option<String> {
-    (plane == PlaneCondition::Strain
+    let kinematics = match plane {
+        PlaneCondition::Stress => Kinematics::PlaneStress { thickness: 1.0 },
+        PlaneCondition::Strain => Kinematics::PlaneStrain { thickness: 1.0 },
+    };
+    locking_warning_in(&kinematics, poissons_ratio, formulation)
+}
+
+/// [`locking_warning`] for a body of any [`Kinematics`]: plane strain and bodies of revolution
+/// lock (λ = Eν/((1 + ν)(1 − 2ν)) grows without bound as ν → ½), plane stress does not.
+pub fn locking_warning_in(kinematics: &Kinematics, poissons_ratio: f64, formulation: Formulation) -> Option<String> {
+    (!matches!(kinematics, Kinematics::PlaneStress { .. })
         && formulation == Formulation::Standard
         && poissons_ratio > LOCKING_POISSON_THRESHOLD)
         .then(|| {
             format!(
-                "plane strain with ν = {poissons_ratio} > {LOCKING_POISSON_THRESHOLD}: standard displacement \
+                "{} with ν = {poissons_ratio} > {LOCKING_POISSON_THRESHOLD}: standard displacement \
                  elements lock volumetrically (displacements too small, stresses polluted); use the B-bar \
-                 formulation (scene key plate_insert.formulation = \"bbar\")"
+                 formulation (scene key plate_insert.formulation = \"bbar\")",
+                kinematics.name()
             )
         })
 }

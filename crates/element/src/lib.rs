@@ -34,7 +34,7 @@ pub mod stress;
 pub use error::ElementError;
 pub use formulation::{
     DilatationProjection, Formulation, LOCKING_POISSON_THRESHOLD, VolumetricSplit, deviatoric_split, lame_parameters,
-    locking_warning, pressure_space_dim, volumetric_split,
+    locking_warning, locking_warning_in, pressure_space_dim, volumetric_split,
 };
 pub use isoparametric::{EdgePoint, MappedPoint, jacobian_determinant, map_edge_point, map_point};
 pub use kinematics::Kinematics;

@@ -50,7 +50,7 @@ use contact2d_contact::{
     LoadDescription, Pairing, ProblemDescription, SolverSettings, StageActivity,
     builder::{DEFAULT_PATTERN, pattern_order},
 };
-use contact2d_element::{Formulation, PlaneCondition, locking_warning};
+use contact2d_element::{Formulation, PlaneCondition, locking_warning_in};
 use contact2d_fem::Component;
 use contact2d_mesh::Mesh;
 
@@ -654,13 +654,12 @@ impl GenericScene {
     }
 
     /// Warnings about the elements: standard elements of a nearly incompressible body in plane
-    /// strain lock.
+    /// strain or of revolution lock.
     pub fn element_warnings(&self) -> Vec<String> {
         self.body
             .iter()
             .filter_map(|b| {
-                let plane = self.body_plane(b);
-                locking_warning(plane, b.poissons_ratio, b.formulation.formulation())
+                locking_warning_in(&self.body_kinematics(b), b.poissons_ratio, b.formulation.formulation())
                     .map(|w| format!("body \"{}\": {w}", b.region))
             })
             .collect()
