@@ -138,9 +138,10 @@ impl Kinematics {
         matches!(self, Kinematics::Axisymmetric)
     }
 
-    /// The in-plane block of the constitutive matrix, acting on `[ε11, ε22, γ12]`: the
-    /// plane stress or plane strain matrix ([`PlaneCondition::elasticity_matrix`]) in the plane, the plane-strain matrix (the `rr, zz, rz` block of
-    /// the 4×4 isotropic matrix) for a body of revolution.
+    /// The in-plane block of the constitutive matrix, acting on `[ε11, ε22, γ12]`: the plane
+    /// stress or plane strain matrix ([`PlaneCondition::elasticity_matrix`]) in the plane, the
+    /// plane-strain matrix (the `rr, zz, rz` block of the 4×4 isotropic matrix) for a body of
+    /// revolution.
     pub fn in_plane_elasticity(&self, material: &Material) -> Matrix3<f64> {
         match self {
             Kinematics::PlaneStress { .. } => PlaneCondition::Stress.elasticity_matrix(material),
