@@ -432,14 +432,15 @@ pub(crate) fn draw(path: &Path, reference: &Reference, rows: &[CompareRow]) -> R
 
 #[cfg(test)]
 #[allow(clippy::unwrap_used)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use crate::output::chart::FIGURE_SIZE;
 
-    fn row(algorithm: &'static str, level: usize, value: Option<f64>) -> CompareRow {
+    /// A row of `algorithm` × `pairing` on mesh `level` with the value `q` (skipped without one).
+    pub(crate) fn row(algorithm: &'static str, pairing: &'static str, level: usize, value: Option<f64>) -> CompareRow {
         CompareRow {
             algorithm,
-            pairing: "node_to_segment",
+            pairing,
             level,
             mesh: format!("L{level}"),
             status: if value.is_some() { "converged".into() } else { "skipped".into() },
@@ -490,7 +491,7 @@ mod tests {
             for (p, pairing) in ["node_to_segment", "node_to_node", "segment_to_segment"].into_iter().enumerate() {
                 for level in 0..3 {
                     let k = (3 * a + p) as f64;
-                    let mut r = row(algorithm.key(), level, Some(1.0));
+                    let mut r = row(algorithm.key(), "node_to_segment", level, Some(1.0));
                     r.pairing = pairing;
                     r.time = 0.05 * 4f64.powi(level as i32) * (1.0 + k / 3.0);
                     r.errors.insert(

@@ -300,24 +300,7 @@ pub fn richardson(series: &[(usize, f64)]) -> Result<Extrapolation, String> {
 #[allow(clippy::unwrap_used)]
 mod tests {
     use super::*;
-
-    fn row(algorithm: &'static str, pairing: &'static str, level: usize, value: Option<f64>) -> CompareRow {
-        CompareRow {
-            algorithm,
-            pairing,
-            level,
-            mesh: format!("L{level}"),
-            status: if value.is_some() { "converged".into() } else { "skipped".into() },
-            reason: None,
-            time: 1.0,
-            solve_time: 1.0,
-            iterations: 1,
-            pairs: 1,
-            kkt: [0.0; 3],
-            values: value.map(|v| BTreeMap::from([("q".to_string(), v)])).unwrap_or_default(),
-            errors: BTreeMap::new(),
-        }
-    }
+    use crate::compare::tests::row;
 
     fn q() -> Vec<String> {
         vec!["q".to_string()]
