@@ -21,6 +21,7 @@ use faer::sparse::Triplet;
 use nalgebra::DMatrix;
 use rayon::prelude::*;
 
+use crate::cell_matrix::{cell_kinds, element_matrix};
 use crate::dof::{Component, Dof, DofKind, DofMap};
 use crate::error::FemError;
 use crate::model::{EdgeLoad, Model};
@@ -241,20 +242,6 @@ fn scatter_cell(model: &Model, dofs: &DofMap, b: usize, i: usize, t: &mut Triple
     let k = element_matrix(model, dofs, b, i)?;
     scatter_constrained(&kinds, &k, t);
     Ok(())
-}
-
-/// The DOF kinds of cell `i` of body `b`, in element order.
-pub(crate) fn cell_kinds(model: &Model, dofs: &DofMap, b: usize, i: usize) -> Vec<DofKind> {
-    model.bodies[b].cell_dofs(i).map(|d| dofs.kind(d)).collect()
-}
-
-/// The stiffness matrix of cell `i` of body `b` ([`crate::model::Body::cell_stiffness`]) in the
-/// DOFs of `dofs`: `T_eᵀ K_e T_e` at nodes with a local frame ([`DofMap::rotate_cell_matrix`]).
-pub(crate) fn element_matrix(model: &Model, dofs: &DofMap, b: usize, i: usize) -> Result<DMatrix<f64>, FemError> {
-    let body = &model.bodies[b];
-    let mut k = body.cell_stiffness(&model.mesh, i)?;
-    dofs.rotate_cell_matrix(body.cell_nodes(i).iter().map(|n| n.0), &mut k);
-    Ok(k)
 }
 
 /// The `K_fc` and `K_cc` entries of a cell's matrix `k` as triplets, column by column.

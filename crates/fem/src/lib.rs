@@ -14,6 +14,7 @@
 //! A unit square of Quad4 pulled by a prescribed displacement: see `tests/` and the README.
 
 pub mod assembly;
+mod cell_matrix;
 mod constrained;
 pub mod dof;
 pub mod error;

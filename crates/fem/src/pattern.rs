@@ -100,7 +100,7 @@ pub(crate) fn assemble_free_free(model: &Model, dofs: &DofMap, graph: &NodeGraph
         let (first, last, base) = (bounds[w], bounds[w + 1], col_ptr[bounds[w]]);
         for &c in &block_cells[w] {
             let (b, i) = cells[c];
-            let k_e = crate::assembly::element_matrix(model, dofs, b, i)?;
+            let k_e = crate::cell_matrix::element_matrix(model, dofs, b, i)?;
             let idx = cell_dofs(b, i);
             for (a, col) in idx.iter().enumerate() {
                 let Some(col) = *col else { continue };

@@ -20,10 +20,8 @@ use faer::sparse::SymbolicSparseColMat;
 use nalgebra::DMatrix;
 use rayon::prelude::*;
 
-use crate::assembly::{
-    LinearSystem, Triplets, assemble, cell_kinds, element_matrix, floating_of, model_cells, scatter_constrained,
-    system_of,
-};
+use crate::assembly::{LinearSystem, Triplets, assemble, floating_of, model_cells, scatter_constrained, system_of};
+use crate::cell_matrix::{cell_kinds, element_matrix};
 use crate::dof::{DofKind, DofMap};
 use crate::error::FemError;
 use crate::model::{Body, Model};

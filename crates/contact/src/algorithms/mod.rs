@@ -12,6 +12,7 @@
 //! augmented_lagrangian      Alart–Curnier semi-smooth Newton on the full system (sparse LU)
 //! full_system               contact stiffness scale and fixed-pattern sparse LU (shared)
 //! state_equations           the linear system of a given zone configuration (shared)
+//! state_layout              which unknowns a zone configuration leaves open (shared)
 //! state_update              a state's system as a low-rank update of the last factored one
 //! sparse_active_set         the active set on the sparse full system (crate::kkt), no condensation
 //! semi_smooth               the state update and admissibility test of both active-set paths (shared)
@@ -31,5 +32,6 @@ pub mod penalty;
 pub(crate) mod semi_smooth;
 pub(crate) mod sparse_active_set;
 pub(crate) mod state_equations;
+pub(crate) mod state_layout;
 pub(crate) mod state_update;
 pub mod stick_continuation;

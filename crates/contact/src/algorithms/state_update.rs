@@ -32,7 +32,7 @@ use faer::linalg::matmul::matmul;
 use faer::{Accum, Mat};
 use nalgebra::DMatrix;
 
-use crate::algorithms::state_equations::{Layout, Tangential};
+use crate::algorithms::state_layout::{Layout, Tangential};
 use crate::factor_cache::{DenseLu, StateFactor, StateKey};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;

@@ -7,6 +7,7 @@
 //! ```
 
 pub mod adaptive;
+mod body_kinematics;
 pub mod fretting;
 #[cfg(feature = "native")]
 pub mod fretting_outputs;

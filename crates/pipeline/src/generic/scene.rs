@@ -50,32 +50,13 @@ use contact2d_contact::{
     LoadDescription, Pairing, ProblemDescription, SolverSettings, StageActivity,
     builder::{DEFAULT_PATTERN, pattern_order},
 };
-use contact2d_element::{Formulation, PlaneCondition, locking_warning_in};
+use contact2d_element::{Formulation, locking_warning_in};
 use contact2d_fem::Component;
 use contact2d_mesh::Mesh;
 
-use super::kinematics_key::KinematicsKey;
+use super::kinematics_key::{KinematicsKey, PlaneKey};
 use crate::schema::limits::{MAX_FRICTION, STIFFNESS_RATIO_RANGE};
 use crate::schema::{SceneError, SolverEntry, parse_scene_toml};
-
-/// The plane condition as spelled in scene files.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum PlaneKey {
-    /// Plane stress.
-    Stress,
-    /// Plane strain.
-    Strain,
-}
-
-impl PlaneKey {
-    pub(super) fn condition(self) -> PlaneCondition {
-        match self {
-            PlaneKey::Stress => PlaneCondition::Stress,
-            PlaneKey::Strain => PlaneCondition::Strain,
-        }
-    }
-}
 
 /// One `[[body]]`.
 #[derive(Debug, Clone, PartialEq, Deserialize)]

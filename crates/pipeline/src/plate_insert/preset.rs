@@ -21,9 +21,9 @@ use contact2d_element::{Formulation, PlaneCondition};
 use contact2d_mesh::{Contour, Mesh};
 
 use super::{PairDiscretisation, PairingVariant, PlateInsert, PlateInsertProblem};
+use crate::generic::kinematics_key::PlaneKey;
 use crate::generic::scene::{
-    BodyEntry, ContactEntry, FixEntry, FormulationKey, GapKey, GenericScene, LoadingSection, PairingKey, PlaneKey,
-    SlidingKey,
+    BodyEntry, ContactEntry, FixEntry, FormulationKey, GapKey, GenericScene, LoadingSection, PairingKey, SlidingKey,
 };
 use crate::schema::SolverEntry;
 
