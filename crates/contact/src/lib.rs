@@ -25,6 +25,7 @@ pub mod algorithm;
 pub mod algorithms;
 pub mod builder;
 pub mod certify;
+pub mod description;
 pub mod error;
 mod factor_cache;
 pub mod finite_sliding;

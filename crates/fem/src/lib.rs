@@ -19,6 +19,7 @@ mod constrained;
 pub mod dof;
 pub mod error;
 pub mod model;
+mod model_dofs;
 pub mod ordering;
 mod pattern;
 pub mod reassembly;

@@ -11,6 +11,7 @@
 pub mod atomic;
 #[cfg(feature = "native")]
 pub mod chart;
+pub mod drawable;
 mod error;
 #[cfg(feature = "native")]
 pub mod field_plot;
