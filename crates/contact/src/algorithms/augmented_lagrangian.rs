@@ -1,5 +1,7 @@
 //! Contact with Coulomb friction by the augmented Lagrangian of Alart & Curnier, solved by a
-//! semi-smooth Newton method on the full (not condensed) system, as GetFEM and Kratos do.
+//! semi-smooth Newton method: on the full (not condensed) system as GetFEM and Kratos do (the
+//! sparse path), or with `u` eliminated exactly by the condensed interface (`Condensed` below,
+//! crate::algorithms::pair_space): the same iterates to round-off.
 //!
 //! ```text
 //! unknowns x = (u_f, λ, τ)                          (n + 2m; forces on the master node)
@@ -8,7 +10,7 @@
 //! F_T = τ − proj_[−μσ⁺, μσ⁺](θ), θ = τ − c Δs          (Δs = ŝ + B_T u − s_start; F_T = τ without
 //!                                                     a tangential unknown or μ = 0)
 //! state of pair k:  σ ≤ 0: free;  |θ| ≤ μσ: stick;  θ > 0: slip− (τ = +μσ);  θ < 0: slip+
-//! generalized Jacobian rows (the Newton system of the state, one sparse LU):
+//! generalized Jacobian rows (the Newton system of the state; full system: one sparse LU):
 //!   free   λ_k = 0                           τ_k = 0
 //!   active c b_k·u = −c ĝ_k                   stick: c t_k·u = c (s_start,k − ŝ_k)
 //!                                            slip±: τ_k ∓ μ(λ_k − c b_k·u) = ∓ μ c ĝ_k
@@ -30,9 +32,13 @@
 //! iteration limit (issue 41 item 5: 100 iterations whose last iterate passes the KKT checks).
 //! The converged state is what the solution reports.
 //!
-//! The matrix has the sparsity of `K` plus the pair rows: it costs a sparse factorisation per
-//! iteration instead of the condensed interface's dense `m × m` work, so it wins for long
-//! interfaces (docs/benchmarks.md, "Augmented Lagrangian against the condensed active set").
+//! On the full system the matrix has the sparsity of `K` plus the pair rows: it costs a sparse
+//! factorisation per iteration instead of the condensed interface's dense `m × m` work, so it
+//! wins for long interfaces (docs/benchmarks.md, "Augmented Lagrangian against the condensed
+//! active set"), and the sparse path (`solver.linear = "sparse"`, or `"auto"` from 2,000 pairs)
+//! takes it. On the condensed interface every iterate is `u = K⁻¹(a w r + B_Nᵀλ + B_Tᵀτ)`, so
+//! `F_u = (a − 1) w r` and the Newton system is the loaded forces' rows of the compliances (a
+//! dense LU; docs/benchmarks.md, "Penalty and augmented Lagrangian condensed").
 //!
 //! # References
 //! Alart & Curnier (1991), Comput. Methods Appl. Mech. Engrg. 92: a mixed formulation for

@@ -1,5 +1,6 @@
 //! Contact by the penalty method: a normal penalty and a regularised (elastic-slip) Coulomb law,
-//! on the full displacement system.
+//! each state's equations condensed onto the pairs' rows (the condensed interface) or on the full
+//! displacement system (the sparse path).
 //!
 //! ```text
 //! ε_N = κ_N k_c,  ε_T = κ_T k_c            (κ: the user's relative penalties; k_c: the contact
@@ -8,9 +9,14 @@
 //! θ_k = τ_start,k − ε_T Δs_k               (elastic predictor, Δs_k = ŝ_k + t_k·u − s_start,k)
 //! τ_k = θ_k if |θ_k| ≤ μλ_k (stick), else μλ_k sign θ_k (slip; sign θ > 0: slip−, < 0: slip+)
 //! K u = w r + B_Nᵀ λ(u) + B_Tᵀ τ(u)         (piecewise linear in u)
-//! state equations (one sparse LU per iteration):
+//! state equations, full system (the sparse path, `solver.linear = "sparse"`; one sparse LU per
+//! iteration):
 //!   (K + Σ_active ε_N b bᵀ + Σ_stick ε_T t tᵀ + Σ_slip sign·μ ε_N t bᵀ) u
 //!     = w r − Σ_active ε_N b ĝ + Σ_stick t (τ_start − ε_T (ŝ − s_start)) − Σ_slip sign·μ ε_N t ĝ
+//! the same equations condensed (the condensed interface; a dense LU of the loaded forces per
+//! iteration, `Condensed` below and crate::algorithms::pair_space):
+//!   u = K⁻¹(w r + Bᵀ f),  (C f)_N,k + λ_k/ε_N = −(ĝ_k + w y0_N,k),
+//!   (C f)_T,k + τ_k/ε_T = −(ŝ_k − s_start,k − τ_start,k/ε_T + w y0_T,k) (stick),  τ_k = sign·μλ_k (slip)
 //! ```
 //!
 //! The states are iterated to a fixed point: solve the equations of the current state, take the
@@ -23,9 +29,10 @@
 //! checked at the certificate's 1e-4 ([`crate::certify::RESIDUAL_TOLERANCE`]). It is round-off
 //! times `κ`: the LU solves the penalised system to its backward error, `ε_N` times the
 //! round-off of the gap, and `λ = −ε_N gap` multiplies the gap's round-off by `ε_N`. Measured on
-//! the two-block problem: the force error is `2.6/κ` down to 6e-8 at κ = 1e8, then grows as
-//! round-off, 1.4e-5 at 1e10 and 1.1e-3 at 1e12, where this check reports
-//! [`ContactStatus::Numerical`].
+//! the two-block problem (full system): the force error is `2.6/κ` down to 6e-8 at κ = 1e8, then
+//! grows as round-off, 1.4e-5 at 1e10 and 1.1e-3 at 1e12, where this check reports
+//! [`ContactStatus::Numerical`]. Condensed, the residual is `Bᵀ(f − λ(u))`: the solved forces `f`
+//! against the law's at the recovered rows, the same `ε_N` times a gap's round-off.
 //!
 //! Its error is the method's: a pair in contact penetrates by `λ/ε_N`, and a stuck pair slips
 //! elastically by `|τ − τ_start|/ε_T`. The status says so: [`ContactStatus::Penalised`] when the
@@ -34,7 +41,11 @@
 //! enough that the penetration is below the certificate's 1e-4 of the displacement scale).
 //! Its cost is conditioning: `ε_N` adds stiffness `κ_N` times that of the contact DOFs, and the
 //! condition number of the penalised matrix grows linearly with `κ_N` once it dominates
-//! (docs/algorithms.md, "Penalty").
+//! (docs/algorithms.md, "Penalty"); the condensed equations, in the forces, add `1/ε` to the
+//! diagonal of the compliances instead and keep the active set's conditioning. Both paths take
+//! the same iterates (to round-off), so the same iteration counts; the condensed one costs the
+//! active set's dense work of the interface's size per iteration instead of a sparse LU of the
+//! whole system (docs/benchmarks.md, "Penalty and augmented Lagrangian condensed").
 //!
 //! # References
 //! Wriggers (2006), Computational Contact Mechanics, 2nd ed., §6.3 (penalty method) and §5.2
