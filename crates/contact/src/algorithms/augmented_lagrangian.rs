@@ -101,7 +101,7 @@ pub fn solve_augmented_lagrangian(
 
 /// [`solve_augmented_lagrangian`] with each Newton system condensed onto the pairs' rows of
 /// `interface` (the problem's condensed interface at its current load;
-/// [`crate::algorithms::pair_space`]): the same iterates to round-off, a dense LU of the
+/// `algorithms/pair_space.rs`): the same iterates to round-off, a dense LU of the
 /// loaded rows per iteration instead of a sparse LU of the whole system.
 pub fn solve_augmented_lagrangian_condensed(
     problem: &ContactProblem,
@@ -186,7 +186,7 @@ impl NewtonSolver for FullSystem<'_> {
     }
 }
 
-/// The condensed system ([`crate::algorithms::pair_space`]): `x = (a, λ, τ)`,
+/// The condensed system (`algorithms/pair_space.rs`): `x = (a, λ, τ)`,
 /// `u = K⁻¹(a w r + B_Nᵀ λ + B_Tᵀ τ)` (the full system's iterates have this form: its Newton
 /// point solves `K û = w r + Bᵀ(λ̂, τ̂)`, and the convex combinations keep it), so
 /// `F_u = (a − 1) w r` and the Newton system is the pairs' rows of the state:

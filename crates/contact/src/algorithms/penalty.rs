@@ -121,7 +121,7 @@ pub fn solve_penalty(
 
 /// [`solve_penalty`] with each iteration's equations condensed onto the pairs' rows of
 /// `interface` (the problem's condensed interface at its current load;
-/// [`crate::algorithms::pair_space`]): the same iterates to round-off, a dense LU of the loaded
+/// `algorithms/pair_space.rs`): the same iterates to round-off, a dense LU of the loaded
 /// rows per iteration instead of a sparse LU of the whole system.
 pub fn solve_penalty_condensed(
     problem: &ContactProblem,
@@ -203,7 +203,7 @@ impl StateSolver for FullSystem<'_> {
     }
 }
 
-/// The condensed system ([`crate::algorithms::pair_space`]): `x = (a, g)`,
+/// The condensed system (`algorithms/pair_space.rs`): `x = (a, g)`,
 /// `u = K⁻¹(a w r + Bᵀ g)`, each state's equations solved for the forces it loads (the law
 /// `f = −ε (row + offset)` of each loaded row, with `y = w y0 + C f`; the compliance form keeps
 /// the active set's conditioning, `1/ε` on the diagonal, instead of multiplying `C` by `ε`):
