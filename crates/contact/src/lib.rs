@@ -51,9 +51,9 @@ pub mod solve;
 pub mod stages;
 mod stiffness_factor;
 
-pub use algorithms::augmented_lagrangian::solve_augmented_lagrangian;
+pub use algorithms::augmented_lagrangian::{solve_augmented_lagrangian, solve_augmented_lagrangian_condensed};
 pub use algorithms::full_system::contact_stiffness;
-pub use algorithms::penalty::{PenaltyParameters, solve_penalty};
+pub use algorithms::penalty::{PenaltyParameters, solve_penalty, solve_penalty_condensed};
 pub use algorithms::stick_continuation::StickContinuation;
 pub use algorithms::{boussinesq, clarabel_qp, clarabel_tresca, frictional_active_set, frictionless_active_set};
 pub use boussinesq::{

@@ -22,11 +22,11 @@
 //! [`ContactError::BodyNotHeld`] naming the body and its free rigid motions where no closed pair
 //! touches it at all (a support is missing from the model: nothing can be solved).
 
-use crate::algorithms::augmented_lagrangian::solve_augmented_lagrangian;
+use crate::algorithms::augmented_lagrangian::{solve_augmented_lagrangian, solve_augmented_lagrangian_condensed};
 use crate::algorithms::boussinesq::{BoussinesqLoading, solve_boussinesq_step};
 use crate::algorithms::clarabel_tresca::solve_frictional_qp_on;
 use crate::algorithms::frictional_active_set::solve_frictional_active_set_from;
-use crate::algorithms::penalty::{PenaltyParameters, solve_penalty};
+use crate::algorithms::penalty::{PenaltyParameters, solve_penalty, solve_penalty_condensed};
 use crate::algorithms::stick_continuation::{StartingStates, StickContinuation, applies};
 use crate::error::ContactError;
 use crate::floating::{FloatingStep, NotHeld, RigidModes, solve_floating_step as solve_floating_step_with};
@@ -526,7 +526,14 @@ fn solve_step(
             solve_boussinesq_step(problem, interface, context.order, BoussinesqLoading::Load(1.0), context.start, max)
                 .solution
         }
+        // The sparse path's interface holds no compliances: each iteration on the full system.
+        ContactAlgorithm::Penalty if interface.is_condensed() => {
+            solve_penalty_condensed(problem, interface, 1.0, context.start, context.guess, settings.penalty, max)
+        }
         ContactAlgorithm::Penalty => solve_penalty(problem, 1.0, context.start, context.guess, settings.penalty, max),
+        ContactAlgorithm::AugmentedLagrangian if interface.is_condensed() => {
+            solve_augmented_lagrangian_condensed(problem, interface, 1.0, context.start, context.guess, max)
+        }
         ContactAlgorithm::AugmentedLagrangian => {
             solve_augmented_lagrangian(problem, 1.0, context.start, context.guess, max)
         }

@@ -1,5 +1,7 @@
 //! Contact with Coulomb friction by the augmented Lagrangian of Alart & Curnier, solved by a
-//! semi-smooth Newton method on the full (not condensed) system, as GetFEM and Kratos do.
+//! semi-smooth Newton method: on the full (not condensed) system as GetFEM and Kratos do (the
+//! sparse path), or with `u` eliminated exactly by the condensed interface (`Condensed` below,
+//! crate::algorithms::pair_space): the same iterates to round-off.
 //!
 //! ```text
 //! unknowns x = (u_f, λ, τ)                          (n + 2m; forces on the master node)
@@ -8,7 +10,7 @@
 //! F_T = τ − proj_[−μσ⁺, μσ⁺](θ), θ = τ − c Δs          (Δs = ŝ + B_T u − s_start; F_T = τ without
 //!                                                     a tangential unknown or μ = 0)
 //! state of pair k:  σ ≤ 0: free;  |θ| ≤ μσ: stick;  θ > 0: slip− (τ = +μσ);  θ < 0: slip+
-//! generalized Jacobian rows (the Newton system of the state, one sparse LU):
+//! generalized Jacobian rows (the Newton system of the state; full system: one sparse LU):
 //!   free   λ_k = 0                           τ_k = 0
 //!   active c b_k·u = −c ĝ_k                   stick: c t_k·u = c (s_start,k − ŝ_k)
 //!                                            slip±: τ_k ∓ μ(λ_k − c b_k·u) = ∓ μ c ĝ_k
@@ -30,9 +32,13 @@
 //! iteration limit (issue 41 item 5: 100 iterations whose last iterate passes the KKT checks).
 //! The converged state is what the solution reports.
 //!
-//! The matrix has the sparsity of `K` plus the pair rows: it costs a sparse factorisation per
-//! iteration instead of the condensed interface's dense `m × m` work, so it wins for long
-//! interfaces (docs/benchmarks.md, "Augmented Lagrangian against the condensed active set").
+//! On the full system the matrix has the sparsity of `K` plus the pair rows: it costs a sparse
+//! factorisation per iteration instead of the condensed interface's dense `m × m` work, so it
+//! wins for long interfaces (docs/benchmarks.md, "Augmented Lagrangian against the condensed
+//! active set"), and the sparse path (`solver.linear = "sparse"`, or `"auto"` from 2,000 pairs)
+//! takes it. On the condensed interface every iterate is `u = K⁻¹(a w r + B_Nᵀλ + B_Tᵀτ)`, so
+//! `F_u = (a − 1) w r` and the Newton system is the loaded forces' rows of the compliances (a
+//! dense LU; docs/benchmarks.md, "Penalty and augmented Lagrangian condensed").
 //!
 //! # References
 //! Alart & Curnier (1991), Comput. Methods Appl. Mech. Engrg. 92: a mixed formulation for
@@ -42,9 +48,13 @@
 
 use std::time::Instant;
 
+use nalgebra::DMatrix;
+
 use crate::algorithms::full_system::{
     FixedPatternLu, backtrack, contact_stiffness, dot_free, row_offsets, stiffness_entries, stiffness_times,
 };
+use crate::algorithms::pair_space::{PairSpace, dense_solve};
+use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_displacement};
 use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
@@ -68,7 +78,7 @@ fn settled(alpha: f64, state_repeats: bool, residual: f64) -> bool {
 /// Solves one step to load factor `w` from the history `start`, starting from the state guess
 /// `guess` (e.g. the previous step's states; `None`: the pairs that the load alone closes, from
 /// one solve with the problem's Cholesky factor, in contact and sticking, the others free), with
-/// at most `max_iterations` Newton iterations.
+/// at most `max_iterations` Newton iterations, each on the full system (one sparse LU).
 pub fn solve_augmented_lagrangian(
     problem: &ContactProblem,
     w: f64,
@@ -78,43 +88,223 @@ pub fn solve_augmented_lagrangian(
 ) -> ContactSolution {
     let clock = Instant::now();
     let equations = Equations::new(problem, w, start);
-    let (n, m) = (equations.n, problem.num_pairs());
+    let (n, m) = (problem.system.dofs.num_free(), problem.num_pairs());
+    let (pattern, stiffness) = full_pattern(&equations);
+    let Some(lu) = FixedPatternLu::new(n + 2 * m, &pattern) else {
+        let x = vec![0.0; n + 2 * m];
+        let solution = finish(problem, w, start, &x[..n], &x[n..], ContactStatus::Numerical, 0, clock);
+        return solution;
+    };
+    let mut system = FullSystem { equations: &equations, lu, stiffness };
+    iterate(&equations, &mut system, guess, max_iterations, clock)
+}
+
+/// [`solve_augmented_lagrangian`] with each Newton system condensed onto the pairs' rows of
+/// `interface` (the problem's condensed interface at its current load;
+/// `algorithms/pair_space.rs`): the same iterates to round-off, a dense LU of the
+/// loaded rows per iteration instead of a sparse LU of the whole system.
+pub fn solve_augmented_lagrangian_condensed(
+    problem: &ContactProblem,
+    interface: &Interface,
+    w: f64,
+    start: &StepStart,
+    guess: Option<&[PairState]>,
+    max_iterations: usize,
+) -> ContactSolution {
+    let clock = Instant::now();
+    let equations = Equations::new(problem, w, start);
+    let mut system = Condensed { equations: &equations, space: PairSpace::new(problem, interface) };
+    iterate(&equations, &mut system, guess, max_iterations, clock)
+}
+
+/// A way to solve the Newton systems: an iterate `x = (head, λ, τ)` (the head fixes `u`), its
+/// pair rows `y = (B_N u, B_T u)` (free parts, `2m`), its equilibrium residual and displacement.
+trait NewtonSolver {
+    /// The length of the head of `x` (before `λ`).
+    fn head(&self) -> usize;
+    /// The pair rows of `u = K⁻¹ w r` (the load without contact forces).
+    fn load_rows(&self) -> Vec<f64>;
+    /// The Newton point `x̂` of `state` (`None`: singular).
+    fn target(&mut self, state: &[PairState]) -> Option<Vec<f64>>;
+    /// The pair rows `y` of `x`.
+    fn rows(&self, x: &[f64]) -> Vec<f64>;
+    /// `‖F_u(x)‖²`, `F_u = K u − w r − B_Nᵀ λ − B_Tᵀ τ`.
+    fn equilibrium_squared(&self, x: &[f64]) -> f64;
+    /// The free displacements of `x`.
+    fn displacement(&self, x: &[f64]) -> Vec<f64>;
+}
+
+/// The full system: `x = (u, λ, τ)`, each Newton system one numeric sparse LU.
+struct FullSystem<'a> {
+    equations: &'a Equations<'a>,
+    lu: FixedPatternLu,
+    stiffness: Vec<f64>,
+}
+
+impl NewtonSolver for FullSystem<'_> {
+    fn head(&self) -> usize {
+        self.equations.n
+    }
+
+    fn load_rows(&self) -> Vec<f64> {
+        let p = self.equations.problem;
+        let rhs: Vec<f64> = p.pattern_rhs.iter().map(|r| self.equations.w * r).collect();
+        self.rows(&p.stiffness_factor().solve_or_nan(&rhs))
+    }
+
+    fn target(&mut self, state: &[PairState]) -> Option<Vec<f64>> {
+        let (values, rhs) = self.equations.newton_system(&self.stiffness, state);
+        self.lu.factor(&values).then(|| self.lu.solve(&rhs)).flatten()
+    }
+
+    fn rows(&self, x: &[f64]) -> Vec<f64> {
+        let p = self.equations.problem;
+        let u = &x[..self.equations.n];
+        p.normal_rows.iter().chain(&p.tangent_rows).map(|r| dot_free(r, u)).collect()
+    }
+
+    fn equilibrium_squared(&self, x: &[f64]) -> f64 {
+        let (e, n) = (self.equations, self.equations.n);
+        let (p, m) = (e.problem, e.problem.num_pairs());
+        let mut f = stiffness_times(p, &x[..n]);
+        f.iter_mut().zip(&p.pattern_rhs).for_each(|(v, r)| *v -= e.w * r);
+        for k in 0..m {
+            for &(i, v) in &p.normal_rows[k].free {
+                f[i] -= v * x[n + k];
+            }
+            if e.frictional[k] {
+                for &(i, v) in &p.tangent_rows[k].free {
+                    f[i] -= v * x[n + m + k];
+                }
+            }
+        }
+        f.iter().map(|v| v * v).sum()
+    }
+
+    fn displacement(&self, x: &[f64]) -> Vec<f64> {
+        x[..self.equations.n].to_vec()
+    }
+}
+
+/// The condensed system (`algorithms/pair_space.rs`): `x = (a, λ, τ)`,
+/// `u = K⁻¹(a w r + B_Nᵀ λ + B_Tᵀ τ)` (the full system's iterates have this form: its Newton
+/// point solves `K û = w r + Bᵀ(λ̂, τ̂)`, and the convex combinations keep it), so
+/// `F_u = (a − 1) w r` and the Newton system is the pairs' rows of the state:
+///
+/// ```text
+/// in contact:  c (C (λ, τ))_N,k = −c (ĝ_k + w y0_N,k)                  (gap = 0)
+/// stick:       c (C (λ, τ))_T,k =  c (s_start,k − ŝ_k − w y0_T,k)       (Δs = 0)
+/// slip±:       τ_k ∓ μ λ_k = 0                                          (with gap = 0)
+/// free:        λ_k = τ_k = 0;  no friction: τ_k = 0
+/// ```
+///
+/// a dense LU of the unknown forces (`a = 1` at the Newton point).
+struct Condensed<'a> {
+    equations: &'a Equations<'a>,
+    space: PairSpace<'a>,
+}
+
+impl NewtonSolver for Condensed<'_> {
+    fn head(&self) -> usize {
+        1
+    }
+
+    fn load_rows(&self) -> Vec<f64> {
+        self.space.rows(self.equations.w, &[])
+    }
+
+    fn target(&mut self, state: &[PairState]) -> Option<Vec<f64>> {
+        let e = self.equations;
+        let (m, c) = (e.problem.num_pairs(), e.c);
+        // The unknown forces: normal of each pair in contact, tangential of each frictional one.
+        let mut unknowns: Vec<usize> = vec![];
+        for (k, s) in state.iter().enumerate() {
+            if *s != PairState::Free {
+                unknowns.push(k);
+                if e.frictional[k] {
+                    unknowns.push(m + k);
+                }
+            }
+        }
+        unknowns.sort_unstable();
+        let size = unknowns.len();
+        let column = |s: usize| unknowns.binary_search(&s).ok();
+        let load = self.space.rows(e.w, &[]);
+        let mut matrix = DMatrix::<f64>::zeros(size, size);
+        let mut rhs = vec![0.0; size];
+        for (a, &i) in unknowns.iter().enumerate() {
+            let k = i % m;
+            let slip = slip_sign(state[k]);
+            if i >= m && slip != 0.0 {
+                matrix[(a, a)] = 1.0;
+                matrix[(a, column(k)?)] = -slip * e.problem.friction[k];
+                continue;
+            }
+            for (b, &j) in unknowns.iter().enumerate() {
+                matrix[(a, b)] = c * self.space.compliance(i, j);
+            }
+            rhs[a] = if i < m {
+                -c * (e.gap_offset[k] + load[i])
+            } else {
+                c * (e.start.slip[k] - e.slip_offset[k] - load[i])
+            };
+        }
+        let forces = dense_solve(matrix, rhs)?;
+        let mut target = vec![0.0; 1 + 2 * m];
+        target[0] = 1.0;
+        unknowns.iter().zip(forces).for_each(|(&s, f)| target[1 + s] = f);
+        Some(target)
+    }
+
+    fn rows(&self, x: &[f64]) -> Vec<f64> {
+        self.space.rows(x[0] * self.equations.w, &x[1..])
+    }
+
+    fn equilibrium_squared(&self, x: &[f64]) -> f64 {
+        let scale = (x[0] - 1.0) * self.equations.w;
+        self.equations.problem.pattern_rhs.iter().map(|r| (scale * r) * (scale * r)).sum()
+    }
+
+    fn displacement(&self, x: &[f64]) -> Vec<f64> {
+        self.space.displacement(x[0] * self.equations.w, &x[1..])
+    }
+}
+
+/// The semi-smooth Newton iteration of the module docs with the Newton systems of `solver`.
+fn iterate(
+    equations: &Equations,
+    solver: &mut impl NewtonSolver,
+    guess: Option<&[PairState]>,
+    max_iterations: usize,
+    clock: Instant,
+) -> ContactSolution {
+    let (problem, w, start) = (equations.problem, equations.w, equations.start);
+    let (head, m) = (solver.head(), problem.num_pairs());
     let mut state: Vec<PairState> = match guess {
         Some(g) if g.len() == m => g.to_vec(),
         _ => {
-            let rhs: Vec<f64> = problem.pattern_rhs.iter().map(|r| w * r).collect();
-            let u0 = problem.stiffness_factor().solve_or_nan(&rhs);
+            let y = solver.load_rows();
             (0..m)
-                .map(|k| {
-                    if equations.gap_offset[k] + dot_free(&problem.normal_rows[k], &u0) < 0.0 {
-                        PairState::Stick
-                    } else {
-                        PairState::Free
-                    }
-                })
+                .map(|k| if equations.gap_offset[k] + y[k] < 0.0 { PairState::Stick } else { PairState::Free })
                 .collect()
         }
     };
-    let mut x = vec![0.0; n + 2 * m];
+    let mut x = vec![0.0; head + 2 * m];
     let mut status = ContactStatus::MaxIterations;
     let mut iterations = 0;
     let mut trace = Vec::new();
-    let Some(mut lu) = FixedPatternLu::new(n + 2 * m, &equations.pattern) else {
-        return finish(problem, w, start, &x, ContactStatus::Numerical, 0, clock, trace);
-    };
-    let mut merit = equations.merit(&x);
+    let mut merit = equations.merit(solver, &x);
     for it in 1..=max_iterations {
         iterations = it;
-        let (values, rhs) = equations.newton_system(&state);
-        let Some(target) = lu.factor(&values).then(|| lu.solve(&rhs)).flatten() else {
+        let Some(target) = solver.target(&state) else {
             status = ContactStatus::Numerical;
             break;
         };
-        let full_merit = equations.merit(&target);
-        let (alpha, next_x, next_merit) = backtrack(&x, target, merit, full_merit, |t| equations.merit(t));
+        let full_merit = equations.merit(solver, &target);
+        let (alpha, next_x, next_merit) = backtrack(&x, target, merit, full_merit, |t| equations.merit(solver, t));
         (x, merit) = (next_x, next_merit);
-        let next = equations.state_of(&x);
-        let residual = (2.0 * merit).sqrt() / equations.force_scale(&x);
+        let next = equations.state_of(&solver.rows(&x), &x[head..]);
+        let residual = (2.0 * merit).sqrt() / equations.force_scale(&x[head..]);
         trace.push(IterationRecord {
             iteration: it,
             changed: next.iter().zip(&state).filter(|(a, b)| a != b).count(),
@@ -128,35 +318,69 @@ pub fn solve_augmented_lagrangian(
         }
         state = next;
     }
-    finish(problem, w, start, &x, status, iterations, clock, trace)
+    let mut solution = finish(problem, w, start, &solver.displacement(&x), &x[head..], status, iterations, clock);
+    solution.trace = trace;
+    solution
 }
 
+/// The solution of the free displacements `u` and the forces `(λ, τ)` (`2m`).
 #[allow(clippy::too_many_arguments)]
 fn finish(
     problem: &ContactProblem,
     w: f64,
     start: &StepStart,
-    x: &[f64],
+    u: &[f64],
+    forces: &[f64],
     status: ContactStatus,
     iterations: usize,
     clock: Instant,
-    trace: Vec<IterationRecord>,
 ) -> ContactSolution {
-    let (n, m) = (problem.system.dofs.num_free(), problem.num_pairs());
+    let m = problem.num_pairs();
     let raw = RawSolution {
         load_factor: w,
-        normal_force: x[n..n + m].to_vec(),
-        tangential_force: x[n + m..].to_vec(),
+        normal_force: forces[..m].to_vec(),
+        tangential_force: forces[m..].to_vec(),
         status,
         iterations,
         time: clock.elapsed(),
     };
-    let mut solution = finish_from_displacement(problem, &x[..n], raw, start);
-    solution.trace = trace;
-    solution
+    finish_from_displacement(problem, u, raw, start)
 }
 
-/// The Alart–Curnier equations of one step and the fixed pattern of their Jacobian.
+/// The fixed pattern of the full system's Jacobian and the `K_ff` values at its start: `K_ff`
+/// entries (both triangles) first, then the pair blocks; see `newton_system`.
+fn full_pattern(equations: &Equations) -> (Vec<(usize, usize)>, Vec<f64>) {
+    let (problem, n) = (equations.problem, equations.n);
+    let m = problem.num_pairs();
+    let entries = stiffness_entries(problem);
+    let mut pattern: Vec<(usize, usize)> = entries.iter().map(|&(i, j, _)| (i, j)).collect();
+    for (k, &with_friction) in equations.frictional.iter().enumerate() {
+        let (normal, tangent) = (&problem.normal_rows[k], &problem.tangent_rows[k]);
+        let (rn, rt) = (n + k, n + m + k);
+        pattern.extend(normal.free.iter().map(|&(i, _)| (i, rn)));
+        pattern.extend(normal.free.iter().map(|&(i, _)| (rn, i)));
+        pattern.push((rn, rn));
+        if with_friction {
+            pattern.extend(tangent.free.iter().map(|&(i, _)| (i, rt)));
+            pattern.extend(tangent.free.iter().map(|&(i, _)| (rt, i)));
+            pattern.extend(normal.free.iter().map(|&(i, _)| (rt, i)));
+            pattern.push((rt, rn));
+        }
+        pattern.push((rt, rt));
+    }
+    (pattern, entries.into_iter().map(|(_, _, v)| v).collect())
+}
+
+/// `τ = sign · μσ` of a slip state: slip− +1, slip+ −1, otherwise 0.
+fn slip_sign(state: PairState) -> f64 {
+    match state {
+        PairState::SlipNegative => 1.0,
+        PairState::SlipPositive => -1.0,
+        _ => 0.0,
+    }
+}
+
+/// The Alart–Curnier equations of one step.
 struct Equations<'a> {
     problem: &'a ContactProblem,
     n: usize,
@@ -167,9 +391,6 @@ struct Equations<'a> {
     slip_offset: Vec<f64>,
     /// Whether pair k has a tangential unknown with friction.
     frictional: Vec<bool>,
-    /// `K_ff` entries (both triangles) first, then the pair blocks; see `newton_system`.
-    pattern: Vec<(usize, usize)>,
-    stiffness: Vec<f64>,
 }
 
 impl<'a> Equations<'a> {
@@ -177,42 +398,15 @@ impl<'a> Equations<'a> {
         let (n, m) = (problem.system.dofs.num_free(), problem.num_pairs());
         let (gap_offset, slip_offset) = row_offsets(problem, w);
         let frictional: Vec<bool> = (0..m).map(|k| problem.tangential[k] && problem.friction[k] > 0.0).collect();
-        let entries = stiffness_entries(problem);
-        let mut pattern: Vec<(usize, usize)> = entries.iter().map(|&(i, j, _)| (i, j)).collect();
-        for (k, &with_friction) in frictional.iter().enumerate() {
-            let (normal, tangent) = (&problem.normal_rows[k], &problem.tangent_rows[k]);
-            let (rn, rt) = (n + k, n + m + k);
-            pattern.extend(normal.free.iter().map(|&(i, _)| (i, rn)));
-            pattern.extend(normal.free.iter().map(|&(i, _)| (rn, i)));
-            pattern.push((rn, rn));
-            if with_friction {
-                pattern.extend(tangent.free.iter().map(|&(i, _)| (i, rt)));
-                pattern.extend(tangent.free.iter().map(|&(i, _)| (rt, i)));
-                pattern.extend(normal.free.iter().map(|&(i, _)| (rt, i)));
-                pattern.push((rt, rn));
-            }
-            pattern.push((rt, rt));
-        }
-        Equations {
-            problem,
-            n,
-            w,
-            start,
-            c: contact_stiffness(problem),
-            gap_offset,
-            slip_offset,
-            frictional,
-            pattern,
-            stiffness: entries.into_iter().map(|(_, _, v)| v).collect(),
-        }
+        Equations { problem, n, w, start, c: contact_stiffness(problem), gap_offset, slip_offset, frictional }
     }
 
-    /// The values (in pattern order) and right-hand side of the Newton system of `state`.
-    fn newton_system(&self, state: &[PairState]) -> (Vec<f64>, Vec<f64>) {
+    /// The values (in the pattern order of [`full_pattern`], starting from the `K_ff` values
+    /// `stiffness`) and right-hand side of the full system's Newton system of `state`.
+    fn newton_system(&self, stiffness: &[f64], state: &[PairState]) -> (Vec<f64>, Vec<f64>) {
         let (p, n, c) = (self.problem, self.n, self.c);
         let m = p.num_pairs();
-        let mut values = self.stiffness.clone();
-        values.reserve(self.pattern.len() - values.len());
+        let mut values = stiffness.to_vec();
         let mut rhs = vec![0.0; n + 2 * m];
         rhs[..n].iter_mut().zip(&p.pattern_rhs).for_each(|(b, r)| *b = self.w * r);
         for k in 0..m {
@@ -225,11 +419,7 @@ impl<'a> Equations<'a> {
                 rhs[n + k] = -c * self.gap_offset[k];
             }
             // slip−: τ = +μσ (sign +1); slip+: τ = −μσ (sign −1).
-            let slip_sign = match state[k] {
-                PairState::SlipNegative => 1.0,
-                PairState::SlipPositive => -1.0,
-                _ => 0.0,
-            };
+            let slip_sign = slip_sign(state[k]);
             let stick = state[k] == PairState::Stick;
             if self.frictional[k] {
                 let mu = p.friction[k];
@@ -250,59 +440,50 @@ impl<'a> Equations<'a> {
         (values, rhs)
     }
 
-    /// `(σ, θ)` of pair k at `x` (θ = 0 without friction).
-    fn multipliers(&self, x: &[f64], k: usize) -> (f64, f64) {
-        let (p, n, m) = (self.problem, self.n, self.problem.num_pairs());
-        let u = &x[..n];
-        let gap = self.gap_offset[k] + dot_free(&p.normal_rows[k], u);
-        let sigma = x[n + k] - self.c * gap;
+    /// `(σ, θ)` of pair k at the pair rows `y` and forces `forces = (λ, τ)` (θ = 0 without
+    /// friction).
+    fn multipliers(&self, y: &[f64], forces: &[f64], k: usize) -> (f64, f64) {
+        let m = self.problem.num_pairs();
+        let gap = self.gap_offset[k] + y[k];
+        let sigma = forces[k] - self.c * gap;
         if !self.frictional[k] {
             return (sigma, 0.0);
         }
-        let ds = self.slip_offset[k] + dot_free(&p.tangent_rows[k], u) - self.start.slip[k];
-        (sigma, x[n + m + k] - self.c * ds)
+        let ds = self.slip_offset[k] + y[m + k] - self.start.slip[k];
+        (sigma, forces[m + k] - self.c * ds)
     }
 
-    /// The state each pair's complementarity functions select at `x`.
-    fn state_of(&self, x: &[f64]) -> Vec<PairState> {
+    /// The state each pair's complementarity functions select at the pair rows `y` and forces
+    /// `forces`.
+    fn state_of(&self, y: &[f64], forces: &[f64]) -> Vec<PairState> {
         (0..self.problem.num_pairs())
             .map(|k| {
-                let (sigma, theta) = self.multipliers(x, k);
+                let (sigma, theta) = self.multipliers(y, forces, k);
                 PairState::from_trial(sigma, theta, self.problem.friction[k], self.frictional[k])
             })
             .collect()
     }
 
     /// `Φ(x) = ½ ‖F(x)‖²` of the module docs.
-    fn merit(&self, x: &[f64]) -> f64 {
-        let (p, n, m) = (self.problem, self.n, self.problem.num_pairs());
-        let mut f = stiffness_times(p, &x[..n]);
-        f.iter_mut().zip(&p.pattern_rhs).for_each(|(v, r)| *v -= self.w * r);
+    fn merit(&self, solver: &impl NewtonSolver, x: &[f64]) -> f64 {
+        let (p, m) = (self.problem, self.problem.num_pairs());
+        let (y, forces) = (solver.rows(x), &x[solver.head()..]);
+        let mut sum = solver.equilibrium_squared(x);
         for k in 0..m {
-            for &(i, v) in &p.normal_rows[k].free {
-                f[i] -= v * x[n + k];
-            }
-            if self.frictional[k] {
-                for &(i, v) in &p.tangent_rows[k].free {
-                    f[i] -= v * x[n + m + k];
-                }
-            }
-        }
-        let mut sum: f64 = f.iter().map(|v| v * v).sum();
-        for k in 0..m {
-            let (sigma, theta) = self.multipliers(x, k);
-            let normal = x[n + k] - sigma.max(0.0);
+            let (sigma, theta) = self.multipliers(&y, forces, k);
+            let normal = forces[k] - sigma.max(0.0);
             let bound = p.friction[k] * sigma.max(0.0);
-            let tangential = if self.frictional[k] { x[n + m + k] - theta.clamp(-bound, bound) } else { x[n + m + k] };
+            let tangential =
+                if self.frictional[k] { forces[m + k] - theta.clamp(-bound, bound) } else { forces[m + k] };
             sum += normal * normal + tangential * tangential;
         }
         0.5 * sum
     }
 
-    /// The largest load or contact force at `x` (the residual's scale in the trace).
-    fn force_scale(&self, x: &[f64]) -> f64 {
+    /// The largest load or contact force (`forces = (λ, τ)`; the residual's scale in the trace).
+    fn force_scale(&self, forces: &[f64]) -> f64 {
         let load = self.problem.pattern_rhs.iter().fold(0.0f64, |a, r| a.max((self.w * r).abs()));
-        x[self.n..].iter().fold(load, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE)
+        forces.iter().fold(load, |a, v| a.max(v.abs())).max(f64::MIN_POSITIVE)
     }
 }
 

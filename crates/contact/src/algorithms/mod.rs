@@ -8,9 +8,10 @@
 //! boussinesq                the paper's paired-node algorithm: zones assumed, (5.1) checked
 //! clarabel_qp               the frictionless QP in the contact forces (dual, condensed; Clarabel)
 //! clarabel_tresca           Tresca QPs to the Coulomb fixed point (Clarabel)
-//! penalty                   normal penalty and regularised Coulomb law on the full system
-//! augmented_lagrangian      Alart–Curnier semi-smooth Newton on the full system (sparse LU)
+//! penalty                   normal penalty and regularised Coulomb law (condensed or full system)
+//! augmented_lagrangian      Alart–Curnier semi-smooth Newton (condensed, or full system: sparse LU)
 //! full_system               contact stiffness scale and fixed-pattern sparse LU (shared)
+//! pair_space                penalty / augmented Lagrangian iterations condensed onto the pair rows
 //! state_equations           the linear system of a given zone configuration (shared)
 //! state_layout              which unknowns a zone configuration leaves open (shared)
 //! state_update              a state's system as a low-rank update of the last factored one
@@ -28,6 +29,7 @@ pub(crate) mod coarse_start;
 pub mod frictional_active_set;
 pub mod frictionless_active_set;
 pub mod full_system;
+pub(crate) mod pair_space;
 pub mod penalty;
 pub(crate) mod semi_smooth;
 pub(crate) mod sparse_active_set;
