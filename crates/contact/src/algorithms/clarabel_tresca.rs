@@ -25,7 +25,7 @@
 
 use web_time::Instant;
 
-use crate::algorithms::clarabel_qp::{DualProblem, polish};
+use crate::algorithms::clarabel_qp::{DualAnswer, DualProblem, polish};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
@@ -62,7 +62,8 @@ pub fn solve_frictional_qp_on(
 /// λ⁰ = the exact solution of the guessed states (polishing), in place of the frictionless λ:
 ///      the first thresholds are g = μ λ⁰ on the pairs it closes
 /// if λ⁰ passes the certificate, it is the candidate: the first Tresca QP checks it
-///      (max|λ¹ − λ⁰| ≤ 1e-5 max λ¹: λ⁰ is a fixed point of the Tresca map and ends the step)
+///      (max|λ¹ − λ⁰| ≤ 1e-5 max λ¹ and the states of λ¹ are the guess's: a fixed point of
+///      the Tresca map, it ends the step)
 /// otherwise the fixed point goes on from λ¹ as from any iterate
 /// ```
 ///
@@ -140,7 +141,12 @@ pub fn solve_frictional_qp_from(
         // state than the fixed point's (pin_lug step 4: 3e-5 off in the normal force); this
         // check costs one QP where waiting for the iterates to settle cost several.
         if let Some(mut accepted) = candidate.take() {
-            if change <= 1e-5 * scale {
+            // A guess's candidate must also be the states of this QP's answer, as a candidate of
+            // the iteration is the states of an answer: a guess can sit on another Coulomb state
+            // within the certificate's tolerance (a degenerate pair on the cone, cattaneo_mindlin
+            // step 4: dissipation −7e-8 where the iteration finds 0).
+            let reproduced = !warm_candidate || states_of(problem, interface, w, start, &answer) == accepted.state;
+            if change <= 1e-5 * scale && reproduced {
                 if warm_candidate {
                     // The one Tresca QP that checked the guess.
                     accepted.iterations = it;
@@ -221,6 +227,25 @@ pub fn solve_frictional_qp_from(
         solution.status = ContactStatus::Numerical;
     }
     solution
+}
+
+/// The pair states (free, stick, slip±; crate::report) of a Tresca QP's answer.
+fn states_of(
+    problem: &ContactProblem,
+    interface: &Interface,
+    w: f64,
+    start: &StepStart,
+    answer: &DualAnswer,
+) -> Vec<PairState> {
+    let raw = RawSolution {
+        load_factor: w,
+        normal_force: answer.lambda.clone(),
+        tangential_force: answer.tau.clone(),
+        status: ContactStatus::Converged,
+        iterations: 0,
+        time: std::time::Duration::ZERO,
+    };
+    finish_from_forces(problem, interface, raw, start).state
 }
 
 /// Largest Coulomb residual (dimensionless) a converged fixed point may leave. On a degenerate
