@@ -9,6 +9,7 @@ mod common;
 mod against_getfem;
 mod bad_inputs;
 mod clarabel_agrees;
+mod clarabel_warm_start;
 mod cli;
 mod closed_interfaces;
 mod compare_reference;

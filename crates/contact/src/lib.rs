@@ -66,7 +66,7 @@ pub use builder::{
 };
 pub use certify::{Check, EnergyAllowance, FailedCheck, certify, check_energy_balance, energy_scale, status_reason};
 pub use clarabel_qp::{solve_frictionless_qp, solve_frictionless_qp_on};
-pub use clarabel_tresca::{solve_frictional_qp, solve_frictional_qp_on};
+pub use clarabel_tresca::{solve_frictional_qp, solve_frictional_qp_from, solve_frictional_qp_on};
 pub use error::ContactError;
 pub use finite_sliding::solve_finite_sliding;
 pub use floating::NotHeld;

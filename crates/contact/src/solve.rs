@@ -24,7 +24,7 @@
 
 use crate::algorithms::augmented_lagrangian::{solve_augmented_lagrangian, solve_augmented_lagrangian_condensed};
 use crate::algorithms::boussinesq::{BoussinesqLoading, solve_boussinesq_step};
-use crate::algorithms::clarabel_tresca::solve_frictional_qp_on;
+use crate::algorithms::clarabel_tresca::solve_frictional_qp_from;
 use crate::algorithms::frictional_active_set::solve_frictional_active_set_from;
 use crate::algorithms::penalty::{PenaltyParameters, solve_penalty, solve_penalty_condensed};
 use crate::algorithms::stick_continuation::{StartingStates, StickContinuation, applies};
@@ -519,7 +519,9 @@ fn solve_step(
             let (start, guess) = (context.start, context.guess);
             solve_frictional_active_set_from(problem, interface, 1.0, start, guess, starting, max, continuation)
         }
-        ContactAlgorithm::Clarabel => solve_frictional_qp_on(problem, interface, 1.0, context.start, max),
+        ContactAlgorithm::Clarabel => {
+            solve_frictional_qp_from(problem, interface, 1.0, context.start, context.guess, max)
+        }
         ContactAlgorithm::Boussinesq => {
             // The contact-end search moves one pair per iteration.
             let max = max.max(2 * context.order.len());

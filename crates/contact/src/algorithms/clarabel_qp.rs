@@ -97,6 +97,11 @@ impl<'a> DualProblem<'a> {
         self.open_gap.iter().zip(&self.normal).map(|(d, has_normal)| *has_normal && *d <= 1e-6 * self.length).collect()
     }
 
+    /// Whether pair `k` has a normal unknown (may enter the working set).
+    pub(crate) fn is_normal(&self, k: usize) -> bool {
+        self.normal[k]
+    }
+
     /// `U`, the length scale of the variables.
     pub(crate) fn length(&self) -> f64 {
         self.length

@@ -25,11 +25,11 @@
 
 use web_time::Instant;
 
-use crate::algorithms::clarabel_qp::{DualProblem, polish};
+use crate::algorithms::clarabel_qp::{DualAnswer, DualProblem, polish};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_forces};
-use crate::solution::{ContactSolution, ContactStatus, IterationRecord, StepStart};
+use crate::solution::{ContactSolution, ContactStatus, IterationRecord, PairState, StepStart};
 
 /// Solves one frictional step to load factor `w` from `start` by the Tresca fixed point (the
 /// interface is built from the problem's factorisation; [`solve_frictional_qp_on`] reuses one).
@@ -52,6 +52,35 @@ pub fn solve_frictional_qp_on(
     start: &StepStart,
     max_fixed_point: usize,
 ) -> ContactSolution {
+    solve_frictional_qp_from(problem, interface, w, start, None, max_fixed_point)
+}
+
+/// [`solve_frictional_qp_on`] with the fixed point warm-started from the pair states `guess`
+/// (those of the step before, or of the previous inner solve of a body held only by contact):
+///
+/// ```text
+/// λ⁰ = the exact solution of the guessed states (polishing), in place of the frictionless λ:
+///      the first thresholds are g = μ λ⁰ on the pairs it closes
+/// if λ⁰ passes the certificate, it is the candidate: the first Tresca QP checks it
+///      (max|λ¹ − λ⁰| ≤ 1e-5 max λ¹ and the states of λ¹ are the guess's: a fixed point of
+///      the Tresca map, it ends the step)
+/// otherwise the fixed point goes on from λ¹ as from any iterate
+/// ```
+///
+/// The fixed point converges from any thresholds g ≥ 0 (where it converges at all), and the
+/// answer is accepted by the same tests as without a guess (a certified polish that the Tresca
+/// QP of its own thresholds reproduces, or λ settled), so a guess changes the work, not the
+/// conditions the answer meets; the states are still those of a Clarabel solve. A guess of
+/// another length than the pairs, with every pair free, or whose equations are singular, is
+/// ignored: the fixed point then starts from the frictionless λ.
+pub fn solve_frictional_qp_from(
+    problem: &ContactProblem,
+    interface: &Interface,
+    w: f64,
+    start: &StepStart,
+    guess: Option<&[PairState]>,
+    max_fixed_point: usize,
+) -> ContactSolution {
     // The sparse path's interface holds no compliances: condense here (this algorithm works on them).
     let condensed = interface.condensed(problem);
     let interface = &*condensed;
@@ -59,15 +88,37 @@ pub fn solve_frictional_qp_on(
     let m = problem.num_pairs();
     let dual = DualProblem::new(problem, interface, w, start);
     let mut working = dual.initial_working_set();
-    let frictionless = dual.solve(&vec![0.0; m], &mut working);
-    let mut lambda = frictionless.lambda;
-    let mut in_contact = contact_set(&dual, &lambda, &frictionless.tau);
-    let (mut tau, mut status) = (vec![0.0; m], frictionless.status);
+    let warm = guess
+        .filter(|states| states.len() == m && states.iter().any(|s| *s != PairState::Free))
+        .and_then(|states| polish(problem, interface, w, start, states, 0))
+        .filter(|polished| polished.normal_force.iter().chain(&polished.tangential_force).all(|f| f.is_finite()));
+    // A polished, certified answer waiting for its consistency check (see below).
+    let mut candidate: Option<ContactSolution> = None;
+    let (mut lambda, mut in_contact, mut tau, mut status);
+    if let Some(polished) = warm {
+        // The guess's contact pairs join the working set (a pair of the set with λ = 0 costs
+        // one unknown, never the answer).
+        for (k, in_set) in working.iter_mut().enumerate() {
+            *in_set |= dual.is_normal(k) && polished.normal_force[k] > 0.0;
+        }
+        lambda = polished.normal_force.clone();
+        in_contact = contact_set(&dual, &lambda, &polished.tangential_force);
+        (tau, status) = (vec![0.0; m], ContactStatus::Converged);
+        if polished.status == ContactStatus::Converged {
+            candidate = Some(polished);
+        }
+    } else {
+        let frictionless = dual.solve(&vec![0.0; m], &mut working);
+        lambda = frictionless.lambda;
+        in_contact = contact_set(&dual, &lambda, &frictionless.tau);
+        (tau, status) = (vec![0.0; m], frictionless.status);
+    }
+    // The warm candidate's check failing is no sign of cycling (it is not an iterate): the
+    // iterates after it may still take the shortcut.
+    let mut warm_candidate = candidate.is_some();
     let mut iterations = 0;
     let mut trace = Vec::new();
     let (mut best_change, mut stalled) = (f64::INFINITY, 0);
-    // A polished, certified answer waiting for its consistency check (see below).
-    let mut candidate: Option<ContactSolution> = None;
     // Whether a certified polish may jump the thresholds to its λ; after one candidate fails
     // its check the iterates go on plainly until λ settles (no cycling between two states).
     let mut shortcut = true;
@@ -90,12 +141,22 @@ pub fn solve_frictional_qp_on(
         // state than the fixed point's (pin_lug step 4: 3e-5 off in the normal force); this
         // check costs one QP where waiting for the iterates to settle cost several.
         if let Some(mut accepted) = candidate.take() {
-            if change <= 1e-5 * scale {
+            // A guess's candidate must also be the states of this QP's answer, as a candidate of
+            // the iteration is the states of an answer: a guess can sit on another Coulomb state
+            // within the certificate's tolerance (a degenerate pair on the cone, cattaneo_mindlin
+            // step 4: dissipation −7e-8 where the iteration finds 0).
+            let reproduced = !warm_candidate || states_of(problem, interface, w, start, &answer) == accepted.state;
+            if change <= 1e-5 * scale && reproduced {
+                if warm_candidate {
+                    // The one Tresca QP that checked the guess.
+                    accepted.iterations = it;
+                }
                 accepted.trace = trace;
                 accepted.time = clock.elapsed();
                 return accepted;
             }
-            shortcut = false;
+            shortcut = warm_candidate;
+            warm_candidate = false;
         }
         (lambda, tau) = (answer.lambda, answer.tau);
         let next = contact_set(&dual, &lambda, &tau);
@@ -166,6 +227,25 @@ pub fn solve_frictional_qp_on(
         solution.status = ContactStatus::Numerical;
     }
     solution
+}
+
+/// The pair states (free, stick, slip±; crate::report) of a Tresca QP's answer.
+fn states_of(
+    problem: &ContactProblem,
+    interface: &Interface,
+    w: f64,
+    start: &StepStart,
+    answer: &DualAnswer,
+) -> Vec<PairState> {
+    let raw = RawSolution {
+        load_factor: w,
+        normal_force: answer.lambda.clone(),
+        tangential_force: answer.tau.clone(),
+        status: ContactStatus::Converged,
+        iterations: 0,
+        time: std::time::Duration::ZERO,
+    };
+    finish_from_forces(problem, interface, raw, start).state
 }
 
 /// Largest Coulomb residual (dimensionless) a converged fixed point may leave. On a degenerate
