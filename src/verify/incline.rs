@@ -50,7 +50,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
         ..CaseReport::default()
     };
     let mut stick = vec![];
-    for step in &out.report.steps {
+    for step in out.report.steps.iter() {
         let push = step.factors.get("push").copied().unwrap_or(0.0);
         let contact = step.contacts.get("incline").ok_or_else(|| missing("no interface \"incline\""))?;
         let f = push * WEIGHT;

@@ -231,7 +231,7 @@ fn check_mesh(root: &Path, mesh: &str, report: &mut CaseReport) -> Result<(), Ve
         reference: exact.energy_per_cycle(),
         tolerance: Tolerance::Relative(0.02),
     });
-    let rows = &out.report.steps;
+    let rows = &out.report.steps.to_vec();
     let (Some(before), Some(last)) = (rows.get(peak), rows.get(cycle.end - 1)) else {
         return Err(missing("a step is missing"));
     };

@@ -252,7 +252,7 @@ fn solve(root: &Path, overrides: &[String]) -> Result<GenericOutcome, VerifyErro
 pub fn measure(out: &GenericOutcome) -> Result<Insertion, VerifyError> {
     let missing = |reason: String| VerifyError::Missing { case: "press_fit".into(), reason };
     let p = lateral_pressure();
-    let steps = &out.report.steps;
+    let steps = &out.report.steps.to_vec();
     if out.history.steps.len() != steps.len() || out.report.status != "converged" {
         return Err(missing(format!("status {}, {} steps solved", out.report.status, steps.len())));
     }

@@ -86,7 +86,7 @@ pub fn run(root: &Path, _level: Level) -> Result<CaseReport, VerifyError> {
 /// The worst deviations over the steady steps, and the energy gap after the first push.
 fn measure(report: &GenericReport) -> Result<(Worst, f64), VerifyError> {
     let missing = |reason: String| VerifyError::Missing { case: "sliding_patch".into(), reason };
-    let steps = &report.steps;
+    let steps = &report.steps.to_vec();
     if steps.len() <= FIRST_STEADY {
         return Err(missing(format!("{} steps solved, more than {FIRST_STEADY} expected", steps.len())));
     }

@@ -65,7 +65,7 @@ fn agree(name: &str, label: &str, active: &GenericReport, other: &GenericReport)
     for contact in active.contacts.keys() {
         let scale = active.steps.iter().map(|s| s.contacts[contact].normal_force.abs()).fold(0.0f64, f64::max);
         assert!(scale > 0.0, "{name}/{contact}: no normal force in any step");
-        for (i, (a, c)) in active.steps.iter().zip(&other.steps).enumerate() {
+        for (i, (a, c)) in active.steps.iter().zip(other.steps.iter()).enumerate() {
             let (a, c) = (a.contacts[contact].normal_force, c.contacts[contact].normal_force);
             assert!(
                 (a - c).abs() <= 1e-5 * scale,

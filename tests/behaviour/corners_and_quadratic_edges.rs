@@ -293,7 +293,7 @@ fn every_status_that_is_not_converged_names_its_check() {
     assert_eq!(r.status, "max_iterations");
     let why = r.failed_check.as_deref().unwrap();
     assert!(why.starts_with("step 1: iteration limit: 1 iterations"), "{why}");
-    assert!(r.steps[0].failed_check.is_some());
+    assert!(r.steps.to_vec()[0].failed_check.is_some());
 }
 
 #[test]

@@ -317,8 +317,8 @@ fn a_staged_un_holds_the_arc_where_the_step_before_left_it() {
         assert!(first > 0.0 && (second - first).abs() < 1e-12 * first, "node {}: {first:e} → {second:e}", n.0);
     }
     assert_eq!(out.report.steps.len(), 2);
-    assert!(out.report.steps[0].reactions["outer"].iter().all(Option::is_none));
-    assert!(out.report.steps[1].reactions["outer"].iter().all(Option::is_some));
+    assert!(out.report.steps.to_vec()[0].reactions["outer"].iter().all(Option::is_none));
+    assert!(out.report.steps.to_vec()[1].reactions["outer"].iter().all(Option::is_some));
 }
 
 #[test]

@@ -195,7 +195,7 @@ moment = 30.0
     assert!((about_a + m + (p[0] * f[1] - p[1] * f[0])).abs() < scale, "{about_a}");
     // The loaded point is held by nothing: no reaction; the step rows carry the points too.
     assert_eq!(outcome.report.points["shaft_ref"].reaction, [0.0, 0.0]);
-    assert_eq!(outcome.report.steps[0].points["anchor"], anchor);
+    assert_eq!(outcome.report.steps.to_vec()[0].points["anchor"], anchor);
 }
 
 #[test]
@@ -295,7 +295,7 @@ pattern = "turn"
         + base.reaction_moment.unwrap()
         + (arm[0] * base.reaction[1] - arm[1] * base.reaction[0]);
     assert!(moment.abs() < scale * 3.0, "moment balance off by {moment:e}");
-    assert_eq!(outcome.report.steps[0].factors["turn"], 1.0);
+    assert_eq!(outcome.report.steps.to_vec()[0].factors["turn"], 1.0);
 }
 
 #[test]

@@ -82,7 +82,7 @@ fn every_bundled_scene_balances_its_loads_at_every_step() {
         let json = serde_json::to_value(&out.report).unwrap();
         for (i, (step, solved)) in out.report.steps.iter().zip(&out.history.steps).enumerate() {
             let load = applied_load(&out, &solved.factors);
-            let rigid = rigid_resultants(step);
+            let rigid = rigid_resultants(&step);
             let s = &solved.solution;
             let contact: f64 = s.normal_force.iter().chain(&s.tangential_force).map(|f| f.abs()).sum();
             let scale = load[0].hypot(load[1]).max(contact);
@@ -223,7 +223,7 @@ fn a_curved_interface_balances_with_every_pairing() {
             };
             for (i, (step, solved)) in out.report.steps.iter().zip(&out.history.steps).enumerate() {
                 let load = applied_load(&out, &solved.factors);
-                let rigid = rigid_resultants(step);
+                let rigid = rigid_resultants(&step);
                 let scale = load[0].hypot(load[1]);
                 for c in 0..2 {
                     let residual = load[c] + step.reactions_total[c] + rigid[c];

@@ -46,7 +46,7 @@ fn solve(path: &str, overrides: &[String]) -> GenericOutcome {
 fn check_patch(path: &str, overrides: &[String]) {
     let out = solve(path, overrides);
     assert_eq!(out.report.status, "converged", "{path}");
-    let steps = &out.report.steps;
+    let steps = &out.report.steps.to_vec();
     assert_eq!(steps.len(), 32, "{path}");
     for (i, step) in steps.iter().enumerate().skip(FIRST_STEADY - 1) {
         let c = &step.contacts["slide"];

@@ -102,7 +102,7 @@ fn pull_out(algorithm: &str) {
     }
     let not_held = r.not_held.as_ref().unwrap();
     assert_eq!(not_held.step, 4);
-    let fit = &r.steps[3].contacts["fit"];
+    let fit = &r.steps.to_vec()[3].contacts["fit"];
     assert!((not_held.available - mu * fit.normal_force).abs() <= 1e-9 * not_held.available, "{algorithm}");
     let ratio = pulls[3] / (mu * fit.normal_force);
     assert!(

@@ -55,7 +55,8 @@ fn the_plug_slides_over_at_least_ten_cells_and_every_paired_node_in_the_slot_sli
     assert!(run.length[last] - run.length[run.first] >= 10.0 * 0.25, "{:?}", run.length);
     // Gross sliding: once inside, every pair in contact slips forward (Coulomb's |τ| = μ p with
     // the slip's sign), which the closed form assumes.
-    let profile = out.report.steps[last].contacts["bore"].profile.as_ref().unwrap();
+    let row = out.report.steps.get(last).unwrap();
+    let profile = row.contacts["bore"].profile.as_ref().unwrap();
     for ((p, tau), state) in profile.pressure.iter().zip(&profile.shear).zip(&profile.state) {
         if *p > 0.0 {
             assert_eq!(*state, "slip+");

@@ -103,7 +103,7 @@ fn insertion(sets: &[String]) {
         if lengths[i] - l_s >= A {
             growth = growth.max(((forces[i] - f_s) / (slope * (lengths[i] - l_s)) - 1.0).abs());
         }
-        let bore = &out.report.steps[i].contacts["bore"];
+        let bore = &out.report.steps.to_vec()[i].contacts["bore"];
         let wall = bore.rigid_resultant.unwrap();
         equilibrium = equilibrium.max((forces[i] + wall[1]).abs() / forces[i].abs());
         let u = &out.history.steps[i].solution.displacement;

@@ -93,14 +93,14 @@ fn a_clamp_added_after_the_fit_leaves_lames_pressure_and_carries_no_force() {
             clamp_force[d.0 % 2] += r[j].abs();
         }
     }
-    let fit_force = out.report.steps[1].contacts["fit"].normal_force;
+    let fit_force = out.report.steps.to_vec()[1].contacts["fit"].normal_force;
     assert!(
         clamp_force[0] < 1e-9 * fit_force && clamp_force[1] < 1e-9 * fit_force,
         "the clamp carries {clamp_force:?} against the fit's {fit_force}"
     );
     // Before it holds, the clamp reports no reaction (null), after it a number.
-    assert_eq!(out.report.steps[0].reactions["ring_outer"], [None, None]);
-    assert!(out.report.steps[1].reactions["ring_outer"].iter().all(Option::is_some));
+    assert_eq!(out.report.steps.to_vec()[0].reactions["ring_outer"], [None, None]);
+    assert!(out.report.steps.to_vec()[1].reactions["ring_outer"].iter().all(Option::is_some));
 }
 
 #[test]
@@ -131,7 +131,7 @@ fn a_support_released_after_step_one_gives_the_free_answer_of_a_second_solve() {
         assert!((pk / p - 1.0).abs() < 0.005, "step 2 pair {k}: {pk} against Lamé's {p}");
     }
     // Released, the group exerts no force of its own: null.
-    assert_eq!(staged.report.steps[1].reactions["ring_outer"], [None, None]);
+    assert_eq!(staged.report.steps.to_vec()[1].reactions["ring_outer"], [None, None]);
 }
 
 /// `scenes/generic/two_blocks_press_slide.toml` with the top driven sideways only from step 3
@@ -163,7 +163,7 @@ fn a_staged_fix_adds_its_values_to_the_position_reached() {
         let [r1, r2] = step.reactions_total;
         assert!(r1.abs() < 1e-9 * 1000.0 && (r2 + press).abs() < 1e-9 * 1000.0, "step {}: {r1}, {r2}", i + 1);
     }
-    assert_eq!(out.report.steps[1].reactions["upper_top"], [None, None]);
+    assert_eq!(out.report.steps.to_vec()[1].reactions["upper_top"], [None, None]);
 }
 
 /// The streaming run (each step handed on as solved, only the last kept) reports the same as

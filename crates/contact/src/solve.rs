@@ -279,9 +279,18 @@ pub fn solve_keeping(
     on_step: &mut dyn FnMut(usize, &SolvedStep),
 ) -> Result<History, ContactError> {
     let names: Vec<&str> = problem.patterns().iter().map(|p| p.name.as_str()).collect();
-    let factors: Vec<Vec<f64>> =
-        (0..schedule.steps().len()).map(|i| schedule.factors_for(i, &names)).collect::<Result<_, _>>()?;
-    let steady = LoadSchedule::new(names.iter().map(|n| n.to_string()).collect(), factors.clone())?;
+    // The steps' factors in the problem's pattern order: the schedule's own where it names the
+    // patterns in that order, else one copy (issue 44 item 7: each copy is a vector a step, kept
+    // for the whole run).
+    let reordered: LoadSchedule;
+    let steady = if schedule.patterns().iter().map(String::as_str).eq(names.iter().copied()) {
+        schedule
+    } else {
+        let factors: Vec<Vec<f64>> =
+            (0..schedule.steps().len()).map(|i| schedule.factors_for(i, &names)).collect::<Result<_, _>>()?;
+        reordered = LoadSchedule::new(names.iter().map(|n| n.to_string()).collect(), factors)?;
+        &reordered
+    };
     if settings.algorithm == ContactAlgorithm::Boussinesq && steady.proportional().is_none() {
         return Err(not_boussinesq(
             "it needs proportional loads that only grow (its contact zone grows from one point); use the active \
@@ -291,9 +300,13 @@ pub fn solve_keeping(
     }
     let mut loaded = problem.clone();
     let scaled = problem.is_gapless().then(|| steady.proportional()).flatten();
-    let targets: Vec<Vec<f64>> = match &scaled {
-        Some((direction, _)) => vec![direction.clone()],
-        None => factors.clone(),
+    let scaled_target: Vec<Vec<f64>>;
+    let targets: &[Vec<f64>] = match &scaled {
+        Some((direction, _)) => {
+            scaled_target = vec![direction.clone()];
+            &scaled_target
+        }
+        None => steady.steps(),
     };
     loaded.apply_load(&targets[0], None)?;
     let clock = web_time::Instant::now();
@@ -328,7 +341,7 @@ pub fn solve_keeping(
         unstable_pairing: None,
     };
     let history = march_keeping(
-        &targets,
+        targets,
         problem.num_pairs(),
         retention,
         |target, start, guess| {

@@ -152,8 +152,8 @@ pub fn step_frames(outcome: &GenericOutcome) -> Vec<StepFrame> {
                 .iter()
                 .map(|iface| {
                     // The step row's dissipation of the interface (the report accumulates it).
-                    let row = rows.get(k).and_then(|r| r.contacts.get(&iface.name));
-                    (iface.name.clone(), contact_result(built, iface, s, row.map_or(0.0, |c| c.dissipation), true))
+                    let dissipation = rows.get(k).and_then(|r| r.contacts.get(&iface.name).map(|c| c.dissipation));
+                    (iface.name.clone(), contact_result(built, iface, s, dissipation.unwrap_or(0.0), true))
                 })
                 .collect();
             StepFrame {
@@ -397,7 +397,7 @@ mod tests {
         let last = user.frames.last().unwrap();
         assert_eq!(last.displacement, user.mesh.displacement);
         assert_eq!(last.pairs, user.pairs);
-        for (frame, row) in user.frames.iter().zip(&user.summary.steps) {
+        for (frame, row) in user.frames.iter().zip(user.summary.steps.iter()) {
             let (f, r) = (&frame.contacts["joint"], &row.contacts["joint"]);
             assert_eq!((f.normal_force, f.tangential_force), (r.normal_force, r.tangential_force));
             assert!(f.profile.is_some());

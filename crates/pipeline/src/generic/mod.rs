@@ -23,8 +23,10 @@ pub mod readme;
 pub mod results;
 pub mod scene;
 mod schedule;
+pub mod schedule_rows;
 pub mod setup_notes;
 pub mod sliding;
+pub mod step_table;
 mod stepping;
 mod summary;
 pub mod zones;
@@ -42,6 +44,7 @@ pub use named_map::NamedMap;
 pub use points::{PointResult, ResolvedPoint};
 pub use results::{ContactResult, FixedGroup, Kkt, NotHeldResult, Profile, StepResult};
 pub use scene::GenericScene;
+pub use step_table::StepTable;
 use stepping::{Run, estimate_path_error, keep_user_steps, plan_path, solve_run};
 pub use summary::{SummaryInput, SummaryRows, summarise};
 
@@ -188,7 +191,7 @@ pub struct GenericReport {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub steps_taken: Option<usize>,
     /// Every step, without profiles.
-    pub steps: Vec<StepResult>,
+    pub steps: StepTable,
     /// The last step's interfaces, with profiles.
     pub contacts: BTreeMap<String, ContactResult>,
     /// The last step's reactions per fixed group (`null` in a component the group's own fixes
@@ -243,7 +246,7 @@ impl GenericReport {
             linear_used: self.linear_used,
             path_error: self.path_error,
             steps_taken: self.steps_taken,
-            steps: vec![],
+            steps: StepTable::new(),
             contacts: self.contacts.clone(),
             reactions: self.reactions.clone(),
             reactions_total: self.reactions_total,

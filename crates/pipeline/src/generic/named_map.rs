@@ -84,6 +84,16 @@ impl<V> NamedMap<V> {
         self.iter().map(|(k, v)| (k.to_string(), v.clone())).collect()
     }
 
+    /// The shared names in order (the step table stores them once).
+    pub(crate) fn shared_names(&self) -> impl ExactSizeIterator<Item = &Arc<str>> {
+        self.entries.iter().map(|(k, _)| k)
+    }
+
+    /// Entries already sorted by name, each name once (as [`NamedMap::shared_names`] gave them).
+    pub(crate) fn from_sorted(entries: Vec<(Arc<str>, V)>) -> Self {
+        NamedMap { entries: entries.into_boxed_slice() }
+    }
+
     fn position(&self, name: &str) -> Option<usize> {
         self.entries.binary_search_by(|(k, _)| (**k).cmp(name)).ok()
     }

@@ -19,7 +19,7 @@ use contact2d_contact::{BuiltProblem, ContactSolution};
 
 use serde::ser::{Serialize, SerializeMap, SerializeSeq, Serializer};
 
-use super::{GenericOutcome, GenericReport, StepResult};
+use super::{GenericOutcome, GenericReport, StepTable};
 use crate::output::chart::{Axes, Series, line_chart};
 use crate::output::step_view::{NodeValues, StepView, state_code};
 use crate::output::{
@@ -214,7 +214,7 @@ pub fn finish_outputs(
 ///
 /// # Errors
 /// [`OutputError`] naming the file.
-pub fn write_step_profiles(out: &mut OutputDir, steps: &[StepResult]) -> Result<(), OutputError> {
+pub fn write_step_profiles(out: &mut OutputDir, steps: &StepTable) -> Result<(), OutputError> {
     for (k, step) in steps.iter().enumerate() {
         for (iface, result) in step.contacts.iter().filter(|(_, r)| r.profile.is_some()) {
             out.write_bytes(
@@ -232,7 +232,7 @@ struct SortedSummary<'a> {
     /// The summary as a manifest object, `steps` empty.
     head: &'a serde_json::Map<String, serde_json::Value>,
     /// The step rows.
-    steps: &'a [StepResult],
+    steps: &'a StepTable,
 }
 
 impl Serialize for SortedSummary<'_> {
@@ -250,13 +250,13 @@ impl Serialize for SortedSummary<'_> {
 }
 
 /// Step rows printed as their JSON values, each made only while it is printed.
-struct RowValues<'a>(&'a [StepResult]);
+struct RowValues<'a>(&'a StepTable);
 
 impl Serialize for RowValues<'_> {
     fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         let mut seq = serializer.serialize_seq(Some(self.0.len()))?;
-        for row in self.0 {
-            seq.serialize_element(&serde_json::to_value(row).map_err(serde::ser::Error::custom)?)?;
+        for row in self.0.iter() {
+            seq.serialize_element(&serde_json::to_value(&row).map_err(serde::ser::Error::custom)?)?;
         }
         seq.end()
     }

@@ -67,9 +67,7 @@ pub(super) fn set_placed_ends(report: &mut GenericReport, i: usize, step: &Place
         .and_then(|f| case.problem().model.body(&f.master_region).map(|(_, b)| b.kinematics.pair_area_factor()))
         .unwrap_or(1.0);
     let last = i + 1 == report.steps.len();
-    let rows = report.steps.get_mut(i).and_then(|row| row.contacts.get_mut(&name)).into_iter();
-    let summary = if last { report.contacts.get_mut(&name) } else { None };
-    for result in rows.chain(summary) {
+    let place = |result: &mut super::results::ContactResult| {
         result.contact_length = (contact.s[1] - contact.s[0]).abs();
         result.mean_pressure = super::results::mean_pressure(result.normal_force, result.contact_length, thickness);
         result.zones = contact.clone();
@@ -77,6 +75,10 @@ pub(super) fn set_placed_ends(report: &mut GenericReport, i: usize, step: &Place
             result.stick_length = (stick.s[1] - stick.s[0]).abs();
             result.stick_zones = stick.clone();
         }
+    };
+    report.steps.modify(i, |row| row.contacts.get_mut(&name).into_iter().for_each(&place));
+    if last && let Some(result) = report.contacts.get_mut(&name) {
+        place(result);
     }
 }
 

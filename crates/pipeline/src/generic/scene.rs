@@ -40,7 +40,6 @@
 //! Every key, unit and default is in `docs/user-guide.md` ("Generic scenes"). Unknown keys are
 //! errors; errors name the file and the line (syntax, types) or the dotted key (values).
 
-use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
@@ -290,10 +289,10 @@ pub struct LoadingSection {
     /// Every pattern from 0 to 1 in this many equal steps.
     pub steps: Option<usize>,
     /// The factor of each named pattern at the end of each step (unnamed patterns: 0).
-    pub schedule: Option<Vec<BTreeMap<String, f64>>>,
+    pub schedule: Option<super::schedule_rows::ScheduleRows>,
     /// One load cycle: the factors of its steps, as in `schedule`, run after the `steps` or
     /// `schedule` (the preload) `cycles` times.
-    pub cycle: Option<Vec<BTreeMap<String, f64>>>,
+    pub cycle: Option<super::schedule_rows::ScheduleRows>,
     /// How many times `cycle` runs (1 ..= 10 000; default 1 with a `cycle`).
     pub cycles: Option<usize>,
     /// Whether a frictional run estimates the error its step size causes (`path_error`: the run

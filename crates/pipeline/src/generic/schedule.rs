@@ -5,12 +5,11 @@
 //! steps = preload ++ cycle ++ cycle ++ … (cycles times),   at most MAX_SCHEDULE_STEPS in all
 //! ```
 
-use std::collections::BTreeMap;
-
 use contact2d_contact::LoadSchedule;
 use contact2d_contact::loading::MAX_SCHEDULE_STEPS;
 
 use super::scene::GenericScene;
+use super::schedule_rows::ScheduleRows;
 use crate::schema::SceneError;
 
 impl GenericScene {
@@ -86,22 +85,19 @@ impl GenericScene {
 
     /// Each step's factors in the order of `names`, after checking that every step names
     /// patterns of the scene (`key`: where the steps are, for the error).
-    fn factor_rows(
-        &self,
-        key: &str,
-        rows: &[BTreeMap<String, f64>],
-        names: &[String],
-    ) -> Result<Vec<Vec<f64>>, SceneError> {
+    fn factor_rows(&self, key: &str, rows: &ScheduleRows, names: &[String]) -> Result<Vec<Vec<f64>>, SceneError> {
         // A pattern only zero-valued fixes name scales nothing: a step may name it.
         let inert = self.inert_patterns();
-        for (i, step) in rows.iter().enumerate() {
-            if let Some(unknown) = step.keys().find(|k| !names.contains(k) && !inert.contains(k)) {
+        for i in 0..rows.len() {
+            if let Some(unknown) =
+                rows.names_of(i).find(|k| !names.iter().any(|n| n == k) && !inert.iter().any(|n| n == k))
+            {
                 return Err(self.fail(
                     &format!("{key}[{i}]"),
                     format!("\"{unknown}\" is no load pattern of this scene (patterns: {})", names.join(", ")),
                 ));
             }
         }
-        Ok(rows.iter().map(|s| names.iter().map(|n| s.get(n).copied().unwrap_or(0.0)).collect()).collect())
+        Ok((0..rows.len()).map(|i| names.iter().map(|n| rows.get(i, n).unwrap_or(0.0)).collect()).collect())
     }
 }

@@ -73,14 +73,15 @@ pub(super) fn estimate_path_error(
     }
     if !frictional(scene) || report.scaled {
         report.path_error = Some(0.0);
-        report.steps.iter_mut().for_each(|s| s.path_error = Some(0.0));
+        (0..report.steps.len()).for_each(|i| report.steps.set_path_error(i, Some(0.0)));
         return;
     }
     let errors = match known {
         Some(errors) => errors,
         None => match halved_points(run, fixed) {
             Ok(fine) => {
-                let coarse: Vec<path_error::PathPoint> = report.steps.iter().map(path_error::PathPoint::of).collect();
+                let coarse: Vec<path_error::PathPoint> =
+                    report.steps.iter().map(|row| path_error::PathPoint::of(&row)).collect();
                 path_error::step_errors(&coarse, &fine)
             }
             Err(e) => {
@@ -89,8 +90,8 @@ pub(super) fn estimate_path_error(
             }
         },
     };
-    for (row, e) in report.steps.iter_mut().zip(&errors) {
-        row.path_error = Some(*e);
+    for (i, e) in errors.iter().enumerate() {
+        report.steps.set_path_error(i, Some(*e));
     }
     report.path_error = (errors.len() == report.steps.len()).then(|| errors.iter().copied().fold(0.0, f64::max));
     if let Some(e) = report.path_error.filter(|e| *e > path_error::NOTE_ABOVE) {
@@ -169,7 +170,7 @@ pub(super) fn keep_user_steps(path: &adaptive::Refined, note: Option<String>, re
     let last = rows.len().saturating_sub(1);
     let mut worst: f64 = 0.0;
     let mut any = false;
-    for (j, mut row) in rows.into_iter().enumerate() {
+    for (j, mut row) in rows.iter().enumerate() {
         if let Some(e) = row.path_error {
             worst = worst.max(e);
             any = true;

@@ -17,7 +17,7 @@ use super::{FloatingReport, GenericReport, GenericScene, GroupReport, Times, sce
 pub struct SummaryRows<'a> {
     results: results::StepResults<'a>,
     every_profile: bool,
-    rows: Vec<StepResult>,
+    rows: super::StepTable,
     first_non_finite: Option<String>,
     sliding: SlidingWatch,
     fretting: Option<FrettingWatch>,
@@ -32,7 +32,7 @@ impl<'a> SummaryRows<'a> {
         SummaryRows {
             results: results::StepResults::new(built, fixed),
             every_profile,
-            rows: vec![],
+            rows: super::StepTable::new(),
             first_non_finite: None,
             sliding: SlidingWatch::new(built),
             fretting: None,
@@ -155,7 +155,7 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
             }
         }
     }
-    let last = StepResult { contacts, ..last.clone() };
+    let last = StepResult { contacts, ..last };
     // A body held only by contact that crosses a gap under a force moves rigidly first: the work
     // of the force on that travel is stored nowhere in a quasi-static model (there is no kinetic
     // energy), so the energy balance is no check of the numbers there.
@@ -237,7 +237,7 @@ pub fn summarise(input: SummaryInput<'_>, rows: SummaryRows<'_>) -> Result<Gener
         scene: scene.name.clone(),
         status,
         failed_check,
-        not_held: summary_steps.iter().find_map(|s| s.not_held.as_deref().cloned()),
+        not_held: summary_steps.first_not_held(),
         algorithm: scene.solver.algorithm,
         kinematics: kinematics_used(&built.problem.model),
         dofs: built.problem.system.dofs.num_free(),
@@ -326,7 +326,7 @@ fn non_finite(value: &serde_json::Value, at: &str) -> Option<String> {
 /// energies stay below `round_off` is not checked (its work and strain energy are round-off).
 fn certified_status(
     scaled: bool,
-    steps: &[StepResult],
+    steps: &super::StepTable,
     balance: bool,
     round_off: f64,
 ) -> (&'static str, Option<String>) {
@@ -336,10 +336,10 @@ fn certified_status(
         return (step.status, Some(format!("step {}: {why}", i + 1)));
     }
     let stored = |step: &StepResult| step.energies.values().sum::<f64>();
-    let scale = energy_scale(steps.iter().map(|s| (s.work, stored(s), s.dissipated)));
+    let scale = energy_scale(steps.iter().map(|s| (s.work, stored(&s), s.dissipated)));
     for (i, step) in steps.iter().enumerate().filter(|_| balance && scale > round_off) {
         if let Err(f) =
-            check_energy_balance(step.work, stored(step), step.dissipated, scaled, scale, step.energy_allowance)
+            check_energy_balance(step.work, stored(&step), step.dissipated, scaled, scale, step.energy_allowance)
         {
             return ("numerical", Some(format!("step {}: {f}", i + 1)));
         }

@@ -81,7 +81,8 @@ impl PlateInsert {
             sliding: SlidingKey::Small,
             reference_groups: None,
         };
-        let schedule = loads.iter().map(|w| BTreeMap::from([(DEFAULT_PATTERN.to_string(), *w)])).collect();
+        let schedule: crate::generic::schedule_rows::ScheduleRows =
+            loads.iter().map(|w| BTreeMap::from([(DEFAULT_PATTERN.to_string(), *w)])).collect();
         GenericScene {
             name: name.into(),
             description: String::new(),
