@@ -88,15 +88,18 @@ pub fn method_line(report: &GenericReport) -> String {
         report.algorithm.key(),
         report.kinematics.replace('_', " "),
         pairings.join(", "),
-        linear_phrase(report)
+        linear_phrase(report.algorithm, report.linear_used)
     )
 }
 
 /// What the contact states' linear algebra was, in words (`linear_used` of the summary).
-fn linear_phrase(report: &GenericReport) -> &'static str {
-    match (report.algorithm, report.linear_used) {
+fn linear_phrase(algorithm: ContactAlgorithm, linear_used: &str) -> &'static str {
+    match (algorithm, linear_used) {
+        (ContactAlgorithm::Penalty | ContactAlgorithm::AugmentedLagrangian, "sparse") => {
+            "Newton on the full system (a sparse LU per iteration)"
+        }
         (ContactAlgorithm::Penalty | ContactAlgorithm::AugmentedLagrangian, _) => {
-            "Newton on the full system (sparse LU)"
+            "Newton condensed onto the pairs (the interface's dense compliances, a dense LU per iteration)"
         }
         (_, "sparse") => "linear path sparse (each state on the full system, no dense block)",
         _ => "linear path condensed (the interface's dense compliances)",
@@ -125,5 +128,15 @@ mod tests {
             assert!(!describe_generic(name).is_empty(), "{name}");
         }
         assert!(describe_generic("other.txt").is_empty());
+    }
+
+    #[test]
+    fn the_linear_phrase_names_the_path_each_algorithm_took() {
+        for algorithm in [ContactAlgorithm::Penalty, ContactAlgorithm::AugmentedLagrangian] {
+            assert!(linear_phrase(algorithm, "sparse").contains("full system"));
+            assert!(linear_phrase(algorithm, "condensed").contains("condensed"));
+        }
+        assert!(linear_phrase(ContactAlgorithm::ActiveSet, "sparse").contains("sparse"));
+        assert!(linear_phrase(ContactAlgorithm::ActiveSet, "condensed").contains("condensed"));
     }
 }
