@@ -99,15 +99,14 @@ fn peak_kb(n: usize, extra: &str) -> u64 {
 /// 1 MB of each other (the solutions, a few kB each, are not kept; only what the step table
 /// needs may stay per step), with the halved path of `path_error` on and off.
 ///
-/// Ignored until item 7 is done: the columnar step table (`StepTable`, ≈ 330 bytes a row here)
-/// and the compact schedule cut the growth of the anonymous memory from ≈ 4.3 MB to ≈ 1.0–1.2
-/// MB at 2,000 steps with path_error off (docs/benchmarks.md, "after the columnar step table"),
-/// at the bound; with path_error on the peak still grows by several MB and varies between
-/// identical runs, and `VmHWM`'s file-backed part (the binary's code, ≈ 9–10 MB) alone moves by
-/// ±0.4 MB between runs.
+/// Ignored until item 7 is done: the columnar step table (`StepTable`, ≈ 350 bytes a row here),
+/// the compact schedule and the halved run's points gathered flat cut the growth from ≈ 15 MB to
+/// 0.9–1.3 MB with path_error off and 1.4–1.7 MB with it on (docs/benchmarks.md, "the halved
+/// run's points gathered flat"); the table alone is ≈ 0.7 MB of it, so meeting the bound takes
+/// rows streamed out of memory as they are made.
 #[cfg(target_os = "linux")]
 #[test]
-#[ignore = "issue 44 item 7 partial: ≈ 1.2 MB of growth off, several MB with path_error on"]
+#[ignore = "issue 44 item 7 partial: 0.9–1.3 MB of growth off, 1.4–1.7 MB with path_error on"]
 fn peak_memory_is_flat_in_the_number_of_steps() {
     for extra in ["loading.path_error=false", "loading.path_error=true"] {
         let (short, long) = (peak_kb(100, extra), peak_kb(2000, extra));

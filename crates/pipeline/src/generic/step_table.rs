@@ -529,4 +529,4 @@ impl Serialize for StepTable {
 
 #[cfg(test)]
 #[path = "step_table_tests.rs"]
-mod tests;
+pub(super) mod tests;

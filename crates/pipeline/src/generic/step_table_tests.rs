@@ -48,7 +48,7 @@ fn contact(k: f64, rich: bool) -> ContactResult {
 
 /// A row of every kind of content: options present and absent, zones of 0, 2 and 4 ends,
 /// counts above 127 (two bytes), `-0.0`, subnormal and extreme numbers, rare parts.
-fn row(i: usize) -> StepResult {
+pub(in crate::generic) fn row(i: usize) -> StepResult {
     let x = i as f64 + 0.1;
     let rich = i % 3 == 1;
     let shared = |list: &[&str], f: &dyn Fn(usize) -> f64| {

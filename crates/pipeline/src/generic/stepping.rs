@@ -201,14 +201,14 @@ fn run_points(
     keep: &dyn Fn(usize) -> bool,
 ) -> Result<Vec<path_error::PathPoint>, ContactError> {
     let mut results = results::StepResults::new(run.built, fixed);
-    let (mut points, mut failed, mut stopped) = (vec![], None, false);
+    let (mut points, mut failed, mut stopped) = (path_error::PathPoints::default(), None, false);
     solve_run(run, Retention::Last, &mut |i, step, current| match results.push_on(current, step, false) {
         Ok(row) if row.status != "converged" => stopped = true,
-        Ok(row) if keep(i) && !stopped => points.push(path_error::PathPoint::of(&row)),
+        Ok(row) if keep(i) && !stopped => points.push(&row),
         Ok(_) => {}
         Err(e) => failed = failed.take().or(Some(e)),
     })?;
-    failed.map_or(Ok(points), Err)
+    failed.map_or(Ok(points.into_points()), Err)
 }
 
 /// The run on the halved path (every step split at its middle, [`adaptive::Refined::split`]),
