@@ -48,12 +48,10 @@
 
 use std::time::Instant;
 
-use nalgebra::DMatrix;
-
 use crate::algorithms::full_system::{
     FixedPatternLu, backtrack, contact_stiffness, dot_free, row_offsets, stiffness_entries, stiffness_times,
 };
-use crate::algorithms::pair_space::{PairSpace, dense_solve};
+use crate::algorithms::pair_space::{PairSpace, dense_solve, slip_sign};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
 use crate::report::{RawSolution, finish_from_displacement};
@@ -216,44 +214,22 @@ impl NewtonSolver for Condensed<'_> {
     fn target(&mut self, state: &[PairState]) -> Option<Vec<f64>> {
         let e = self.equations;
         let (m, c) = (e.problem.num_pairs(), e.c);
-        // The unknown forces: normal of each pair in contact, tangential of each frictional one.
-        let mut unknowns: Vec<usize> = vec![];
-        for (k, s) in state.iter().enumerate() {
-            if *s != PairState::Free {
-                unknowns.push(k);
-                if e.frictional[k] {
-                    unknowns.push(m + k);
-                }
-            }
-        }
-        unknowns.sort_unstable();
-        let size = unknowns.len();
-        let column = |s: usize| unknowns.binary_search(&s).ok();
+        let mut system = self.space.loaded_forces(state, &e.frictional, &e.problem.friction, c)?;
         let load = self.space.rows(e.w, &[]);
-        let mut matrix = DMatrix::<f64>::zeros(size, size);
-        let mut rhs = vec![0.0; size];
-        for (a, &i) in unknowns.iter().enumerate() {
-            let k = i % m;
-            let slip = slip_sign(state[k]);
-            if i >= m && slip != 0.0 {
-                matrix[(a, a)] = 1.0;
-                matrix[(a, column(k)?)] = -slip * e.problem.friction[k];
+        let mut rhs = vec![0.0; system.unknowns.len()];
+        for (a, &i) in system.unknowns.iter().enumerate() {
+            if system.is_slip_row(a, state) {
                 continue;
             }
-            for (b, &j) in unknowns.iter().enumerate() {
-                matrix[(a, b)] = c * self.space.compliance(i, j);
-            }
+            let k = i % m;
             rhs[a] = if i < m {
                 -c * (e.gap_offset[k] + load[i])
             } else {
                 c * (e.start.slip[k] - e.slip_offset[k] - load[i])
             };
         }
-        let forces = dense_solve(matrix, rhs)?;
-        let mut target = vec![0.0; 1 + 2 * m];
-        target[0] = 1.0;
-        unknowns.iter().zip(forces).for_each(|(&s, f)| target[1 + s] = f);
-        Some(target)
+        let forces = dense_solve(std::mem::take(&mut system.matrix), rhs)?;
+        Some(system.target(m, forces))
     }
 
     fn rows(&self, x: &[f64]) -> Vec<f64> {
@@ -369,15 +345,6 @@ fn full_pattern(equations: &Equations) -> (Vec<(usize, usize)>, Vec<f64>) {
         pattern.push((rt, rt));
     }
     (pattern, entries.into_iter().map(|(_, _, v)| v).collect())
-}
-
-/// `τ = sign · μσ` of a slip state: slip− +1, slip+ −1, otherwise 0.
-fn slip_sign(state: PairState) -> f64 {
-    match state {
-        PairState::SlipNegative => 1.0,
-        PairState::SlipPositive => -1.0,
-        _ => 0.0,
-    }
 }
 
 /// The Alart–Curnier equations of one step.

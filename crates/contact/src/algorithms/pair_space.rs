@@ -22,6 +22,7 @@ use nalgebra::DMatrix;
 use crate::algorithms::full_system::dot_free;
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
+use crate::solution::PairState;
 
 /// The pair rows of a problem on its condensed interface.
 pub(crate) struct PairSpace<'a> {
@@ -103,6 +104,85 @@ impl<'a> PairSpace<'a> {
         let m = self.m;
         let tau: &[f64] = if self.tangential { &g[m..] } else { &[] };
         self.interface.free_displacement(aw, &g[..m], tau)
+    }
+}
+
+/// `τ = sign · μλ` of a slip state: slip− (θ > 0) +1, slip+ −1, otherwise 0.
+pub(crate) fn slip_sign(state: PairState) -> f64 {
+    match state {
+        PairState::SlipNegative => 1.0,
+        PairState::SlipPositive => -1.0,
+        _ => 0.0,
+    }
+}
+
+/// A state's equations in its loaded forces, as the penalty and the augmented Lagrangian share
+/// them:
+///
+/// ```text
+/// U = {k : state_k ≠ free} ∪ {m + k : state_k ≠ free, pair k frictional}   (sorted)
+/// slip± row of τ_k:   τ_k − sign_k μ_k λ_k = 0
+/// every other row i:  scale · Σ_(j ∈ U) C_ij f_j   (+ the method's own diagonal and right side)
+/// ```
+pub(crate) struct LoadedForces {
+    /// `U`, sorted: `k` for the normal force of pair `k`, `m + k` for its tangential force.
+    pub(crate) unknowns: Vec<usize>,
+    /// The matrix above.
+    pub(crate) matrix: DMatrix<f64>,
+}
+
+impl LoadedForces {
+    /// Row `a` is a slip row (its equation is complete; no right-hand side).
+    pub(crate) fn is_slip_row(&self, a: usize, state: &[PairState]) -> bool {
+        let (i, m) = (self.unknowns[a], state.len());
+        i >= m && slip_sign(state[i % m]) != 0.0
+    }
+
+    /// The Newton target `(a = 1, g)` with `g` the solved forces on `U` and 0 elsewhere.
+    pub(crate) fn target(&self, m: usize, forces: Vec<f64>) -> Vec<f64> {
+        let mut target = vec![0.0; 1 + 2 * m];
+        target[0] = 1.0;
+        self.unknowns.iter().zip(forces).for_each(|(&s, f)| target[1 + s] = f);
+        target
+    }
+}
+
+impl PairSpace<'_> {
+    /// The [`LoadedForces`] of `state` (`frictional[k]`: pair `k` has a tangential force);
+    /// `None` if a slip row's pair has no normal unknown (not a state of a pair in contact).
+    pub(crate) fn loaded_forces(
+        &self,
+        state: &[PairState],
+        frictional: &[bool],
+        friction: &[f64],
+        scale: f64,
+    ) -> Option<LoadedForces> {
+        let m = state.len();
+        let mut unknowns: Vec<usize> = vec![];
+        for (k, s) in state.iter().enumerate() {
+            if *s != PairState::Free {
+                unknowns.push(k);
+                if frictional[k] {
+                    unknowns.push(m + k);
+                }
+            }
+        }
+        unknowns.sort_unstable();
+        let column = |s: usize| unknowns.binary_search(&s).ok();
+        let mut matrix = DMatrix::<f64>::zeros(unknowns.len(), unknowns.len());
+        for (a, &i) in unknowns.iter().enumerate() {
+            let k = i % m;
+            let sign = slip_sign(state[k]);
+            if i >= m && sign != 0.0 {
+                matrix[(a, a)] = 1.0;
+                matrix[(a, column(k)?)] = -sign * friction[k];
+                continue;
+            }
+            for (b, &j) in unknowns.iter().enumerate() {
+                matrix[(a, b)] = scale * self.compliance(i, j);
+            }
+        }
+        Some(LoadedForces { unknowns, matrix })
     }
 }
 

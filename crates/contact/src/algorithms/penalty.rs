@@ -53,12 +53,10 @@
 
 use std::time::Instant;
 
-use nalgebra::DMatrix;
-
 use crate::algorithms::full_system::{
     FixedPatternLu, backtrack, contact_stiffness, dot_free, row_offsets, stiffness_entries, stiffness_times,
 };
-use crate::algorithms::pair_space::{PairSpace, dense_solve};
+use crate::algorithms::pair_space::{PairSpace, dense_solve, slip_sign};
 use crate::certify::{RESIDUAL_TOLERANCE, certify};
 use crate::interface::Interface;
 use crate::problem::ContactProblem;
@@ -234,47 +232,25 @@ impl StateSolver for Condensed<'_> {
     fn target(&mut self, state: &[PairState]) -> Option<Vec<f64>> {
         let law = self.law;
         let (m, scale) = (law.problem.num_pairs(), law.contact_stiffness);
-        // The unknown forces: normal of each pair in contact, tangential of each frictional one.
-        let mut unknowns: Vec<usize> = vec![];
-        for (k, s) in state.iter().enumerate() {
-            if *s != PairState::Free {
-                unknowns.push(k);
-                if law.frictional[k] {
-                    unknowns.push(m + k);
-                }
-            }
-        }
-        unknowns.sort_unstable();
-        let column = |s: usize| unknowns.binary_search(&s).ok();
+        let mut system = self.space.loaded_forces(state, &law.frictional, &law.problem.friction, scale)?;
         let load = self.space.rows(law.w, &[]);
-        let size = unknowns.len();
-        let mut matrix = DMatrix::<f64>::zeros(size, size);
-        let mut rhs = vec![0.0; size];
-        for (a, &i) in unknowns.iter().enumerate() {
-            let k = i % m;
-            let sign = slip_sign(state[k]);
-            if i >= m && sign != 0.0 {
-                matrix[(a, a)] = 1.0;
-                matrix[(a, column(k)?)] = -sign * law.problem.friction[k];
+        let mut rhs = vec![0.0; system.unknowns.len()];
+        for (a, &i) in system.unknowns.iter().enumerate() {
+            if system.is_slip_row(a, state) {
                 continue;
             }
-            for (b, &j) in unknowns.iter().enumerate() {
-                matrix[(a, b)] = scale * self.space.compliance(i, j);
-            }
+            let k = i % m;
             let (penalty, offset) = if i < m {
                 (law.normal_penalty, law.gap_offset[k])
             } else {
                 let e_t = law.tangential_penalty;
                 (e_t, law.slip_offset[k] - law.start.slip[k] - law.start.tangential_force[k] / e_t)
             };
-            matrix[(a, a)] += scale / penalty;
+            system.matrix[(a, a)] += scale / penalty;
             rhs[a] = -scale * (offset + load[i]);
         }
-        let forces = dense_solve(matrix, rhs)?;
-        let mut target = vec![0.0; 1 + 2 * m];
-        target[0] = 1.0;
-        unknowns.iter().zip(forces).for_each(|(&s, f)| target[1 + s] = f);
-        Some(target)
+        let forces = dense_solve(std::mem::take(&mut system.matrix), rhs)?;
+        Some(system.target(m, forces))
     }
 
     fn rows(&self, x: &[f64]) -> Vec<f64> {
@@ -535,14 +511,5 @@ impl<'a> PenaltyLaw<'a> {
             .fold(0.0f64, f64::max)
             .max(f64::MIN_POSITIVE);
         residual.iter().fold(0.0f64, |a, v| a.max(v.abs())) / scale
-    }
-}
-
-/// `τ = sign · μλ` of a slip state: slip− (θ > 0) +1, slip+ −1, otherwise 0.
-fn slip_sign(state: PairState) -> f64 {
-    match state {
-        PairState::SlipNegative => 1.0,
-        PairState::SlipPositive => -1.0,
-        _ => 0.0,
     }
 }
