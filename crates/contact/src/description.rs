@@ -112,7 +112,7 @@ pub enum Pairing {
     SegmentToSegment,
     /// [`Pairing::NodeToSegment`] where the two curves' nodes face each other one to one (every
     /// node of each curve projects onto a node of the other: matching meshes), else
-    /// [`Pairing::SegmentToSegment`] ([`nodes_face_each_other`]).
+    /// [`Pairing::SegmentToSegment`] ([`crate::pairing::nodes_face_each_other`]).
     Automatic,
 }
 
@@ -160,7 +160,7 @@ pub struct ContactDescription {
     /// Coulomb's friction coefficient μ.
     pub friction: f64,
     /// Whether master and slave may bound the same body (a body touching itself); without it
-    /// such a pair is [`ContactError::SameBody`]. A master point behind a slave curve of its own
+    /// such a pair is [`crate::ContactError::SameBody`]. A master point behind a slave curve of its own
     /// body is then open (its gap is its distance to the curve), never an interference.
     pub self_contact: bool,
 }

@@ -179,3 +179,17 @@ pub struct IterationRecord {
     /// when the state repeats).
     pub residual: f64,
 }
+
+impl IterationRecord {
+    /// The record of iteration `iteration` of a state iteration: the pairs in contact and
+    /// slipping in `state`, how many pairs `next` changes, and the algorithm's `residual`.
+    pub fn of_states(iteration: usize, state: &[PairState], next: &[PairState], residual: f64) -> IterationRecord {
+        IterationRecord {
+            iteration,
+            changed: next.iter().zip(state).filter(|(a, b)| a != b).count(),
+            in_contact: state.iter().filter(|s| **s != PairState::Free).count(),
+            slipping: state.iter().filter(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative)).count(),
+            residual,
+        }
+    }
+}

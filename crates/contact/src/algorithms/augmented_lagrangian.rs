@@ -281,13 +281,7 @@ fn iterate(
         (x, merit) = (next_x, next_merit);
         let next = equations.state_of(&solver.rows(&x), &x[head..]);
         let residual = (2.0 * merit).sqrt() / equations.force_scale(&x[head..]);
-        trace.push(IterationRecord {
-            iteration: it,
-            changed: next.iter().zip(&state).filter(|(a, b)| a != b).count(),
-            in_contact: state.iter().filter(|s| **s != PairState::Free).count(),
-            slipping: state.iter().filter(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative)).count(),
-            residual,
-        });
+        trace.push(IterationRecord::of_states(it, &state, &next, residual));
         if settled(alpha, next == state, residual) {
             status = ContactStatus::Converged;
             break;

@@ -184,13 +184,7 @@ fn solve_from_states(
         if stage.is_none() && !settled {
             visited.break_cycle(&state, &mut next);
         }
-        trace.push(IterationRecord {
-            iteration: it,
-            changed: next.iter().zip(&state).filter(|(a, b)| a != b).count(),
-            in_contact: state.iter().filter(|s| **s != PairState::Free).count(),
-            slipping: state.iter().filter(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative)).count(),
-            residual: 0.0,
-        });
+        trace.push(IterationRecord::of_states(it, &state, &next, 0.0));
         if let Some(current) = stage {
             // A regularised stage ends when its state settles or its share of the limit is
             // spent; its fixed point is a warm start, never the answer.

@@ -320,13 +320,7 @@ fn iterate(
             .zip(&state)
             .map(|(n, s)| if slip_sign(n) * slip_sign(*s) < 0.0 { PairState::Stick } else { n })
             .collect();
-        trace.push(IterationRecord {
-            iteration: it,
-            changed: next.iter().zip(&state).filter(|(a, b)| a != b).count(),
-            in_contact: state.iter().filter(|s| **s != PairState::Free).count(),
-            slipping: state.iter().filter(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative)).count(),
-            residual: 0.0,
-        });
+        trace.push(IterationRecord::of_states(it, &state, &next, 0.0));
         if alpha == 1.0 && next == state {
             status = ContactStatus::Converged;
             break;

@@ -158,7 +158,7 @@ pub(crate) fn solve_sparse_active_set(
             if let Some(before) = &before {
                 stick_reversals(before, &state, &mut next);
             }
-            trace.push(record(it, &state, &next));
+            trace.push(IterationRecord::of_states(it, &state, &next, 0.0));
             stage_iterations += 1;
             if settled || stage_iterations >= stage_limit(limit.of_step) {
                 stage = current.next();
@@ -195,7 +195,7 @@ pub(crate) fn solve_sparse_active_set(
         if accuracy == Accuracy::Final && !settled {
             visited.break_cycle(&state, &mut next);
         }
-        trace.push(record(it, &state, &next));
+        trace.push(IterationRecord::of_states(it, &state, &next, 0.0));
         warm = Some(solution.unknowns);
         (lambda, tau, u) = (solution.normal_force, solution.tangential_force, solution.displacement);
         if settled {
@@ -221,15 +221,4 @@ pub(crate) fn solve_sparse_active_set(
     let mut solution = finish_from_displacement(problem, &u, raw, start);
     solution.trace = trace;
     solution
-}
-
-/// The trace's record of iteration `it`: `state` and how many pairs `next` changes.
-fn record(it: usize, state: &[PairState], next: &[PairState]) -> IterationRecord {
-    IterationRecord {
-        iteration: it,
-        changed: next.iter().zip(state).filter(|(a, b)| a != b).count(),
-        in_contact: state.iter().filter(|s| **s != PairState::Free).count(),
-        slipping: state.iter().filter(|s| matches!(s, PairState::SlipPositive | PairState::SlipNegative)).count(),
-        residual: 0.0,
-    }
 }
